@@ -1,0 +1,35 @@
+# Entry points for people and CI. `make demo` and `make test` each do all the set-up on a fresh
+# Debian 12 machine (install-deps is idempotent).
+JOBS ?= $(shell nproc)
+PRESET ?= release
+BUILD_DIR = build
+
+.PHONY: deps configure build test demo asan bench clean
+
+deps:
+	./scripts/install-deps
+
+configure: deps
+	cmake --preset $(PRESET)
+
+build: configure
+	cmake --build $(BUILD_DIR) -j $(JOBS)
+
+test: build
+	ctest --test-dir $(BUILD_DIR) -j $(JOBS) --output-on-failure
+
+demo: build
+	$(BUILD_DIR)/bin/ssimarch demo --out out/demo
+
+asan: deps
+	cmake --preset dev
+	cmake --build build-asan -j $(JOBS)
+	ctest --test-dir build-asan -j $(JOBS) --output-on-failure
+
+bench: deps
+	cmake --preset bench
+	cmake --build build-bench -j $(JOBS)
+	./bench/run-benchmarks
+
+clean:
+	rm -rf build build-asan build-bench out
