@@ -1,0 +1,23 @@
+// Subcommands of the ssimarch tool. Each add_*_command registers one subcommand with its options,
+// help text and callback. Callbacks throw ssimarch::CliError (or any std::exception) for bad
+// input; main() prints the message to stderr and exits with the error's code.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <stdexcept>
+#include <string>
+
+namespace ssimarch::cli {
+
+/// An error the user can fix (bad file, bad option). `exit_code` is the process exit status.
+class CliError : public std::runtime_error {
+ public:
+  explicit CliError(const std::string& what, int exit_code = 2)
+      : std::runtime_error(what), exit_code_(exit_code) {}
+  int exit_code() const { return exit_code_; }
+
+ private:
+  int exit_code_;
+};
+
+}  // namespace ssimarch::cli

@@ -1,0 +1,27 @@
+// ssimarch: command-line front end. Exit status: 0 success, 1 the computation ran but reported a
+// failure (see each subcommand's help), 2 invalid input or usage, 3 internal error.
+#include <CLI/CLI.hpp>
+#include <exception>
+#include <iostream>
+
+#include "commands.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"ssimarch: intersection curves of surfaces, their differential geometry, and exact porosity profiles"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "ssimarch 0.1.0");
+  int exit_code = 0;
+  (void)exit_code;
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;
+  } catch (const ssimarch::cli::CliError& e) {
+    std::cerr << "ssimarch: error: " << e.what() << "\n";
+    return e.exit_code();
+  } catch (const std::exception& e) {
+    std::cerr << "ssimarch: error: " << e.what() << "\n";
+    return 2;
+  }
+  return 0;
+}
