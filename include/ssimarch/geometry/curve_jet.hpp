@@ -1,0 +1,214 @@
+// Taylor coefficients of an intersection curve through a regular point, to any order K, by the
+// implicit function theorem (seed 004 / spec/implicit-curve-geometry.md §5, generalised to the
+// three pair kinds of march/problem.hpp; derivation in docs/math/curve_jet.md).
+//
+// Unknown: x(s) = sum_k c_k s^k with s the arc length of the 3D curve alpha(s) = point(x(s)).
+// Conditions, coefficient by coefficient:
+//   H(x(s)) = 0          ->  J c_k + [H(x(s))]_k |_{c_k = 0} = 0            (n-1 equations)
+//   |alpha'(s)|^2 = 1    ->  2k alpha_1 . (D c_k + a_k) + sum_{i+j=k+1; 2<=i,j<=k-1} i j alpha_i.alpha_j = 0
+// with J = dH/dx, D = d point/dx and a_k = [point(x(s))]_k |_{c_k = 0}. The k-th coefficient of
+// H(x(s)) is linear in c_k with matrix J because c_k first appears at order k; evaluating H on
+// Taylor<K> arguments with c_k = 0 gives every other term exactly. Order 1: c_1 spans ker J,
+// scaled so that |D c_1| = 1. The n x n matrix [J; alpha_1^T D] is the same at every order and
+// is invertible exactly at regular points.
+#pragma once
+
+#include <Eigen/Dense>
+#include <array>
+#include <cmath>
+
+#include "ssimarch/core/jet.hpp"
+#include "ssimarch/march/problem.hpp"
+
+namespace ssimarch {
+
+enum class CurveJetStatus {
+  kOk,
+  // sigma_min(J_H) <= kRankTolerance * sigma_max(J_H): the tangent is not determined
+  // (a singular point of the curve: surfaces tangent, or a crossing of branches).
+  kSingular,
+  // Some derivative of the surfaces is not finite at this point.
+  kNonFinite,
+};
+
+/// Relative singular-value threshold below which J_H is taken as rank deficient.
+inline constexpr double kCurveJetRankTolerance = 1e-10;
+
+template <int K>
+struct CurveJet {
+  CurveJetStatus status = CurveJetStatus::kSingular;
+  std::array<VecX, K + 1> x;      // x(s) = sum_k x[k] s^k (unknowns of H)
+  std::array<Vec3, K + 1> alpha;  // alpha(s) = sum_k alpha[k] s^k (3D curve, unit speed)
+  double rank_ratio = 0;          // sigma_min / sigma_max of J_H (0 at a singular point)
+
+  /// d^k alpha / ds^k at s = 0.
+  Vec3 derivative(int k) const {
+    double f = 1;
+    for (int i = 2; i <= k; ++i) f *= i;
+    return alpha[static_cast<std::size_t>(k)] * f;
+  }
+  /// Parameter-space point after a step of arc length s (the Taylor polynomial).
+  VecX x_at(double s) const {
+    VecX r = x[K];
+    for (int k = K - 1; k >= 0; --k) r = (r * s + x[static_cast<std::size_t>(k)]).eval();
+    return r;
+  }
+  Vec3 alpha_at(double s) const {
+    Vec3 r = alpha[K];
+    for (int k = K - 1; k >= 0; --k) r = r * s + alpha[static_cast<std::size_t>(k)];
+    return r;
+  }
+};
+
+namespace detail {
+
+// Unnormalised J_H (the residual functor's own derivative) and D, via first-order jets.
+template <int N>
+void raw_jacobians(const Problem& problem, const VecX& x0, MatX* J, MatX* D) {
+  using J1 = Jet<N, 1>;
+  // Sized for the largest pair kind (4 unknowns, 3 equations): residual() switches on the
+  // problem's kind at run time, so the compiler cannot see that only N entries are touched.
+  std::array<J1, 4> x;
+  for (int i = 0; i < N; ++i) x[static_cast<std::size_t>(i)] = J1::variable(i, x0[i]);
+  std::array<J1, 3> h;
+  problem.residual(x.data(), h.data());
+  Vec3T<J1> p = problem.point(x.data());
+  J->resize(N - 1, N);
+  D->resize(3, N);
+  for (int r = 0; r < N - 1; ++r)
+    for (int c = 0; c < N; ++c) (*J)(r, c) = h[static_cast<std::size_t>(r)].d(c);
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < N; ++c) (*D)(r, c) = p[r].d(c);
+}
+
+template <int N, int K>
+CurveJet<K> curve_jet_n(const Problem& problem, const VecX& x0, const Vec3* hint) {
+  CurveJet<K> jet;
+  for (auto& c : jet.x) c = VecX::Zero(N);
+  for (auto& a : jet.alpha) a = Vec3::Zero();
+  jet.x[0] = x0;
+  jet.alpha[0] = problem.point(x0);
+  MatX J, D;
+  raw_jacobians<N>(problem, x0, &J, &D);
+  if (!J.allFinite() || !D.allFinite()) {
+    jet.status = CurveJetStatus::kNonFinite;
+    return jet;
+  }
+  Eigen::JacobiSVD<MatX> svd(J, Eigen::ComputeFullV);
+  jet.rank_ratio = Problem::rank_ratio(problem.linearize(x0));
+  VecX null = svd.matrixV().col(N - 1);
+  Vec3 speed = D * null;
+  if (jet.rank_ratio <= kCurveJetRankTolerance || speed.norm() == 0) {
+    jet.status = CurveJetStatus::kSingular;
+    return jet;
+  }
+  double sign = (hint && speed.dot(*hint) < 0) ? -1.0 : 1.0;
+  jet.x[1] = null * (sign / speed.norm());
+  jet.alpha[1] = D * jet.x[1];
+  if constexpr (K >= 2) {
+    MatX A(N, N);
+    A.topRows(N - 1) = J;
+    A.row(N - 1) = jet.alpha[1].transpose() * D;
+    Eigen::PartialPivLU<MatX> lu(A);
+    std::array<Taylor<K>, 4> xs;  // sized for the largest pair kind, as in raw_jacobians
+    std::array<Taylor<K>, 3> h;
+    for (int k = 2; k <= K; ++k) {
+      for (int i = 0; i < N; ++i) {
+        Taylor<K> t;
+        for (int j = 0; j < k; ++j) t[j] = jet.x[static_cast<std::size_t>(j)][i];
+        xs[static_cast<std::size_t>(i)] = t;
+      }
+      problem.residual(xs.data(), h.data());
+      Vec3T<Taylor<K>> a = problem.point(xs.data());
+      VecX rhs(N);
+      for (int r = 0; r < N - 1; ++r) rhs[r] = -h[static_cast<std::size_t>(r)][k];
+      Vec3 ak(a.x[k], a.y[k], a.z[k]);
+      double rest = 0;
+      for (int i = 2; i <= k - 1; ++i) {
+        int j = k + 1 - i;
+        if (j < 2 || j > k - 1) continue;
+        rest += i * j * jet.alpha[static_cast<std::size_t>(i)].dot(jet.alpha[static_cast<std::size_t>(j)]);
+      }
+      rhs[N - 1] = -jet.alpha[1].dot(ak) - rest / (2.0 * k);
+      jet.x[static_cast<std::size_t>(k)] = lu.solve(rhs);
+      jet.alpha[static_cast<std::size_t>(k)] = D * jet.x[static_cast<std::size_t>(k)] + ak;
+    }
+  }
+  bool finite = true;
+  for (int k = 0; k <= K; ++k)
+    finite = finite && jet.x[static_cast<std::size_t>(k)].allFinite() && jet.alpha[static_cast<std::size_t>(k)].allFinite();
+  jet.status = finite ? CurveJetStatus::kOk : CurveJetStatus::kNonFinite;
+  return jet;
+}
+
+}  // namespace detail
+
+/// The curve's Taylor jet of order K at the solution x0 of problem. `hint`, if given, orients
+/// the tangent: alpha'(0) . hint >= 0.
+/// Requires: x0 on the curve (H(x0) ~ 0); otherwise the coefficients describe the level set of
+/// H through x0.
+template <int K>
+CurveJet<K> curve_jet(const Problem& problem, const VecX& x0, const Vec3* hint = nullptr) {
+  switch (problem.dim()) {
+    case 2: return detail::curve_jet_n<2, K>(problem, x0, hint);
+    case 3: return detail::curve_jet_n<3, K>(problem, x0, hint);
+    default: return detail::curve_jet_n<4, K>(problem, x0, hint);
+  }
+}
+
+/// Highest order curve_jet_dynamic supports.
+inline constexpr int kMaxCurveJetOrder = 8;
+
+/// A curve jet whose order is chosen at run time (1..kMaxCurveJetOrder); coefficients above
+/// `order` are zero.
+struct DynamicCurveJet {
+  int order = 0;
+  CurveJetStatus status = CurveJetStatus::kSingular;
+  std::array<VecX, kMaxCurveJetOrder + 1> x;
+  std::array<Vec3, kMaxCurveJetOrder + 1> alpha;
+  double rank_ratio = 0;
+
+  VecX x_at(double s) const {
+    VecX r = x[static_cast<std::size_t>(order)];
+    for (int k = order - 1; k >= 0; --k) r = (r * s + x[static_cast<std::size_t>(k)]).eval();
+    return r;
+  }
+  Vec3 alpha_at(double s) const {
+    Vec3 r = alpha[static_cast<std::size_t>(order)];
+    for (int k = order - 1; k >= 0; --k) r = r * s + alpha[static_cast<std::size_t>(k)];
+    return r;
+  }
+  /// Unit tangent alpha'(0).
+  const Vec3& tangent() const { return alpha[1]; }
+};
+
+namespace detail {
+template <int K>
+DynamicCurveJet to_dynamic(const CurveJet<K>& j, int n) {
+  DynamicCurveJet d;
+  d.order = K;
+  d.status = j.status;
+  d.rank_ratio = j.rank_ratio;
+  for (int k = 0; k <= kMaxCurveJetOrder; ++k) {
+    d.x[static_cast<std::size_t>(k)] = k <= K ? j.x[static_cast<std::size_t>(k)] : VecX::Zero(n);
+    d.alpha[static_cast<std::size_t>(k)] = k <= K ? j.alpha[static_cast<std::size_t>(k)] : Vec3::Zero();
+  }
+  return d;
+}
+}  // namespace detail
+
+inline DynamicCurveJet curve_jet_dynamic(const Problem& problem, const VecX& x0, int order, const Vec3* hint = nullptr) {
+  const int n = problem.dim();
+  switch (order) {
+    case 1: return detail::to_dynamic(curve_jet<1>(problem, x0, hint), n);
+    case 2: return detail::to_dynamic(curve_jet<2>(problem, x0, hint), n);
+    case 3: return detail::to_dynamic(curve_jet<3>(problem, x0, hint), n);
+    case 4: return detail::to_dynamic(curve_jet<4>(problem, x0, hint), n);
+    case 5: return detail::to_dynamic(curve_jet<5>(problem, x0, hint), n);
+    case 6: return detail::to_dynamic(curve_jet<6>(problem, x0, hint), n);
+    case 7: return detail::to_dynamic(curve_jet<7>(problem, x0, hint), n);
+    default: return detail::to_dynamic(curve_jet<8>(problem, x0, hint), n);
+  }
+}
+
+}  // namespace ssimarch

@@ -1,0 +1,63 @@
+// What a trace returns: curves as polylines of points on both surfaces, why each end stopped,
+// and the work it took.
+#pragma once
+
+#include <array>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "ssimarch/core/vec3.hpp"
+
+namespace ssimarch {
+
+/// Why one end of a traced curve stopped. Each value states its exact condition.
+enum class Termination {
+  kClosedLoop,     // the curve came back to its start: the start lay on the last chord (within the
+                   // chord's sagitta bound) with tangents agreeing; the last point is the first one
+  kLeftDomain,     // a non-periodic unknown reached its bound; the last point lies on that bound
+  kSingularPoint,  // no step of length >= min_step could be taken and the curve's Jacobian is
+                   // (nearly) rank deficient there: the last point is next to a singular point
+  kStepUnderflow,  // no step of length >= min_step could be taken at a regular point
+  kMaxPoints,      // the curve reached options.max_points points
+  kMaxLength,      // the traced length reached options.max_length
+};
+std::string_view to_string(Termination t);
+
+/// A point of a traced curve.
+struct CurvePoint {
+  VecX x;  // the unknowns of H (params: u,v[,p,q] or x,y,z), periodic ones wrapped into the domain
+  Vec3 p;  // the 3D point
+  Vec3 t;  // the unit tangent in the direction of travel
+};
+
+struct TracedCurve {
+  std::vector<CurvePoint> points;
+  bool closed = false;
+  double length = 0;  // arc length (model units), circular-arc estimate per segment
+  Termination start_end = Termination::kClosedLoop;  // why the start end stopped (open curves)
+  Termination end_end = Termination::kClosedLoop;
+  std::string start_message, end_message;  // details, e.g. the singular point's rank ratio
+};
+
+/// Work counters of a trace (the thesis' Tables 4.1-4.4 report the iteration histogram).
+struct TraceStats {
+  long points = 0;
+  long rejected_steps = 0;
+  std::array<long, 5> iterations{};  // points by corrector iterations: 1, 2, 3, 4, >= 5
+  long linearizations = 0;           // first-order evaluations of both surfaces
+  long jet_evaluations = 0;          // higher-order (Taylor) evaluations of H
+  long corrector_failures = 0;
+  double time_ms = 0;
+
+  void record_iterations(int n) { ++iterations[static_cast<std::size_t>(n <= 1 ? 0 : (n >= 5 ? 4 : n - 1))]; }
+  TraceStats& operator+=(const TraceStats& o);
+};
+
+struct TraceResult {
+  std::vector<TracedCurve> curves;
+  TraceStats stats;
+  std::vector<std::string> warnings;  // e.g. a start point that could not be put on the curve
+};
+
+}  // namespace ssimarch

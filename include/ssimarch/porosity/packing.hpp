@@ -1,0 +1,37 @@
+// Packing files: CSV with a header (spheres: x,y,z,d; spherocylinders: x,y,z,ux,uy,uz,d,l; the axis
+// need not be unit length; units are the file's) and LAMMPS/LIGGGHTS text dumps of spheres
+// (ITEM: ATOMS with x y z (or xu yu zu, or scaled xs ys zs) and radius or diameter columns; the last
+// snapshot in the file is used). Bad rows are reported as "file:line: what".
+#pragma once
+
+#include <filesystem>
+#include <iosfwd>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "ssimarch/porosity/particle.hpp"
+
+namespace ssimarch::porosity {
+
+/// Invalid packing input (malformed file, bad values); the message names file and line.
+class PackingError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct Packing {
+  std::vector<Particle> particles;
+  bool spherocylinders = false;  ///< the file had axis and length columns
+};
+
+/// Reads a CSV or a LAMMPS dump (recognised by a first line starting with "ITEM:").
+Packing read_packing(const std::filesystem::path& path);
+Packing read_packing_csv(std::istream& in, const std::string& name);
+Packing read_lammps_dump(std::istream& in, const std::string& name);
+
+/// Writes the CSV format (sphere columns when every particle has length 0).
+void write_packing_csv(std::ostream& out, std::span<const Particle> particles);
+
+}  // namespace ssimarch::porosity

@@ -1,0 +1,43 @@
+// Integrals of one particle that the profiles add up (docs/math/circle_spherocylinder.md):
+//   lateral area  L_i(r)      = integral of p_i(z, r) dz over the height range   (radial profile)
+//   shell volume  V_i(r0, r1) = integral of L_i(r) dr over [r0, r1]               (bins, bulk)
+//   slice area    S_i(z)      = integral of p_i(z, r) dr over [0, R]              (axial profile)
+// Each comes in two formulations: `chord` (Fubini-swapped, closed-form vertical chords and shadow
+// arcs; fast) and `kernel` (the seed's p_i(z, r) integrated directly, breakpoints found from the
+// kernel's crossing signature; the reference). Tests check that both agree.
+#pragma once
+
+#include "ssimarch/porosity/circle_spherocylinder.hpp"
+#include "ssimarch/porosity/particle_shape.hpp"
+#include "ssimarch/porosity/quadrature.hpp"
+
+namespace ssimarch::porosity {
+
+/// Which formulation integrates the kernel (see the file comment).
+enum class Method { chord, kernel };
+
+/// Height range of the profiles: z in [z_min, z_max].
+struct Slab {
+  double z_min = 0.0, z_max = 0.0;
+};
+
+/// p_i(z, r): the seed kernel (closed form for spheres when `sphere_closed_form`).
+double arc_length(const Particle& p, double z, double r, const KernelTolerances& tol = {},
+                  bool sphere_closed_form = true);
+
+/// Crossing signature of the kernel at (z, r): changes exactly where p_i stops being analytic.
+long kernel_signature(const Particle& p, double z, double r, const KernelTolerances& tol = {});
+
+/// L_i(r) to absolute tolerance abs_tol (units length^2).
+QuadResult lateral_area(const ParticleShape& s, double r, const Slab& slab, double abs_tol,
+                        Method method = Method::chord, const KernelTolerances& tol = {});
+
+/// V_i(r0, r1) to absolute tolerance abs_tol (units length^3).
+QuadResult shell_volume(const ParticleShape& s, double r0, double r1, const Slab& slab, double abs_tol,
+                        Method method = Method::chord, const KernelTolerances& tol = {});
+
+/// S_i(z) inside the disk of radius R to absolute tolerance abs_tol (units length^2). Spheres use the
+/// closed-form disk-disk lens area; spherocylinders integrate the kernel over r.
+QuadResult slice_area(const ParticleShape& s, double z, double R, double abs_tol, const KernelTolerances& tol = {});
+
+}  // namespace ssimarch::porosity

@@ -1,0 +1,83 @@
+// Tensor-product B-spline surface of degrees (p, q), polynomial or rational (NURBS).
+//
+//   F(u,v) = sum_ij w_ij P_ij N_i^p(u) N_j^q(v) / sum_ij w_ij N_i^p(u) N_j^q(v)
+// with knot vectors U (n_u + p + 1 knots) and V (n_v + q + 1 knots), any (clamped or not).
+// Domain [U[p], U[n_u]] x [V[q], V[n_v]], not periodic. Evaluated by de Boor in homogeneous
+// coordinates, first along v on the p + 1 rows active in u, then along u, all in the number
+// type T; the knot span is chosen from primal(u), primal(v) (style.md 3.4), so a jet at a knot
+// gives the derivatives of the piece to the right of it (of the last piece at the domain end).
+// Control points P[i][j]: i along u (outer index), j along v (inner index). Box: the box of the
+// control points (convex hull property, weights > 0).
+#pragma once
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "ssimarch/core/jet.hpp"
+#include "ssimarch/surface/bezier_patch.hpp"
+#include "ssimarch/surface/domain.hpp"
+#include "ssimarch/surface/spline_basis.hpp"
+
+namespace ssimarch {
+
+class BSplineSurface {
+ public:
+  /// Throws InputError (where = `where`) unless: degrees >= 1; the net is rectangular with at
+  /// least degree + 1 points each way and finite coordinates; each knot vector is finite,
+  /// non-decreasing, of length (points + degree + 1), with a non-empty domain, no knot repeated
+  /// more than degree + 1 times and no knot inside the domain more than degree times; weights
+  /// (optional) have the net's shape and are finite and > 0.
+  BSplineSurface(int degree_u, int degree_v, std::vector<double> knots_u, std::vector<double> knots_v,
+                 const ControlNet& points, const WeightNet& weights = {}, const std::string& where = "bspline");
+
+  int degree_u() const { return p_; }
+  int degree_v() const { return q_; }
+  bool is_rational() const { return rational_; }
+  const std::vector<double>& knots_u() const { return data_->knots_u; }
+  const std::vector<double>& knots_v() const { return data_->knots_v; }
+  const ParamDomain& domain() const { return domain_; }
+  const Box& box() const { return box_; }
+
+  template <class T>
+  Vec3T<T> point(const T& u, const T& v) const {
+    if (rational_) return eval<T, 4>(u, v);
+    return eval<T, 3>(u, v);
+  }
+
+ private:
+  struct Data {
+    std::vector<double> knots_u, knots_v;
+    std::vector<std::array<double, 4>> homogeneous;  // row-major, (w x, w y, w z, w)
+  };
+
+  template <class T, std::size_t D>
+  Vec3T<T> eval(const T& u, const T& v) const {
+    const Data& d = *data_;
+    const int ku = spline::find_span(d.knots_u, p_, nu_, primal(u));
+    const int kv = spline::find_span(d.knots_v, q_, nv_, primal(v));
+    std::vector<std::array<T, D>> row(static_cast<std::size_t>(q_) + 1), col(static_cast<std::size_t>(p_) + 1);
+    for (int a = 0; a <= p_; ++a) {
+      const std::size_t i = static_cast<std::size_t>(ku - p_ + a);
+      for (int b = 0; b <= q_; ++b) {
+        const std::size_t j = static_cast<std::size_t>(kv - q_ + b);
+        for (std::size_t c = 0; c < D; ++c)
+          row[static_cast<std::size_t>(b)][c] = T(d.homogeneous[i * static_cast<std::size_t>(nv_) + j][c]);
+      }
+      spline::de_boor<T, D>(row, d.knots_v, q_, kv, v);
+      col[static_cast<std::size_t>(a)] = row[static_cast<std::size_t>(q_)];
+    }
+    spline::de_boor<T, D>(col, d.knots_u, p_, ku, u);
+    const auto& q = col[static_cast<std::size_t>(p_)];
+    if constexpr (D == 4) return {q[0] / q[3], q[1] / q[3], q[2] / q[3]};
+    else return {q[0], q[1], q[2]};
+  }
+
+  int p_ = 0, q_ = 0, nu_ = 0, nv_ = 0;
+  bool rational_ = false;
+  std::shared_ptr<const Data> data_;
+  ParamDomain domain_;
+  Box box_;
+};
+
+}  // namespace ssimarch

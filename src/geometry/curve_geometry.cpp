@@ -1,0 +1,93 @@
+#include "ssimarch/geometry/curve_geometry.hpp"
+
+#include <array>
+#include <utility>
+
+namespace ssimarch::geometry {
+
+namespace {
+constexpr std::array<std::pair<GeometryMethod, std::string_view>, 7> kMethodNames{{
+    {GeometryMethod::kExact, "exact"},
+    {GeometryMethod::kYeMaekawa, "ye-maekawa"},
+    {GeometryMethod::kWillmore, "willmore"},
+    {GeometryMethod::kStoyanov, "stoyanov"},
+    {GeometryMethod::kEstimate, "estimate"},
+    {GeometryMethod::kBarnhillKersey, "barnhill-kersey"},
+    {GeometryMethod::kMixed, "mixed"},
+}};
+}  // namespace
+
+std::string_view to_string(GeometryStatus status) {
+  switch (status) {
+    case GeometryStatus::kOk: return "ok";
+    case GeometryStatus::kZeroCurvature: return "zero-curvature";
+    case GeometryStatus::kSingular: return "singular";
+    case GeometryStatus::kTangentialSecondOrder: return "tangential-second-order";
+    case GeometryStatus::kIsolatedPoint: return "isolated-point";
+    case GeometryStatus::kHigherOrderContact: return "higher-order-contact";
+    case GeometryStatus::kNotApplicable: return "not-applicable";
+    case GeometryStatus::kInsufficientSamples: return "insufficient-samples";
+    case GeometryStatus::kNonFinite: return "non-finite";
+  }
+  return "unknown";
+}
+
+std::string_view to_string(GeometryMethod method) {
+  for (const auto& [m, name] : kMethodNames)
+    if (m == method) return name;
+  return "unknown";
+}
+
+bool parse(std::string_view name, GeometryMethod* out) {
+  for (const auto& [m, n] : kMethodNames)
+    if (n == name) {
+      *out = m;
+      return true;
+    }
+  return false;
+}
+
+std::string method_names() {
+  std::string r;
+  for (const auto& [m, n] : kMethodNames) {
+    if (!r.empty()) r += ", ";
+    r += n;
+  }
+  return r;
+}
+
+void CurveGeometry::reverse() {
+  t = -t;
+  b = -b;
+  kappa_prime = -kappa_prime;
+}
+
+double normal_angle(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
+
+// spec/curve-geometry.md §1, eqs 2.3-2.5 and 2.8 (kappa' as the arc-length derivative of eq 2.3).
+CurveGeometry frenet_from_derivatives(const Vec3& c1, const Vec3& c2, const Vec3& c3, const GeometryTolerances& tol) {
+  CurveGeometry g;
+  double speed = c1.norm();
+  if (!(c1.allFinite() && c2.allFinite() && c3.allFinite()) || speed == 0.0) {
+    g.status = GeometryStatus::kNonFinite;
+    return g;
+  }
+  g.t = c1 / speed;
+  Vec3 w = c1.cross(c2);
+  double wn = w.norm();
+  double s3 = speed * speed * speed;
+  g.kappa = wn / s3;
+  if (!(g.kappa >= tol.zero_curvature)) {
+    g.status = GeometryStatus::kZeroCurvature;
+    return g;
+  }
+  g.b = w / wn;
+  g.n = g.b.cross(g.t);
+  g.tau = w.dot(c3) / (wn * wn);
+  double dkappa_dparam = w.dot(c1.cross(c3)) / (wn * s3) - 3.0 * wn * c1.dot(c2) / (s3 * speed * speed);
+  g.kappa_prime = dkappa_dparam / speed;
+  g.status = GeometryStatus::kOk;
+  return g;
+}
+
+}  // namespace ssimarch::geometry

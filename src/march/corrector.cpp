@@ -1,0 +1,95 @@
+#include "ssimarch/march/corrector.hpp"
+
+#include <cmath>
+
+namespace ssimarch {
+
+std::string_view to_string(CorrectorStatus s) {
+  switch (s) {
+    case CorrectorStatus::kConverged: return "converged";
+    case CorrectorStatus::kDiverged: return "diverged";
+    case CorrectorStatus::kSingular: return "singular";
+  }
+  return "?";
+}
+
+namespace {
+// Relative singular value below which J_H has no usable pseudo-inverse.
+constexpr double kSingularRatio = 1e-14;
+}  // namespace
+
+CorrectorResult NewtonCorrector::correct(const Problem& problem, const VecX& guess,
+                                         const CorrectorOptions& options) const {
+  CorrectorResult r;
+  r.x = guess;
+  Linearization L = problem.linearize(r.x);
+  ++r.linearizations;
+  double previous = L.distance;
+  int growth = 0;
+  for (int it = 1; it <= options.max_iterations; ++it) {
+    if (!L.h.allFinite() || !L.jacobian.allFinite()) {
+      r.status = CorrectorStatus::kDiverged;
+      r.distance = L.distance;
+      return r;
+    }
+    Eigen::JacobiSVD<MatX> svd(L.jacobian, Eigen::ComputeThinU | Eigen::ComputeThinV);
+    if (Problem::rank_ratio(L) <= kSingularRatio) {
+      r.status = CorrectorStatus::kSingular;
+      r.distance = L.distance;
+      return r;
+    }
+    r.x -= svd.solve(L.h);
+    r.iterations = it;
+    L = problem.linearize(r.x);
+    ++r.linearizations;
+    r.distance = L.distance;
+    if (!std::isfinite(L.distance)) break;
+    if (L.distance <= options.tolerance) {
+      r.status = CorrectorStatus::kConverged;
+      return r;
+    }
+    growth = L.distance > previous ? growth + 1 : 0;
+    if (growth >= 2) break;
+    previous = L.distance;
+  }
+  r.status = CorrectorStatus::kDiverged;
+  return r;
+}
+
+CorrectorResult solve_with_fixed_unknown(const Problem& problem, const VecX& guess, int i, double value,
+                                         const CorrectorOptions& options) {
+  CorrectorResult r;
+  r.x = guess;
+  r.x[i] = value;
+  const int n = problem.dim();
+  for (int it = 1; it <= options.max_iterations; ++it) {
+    Linearization L = problem.linearize(r.x);
+    ++r.linearizations;
+    r.distance = L.distance;
+    if (!L.h.allFinite() || !L.jacobian.allFinite()) break;
+    if (L.distance <= options.tolerance && it > 1) {
+      r.status = CorrectorStatus::kConverged;
+      return r;
+    }
+    MatX A(n, n);
+    A.topRows(n - 1) = L.jacobian;
+    A.row(n - 1).setZero();
+    A(n - 1, i) = 1.0;
+    VecX rhs(n);
+    rhs.head(n - 1) = L.h;
+    rhs[n - 1] = r.x[i] - value;
+    Eigen::FullPivLU<MatX> lu(A);
+    if (!lu.isInvertible()) {
+      r.status = CorrectorStatus::kSingular;
+      return r;
+    }
+    r.x -= lu.solve(rhs);
+    r.iterations = it;
+  }
+  Linearization L = problem.linearize(r.x);
+  r.distance = L.distance;
+  r.status = L.distance <= options.tolerance ? CorrectorStatus::kConverged : CorrectorStatus::kDiverged;
+  return r;
+}
+
+}  // namespace ssimarch

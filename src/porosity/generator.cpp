@@ -1,0 +1,321 @@
+// Packing generators. Sources: Visscher & Bolsterli, Nature 239 (1972) 504 (sequential deposition);
+// Widom, J. Chem. Phys. 44 (1966) 3888 (random sequential addition); Ericson, Real-Time Collision
+// Detection (2005) 5.1.9 (segment-segment distance). See generator.hpp.
+#include "ssimarch/porosity/generator.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <stdexcept>
+
+#include "spatial_grid.hpp"
+
+namespace ssimarch::porosity {
+
+double segment_distance(const Vec3<double>& p0, const Vec3<double>& p1, const Vec3<double>& q0,
+                        const Vec3<double>& q1) {
+  const Vec3<double> d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
+  const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
+  const double tiny = 1e-300;
+  double s = 0, t = 0;
+  if (a <= tiny && e <= tiny) return r.norm();
+  if (a <= tiny) {
+    t = std::clamp(f / e, 0.0, 1.0);
+  } else {
+    const double c = d1.dot(r);
+    if (e <= tiny) {
+      s = std::clamp(-c / a, 0.0, 1.0);
+    } else {
+      const double b = d1.dot(d2), denom = a * e - b * b;
+      s = denom > 0 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
+      t = (b * s + f) / e;
+      if (t < 0) {
+        t = 0;
+        s = std::clamp(-c / a, 0.0, 1.0);
+      } else if (t > 1) {
+        t = 1;
+        s = std::clamp((b - c) / a, 0.0, 1.0);
+      }
+    }
+  }
+  return ((p0 + s * d1) - (q0 + t * d2)).norm();
+}
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+class Deposition {
+ public:
+  explicit Deposition(const SphereBedOptions& o)
+      : o_(o), dmax_(std::max(o.diameter, o.diameter_max)), grid_(std::max(o.diameter, o.diameter_max)), rng_(o.seed) {
+    if (!(o.container_radius > 0) || !(o.diameter > 0) || o.count < 0)
+      throw std::invalid_argument("drop_and_roll_spheres: need container radius > 0, diameter > 0, count >= 0");
+    if (o.diameter >= 2 * o.container_radius)
+      throw std::invalid_argument("drop_and_roll_spheres: the sphere diameter must be smaller than the container diameter");
+    tol_ = o.contact_tolerance * o.diameter;
+  }
+
+  std::vector<Particle> run(GeneratorReport* rep) {
+    std::uniform_real_distribution<double> U(0, 1);
+    for (long n = 0; n < o_.count; ++n) {
+      const double d = o_.diameter_max > o_.diameter ? o_.diameter + (o_.diameter_max - o_.diameter) * U(rng_) : o_.diameter;
+      const double a = d / 2, Rw = o_.container_radius - a;
+      const double rr = Rw * std::sqrt(U(rng_)), ph = 2 * kPi * U(rng_);
+      Vec3<double> p(rr * std::cos(ph), rr * std::sin(ph), top_ + 2 * dmax_);
+      p.z() = fall(p, a, p.z());
+      settle(p, a);
+      placed_.push_back(make_sphere(p, d));
+      grid_.insert(p, static_cast<int>(placed_.size()) - 1);
+      top_ = std::max(top_, p.z() + a);
+    }
+    if (rep) {
+      rep->placed = static_cast<long>(placed_.size());
+      rep->attempts = rep->placed;
+      rep->height = top_;
+      rep->unstable = unstable_;
+      rep->max_overlap = max_overlap();
+    }
+    return placed_;
+  }
+
+ private:
+  struct Constraint {
+    Vec3<double> n;
+    int kind;  // 0 sphere, 1 wall
+    int id;
+  };
+
+  double fall(const Vec3<double>& p, double a, double z_start) const {
+    double best = a;  // floor
+    const double amax = dmax_ / 2;
+    for (long k = grid_.index(z_start + a + amax); k >= grid_.index(0.0) - 1; --k) {
+      if ((k + 1) * grid_.cell() + a + amax < best) break;
+      grid_.visit_layer(p.x(), p.y(), a + amax, k, [&](int j) {
+        const Particle& s = placed_[j];
+        const double D = a + s.radius();
+        const double q2 = (p.x() - s.centre.x()) * (p.x() - s.centre.x()) + (p.y() - s.centre.y()) * (p.y() - s.centre.y());
+        if (q2 >= D * D) return;
+        const double zc = s.centre.z() + std::sqrt(D * D - q2);
+        if (zc <= z_start + tol_) best = std::max(best, zc);
+      });
+    }
+    return std::min(best, z_start);
+  }
+
+  void gather(const Vec3<double>& p, double a) {
+    nb_.clear();
+    nb_centre_ = p;
+    grid_.visit(p, a + dmax_ / 2 + dmax_, [&](int j) { nb_.push_back(j); });
+  }
+
+  double gap_sphere(const Vec3<double>& p, double a, int j) const {
+    return (p - placed_[j].centre).norm() - (a + placed_[j].radius());
+  }
+  double gap_wall(const Vec3<double>& p, double a) const {
+    return (o_.container_radius - a) - std::hypot(p.x(), p.y());
+  }
+
+  // Pushes p out of the constraints in S (few sweeps of projections).
+  void project(Vec3<double>& p, double a, const std::vector<Constraint>& S) const {
+    for (int sweep = 0; sweep < 4; ++sweep)
+      for (const auto& c : S) {
+        if (c.kind == 0) {
+          const Vec3<double>& cc = placed_[c.id].centre;
+          const double D = a + placed_[c.id].radius();
+          const Vec3<double> w = p - cc;
+          const double nw = w.norm();
+          if (nw > 0) p = cc + w * (D / nw);
+        } else {
+          const double q = std::hypot(p.x(), p.y()), Rw = o_.container_radius - a;
+          if (q > 0) {
+            p.x() *= Rw / q;
+            p.y() *= Rw / q;
+          }
+        }
+      }
+  }
+
+  double min_gap(const Vec3<double>& p, double a) const {
+    double g = std::min(gap_wall(p, a), p.z() - a);
+    for (int j : nb_) g = std::min(g, gap_sphere(p, a, j));
+    return g;
+  }
+
+  // Steepest feasible descent: minimise |d - g|^2 subject to n_k . d >= 0 (KKT by active-set
+  // enumeration over at most three constraints). Returns the equality set used.
+  Vec3<double> descent(const std::vector<Constraint>& act, std::vector<Constraint>& S) const {
+    const Vec3<double> g(0, 0, -1);
+    const int m = std::min<int>(static_cast<int>(act.size()), 6);
+    auto valid = [&](const std::vector<int>& idx, Vec3<double>& d) {
+      const int k = static_cast<int>(idx.size());
+      d = g;
+      if (k > 0) {
+        Eigen::MatrixXd N(3, k);
+        for (int i = 0; i < k; ++i) N.col(i) = act[idx[i]].n;
+        const Eigen::MatrixXd G = N.transpose() * N;
+        Eigen::FullPivLU<Eigen::MatrixXd> lu(G);
+        if (lu.rank() < k) return false;
+        const Eigen::VectorXd lam = -lu.solve(N.transpose() * g);
+        for (int i = 0; i < k; ++i)
+          if (lam[i] < -1e-12) return false;
+        d = g + N * lam;
+      }
+      for (int j = 0; j < m; ++j)
+        if (std::find(idx.begin(), idx.end(), j) == idx.end() && act[j].n.dot(d) < -1e-12) return false;
+      return true;
+    };
+    Vec3<double> d;
+    std::vector<int> idx;
+    if (valid(idx, d)) return d;
+    for (int i = 0; i < m; ++i)
+      if (valid({i}, d)) return S = {act[i]}, d;
+    for (int i = 0; i < m; ++i)
+      for (int j = i + 1; j < m; ++j)
+        if (valid({i, j}, d)) return S = {act[i], act[j]}, d;
+    for (int i = 0; i < m; ++i)
+      for (int j = i + 1; j < m; ++j)
+        for (int k = j + 1; k < m; ++k)
+          if (valid({i, j, k}, d)) return S = {act[i], act[j], act[k]}, d;
+    return Vec3<double>::Zero();  // over-constrained: treat as stable
+  }
+
+  void settle(Vec3<double>& p, double a) {
+    gather(p, a);
+    double h = 0.05 * o_.diameter;
+    Vec3<double> prev_dir = Vec3<double>::Zero();
+    for (int it = 0; it < 20000; ++it) {
+      if (p.z() - a <= tol_) return;  // resting on the floor
+      if ((p - nb_centre_).norm() > dmax_ / 2) gather(p, a);
+      std::vector<Constraint> act;
+      for (int j : nb_)
+        if (gap_sphere(p, a, j) <= tol_) act.push_back({(p - placed_[j].centre).normalized(), 0, j});
+      if (gap_wall(p, a) <= tol_) act.push_back({Vec3<double>(-p.x(), -p.y(), 0).normalized(), 1, -1});
+      if (act.empty()) {
+        const double z = fall(p, a, p.z());
+        if (z < p.z()) {
+          p.z() = z;
+          continue;
+        }
+      }
+      std::vector<Constraint> S;
+      const Vec3<double> d = descent(act, S);
+      const double nd = d.norm();
+      if (nd < 1e-10) return;  // gravity balanced by the contacts: stable
+      const Vec3<double> dir = d / nd;
+      if (dir.dot(prev_dir) < 0) h *= 0.5;  // overshot the bottom of a groove
+      if (h < 1e-9 * o_.diameter) return;
+      prev_dir = dir;
+      auto trial = [&](double s) {
+        Vec3<double> q = p + s * dir;
+        project(q, a, S);
+        return q;
+      };
+      Vec3<double> q = trial(h);
+      if (min_gap(q, a) < -tol_) {
+        // First new contact along the step, by bisection on the step length.
+        double lo = 0, hi = h;
+        for (int b = 0; b < 60 && hi - lo > 1e-3 * tol_; ++b) {
+          const double mid = (lo + hi) / 2;
+          (min_gap(trial(mid), a) < 0 ? hi : lo) = mid;
+        }
+        q = trial(lo);
+        if (min_gap(q, a) < -tol_) {
+          ++unstable_;
+          return;
+        }
+      }
+      if (q.z() > p.z() + tol_) h *= 0.5;
+      p = q;
+    }
+    ++unstable_;
+  }
+
+  double max_overlap() const {
+    double worst = 0;
+    for (std::size_t i = 0; i < placed_.size(); ++i) {
+      const Particle& s = placed_[i];
+      grid_.visit(s.centre, dmax_, [&](int j) {
+        if (j <= static_cast<int>(i)) return;
+        worst = std::max(worst, s.radius() + placed_[j].radius() - (s.centre - placed_[j].centre).norm());
+      });
+      worst = std::max(worst, std::hypot(s.centre.x(), s.centre.y()) + s.radius() - o_.container_radius);
+      worst = std::max(worst, s.radius() - s.centre.z());
+    }
+    return worst;
+  }
+
+  SphereBedOptions o_;
+  double dmax_, tol_ = 0, top_ = 0;
+  detail::SpatialGrid grid_;
+  std::mt19937_64 rng_;
+  std::vector<Particle> placed_;
+  std::vector<int> nb_;
+  Vec3<double> nb_centre_ = Vec3<double>::Zero();
+  long unstable_ = 0;
+};
+
+}  // namespace
+
+std::vector<Particle> drop_and_roll_spheres(const SphereBedOptions& opt, GeneratorReport* report) {
+  return Deposition(opt).run(report);
+}
+
+std::vector<Particle> rsa_spherocylinders(const SpherocylinderRsaOptions& o, GeneratorReport* report) {
+  if (!(o.container_radius > 0) || !(o.diameter > 0) || !(o.length >= 0) || o.count < 0)
+    throw std::invalid_argument("rsa_spherocylinders: need container radius > 0, diameter > 0, length >= 0, count >= 0");
+  if (o.diameter >= 2 * o.container_radius)
+    throw std::invalid_argument("rsa_spherocylinders: the particle diameter must be smaller than the container diameter");
+  Particle proto;
+  proto.diameter = o.diameter;
+  proto.length = o.length;
+  double H = o.height;
+  if (H <= 0) {
+    if (!(o.target_solid_fraction > 0 && o.target_solid_fraction < 1))
+      throw std::invalid_argument("rsa_spherocylinders: target solid fraction must be in (0, 1)");
+    H = o.count * proto.volume() / (o.target_solid_fraction * kPi * o.container_radius * o.container_radius);
+    H = std::max(H, o.diameter + o.length);
+  }
+  const double a = o.diameter / 2, h = o.length / 2, Rw = o.container_radius - a;
+  std::mt19937_64 rng(o.seed);
+  std::uniform_real_distribution<double> U(0, 1);
+  std::normal_distribution<double> N;
+  detail::SpatialGrid grid(o.diameter + o.length);
+  std::vector<Particle> out;
+  long attempts = 0;
+  const long max_attempts = o.max_attempts_per_particle * std::max(1L, o.count);
+  while (static_cast<long>(out.size()) < o.count && attempts < max_attempts) {
+    ++attempts;
+    Vec3<double> u(N(rng), N(rng), N(rng));
+    if (!(u.norm() > 0)) continue;
+    u.normalize();
+    const double rr = Rw * std::sqrt(U(rng)), ph = 2 * kPi * U(rng);
+    const Vec3<double> c(rr * std::cos(ph), rr * std::sin(ph), H * U(rng));
+    const Vec3<double> e0 = c - h * u, e1 = c + h * u;
+    bool ok = std::hypot(e0.x(), e0.y()) <= Rw && std::hypot(e1.x(), e1.y()) <= Rw;
+    ok = ok && std::min(e0.z(), e1.z()) >= a && std::max(e0.z(), e1.z()) <= H - a;
+    if (!ok) continue;
+    grid.visit(c, o.diameter + o.length, [&](int j) {
+      if (!ok) return;
+      const Particle& q = out[j];
+      if (segment_distance(e0, e1, q.minus_cap(), q.plus_cap()) < o.diameter) ok = false;
+    });
+    if (!ok) continue;
+    Particle p = proto;
+    p.centre = c;
+    p.axis = u;
+    out.push_back(p);
+    grid.insert(c, static_cast<int>(out.size()) - 1);
+  }
+  if (report) {
+    report->placed = static_cast<long>(out.size());
+    report->attempts = attempts;
+    report->height = H;
+    report->max_overlap = 0.0;
+  }
+  return out;
+}
+
+}  // namespace ssimarch::porosity

@@ -1,0 +1,271 @@
+// Packing readers and writer. Format description: include/ssimarch/porosity/packing.hpp, docs/porosity.md.
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <sstream>
+
+#include "ssimarch/porosity/packing.hpp"
+
+namespace ssimarch::porosity {
+
+namespace {
+
+constexpr int kMaxReported = 10;
+
+std::string trim(std::string_view s) {
+  std::size_t b = 0, e = s.size();
+  while (b < e && std::isspace(static_cast<unsigned char>(s[b]))) ++b;
+  while (e > b && std::isspace(static_cast<unsigned char>(s[e - 1]))) --e;
+  return std::string(s.substr(b, e - b));
+}
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s;
+}
+
+std::vector<std::string> split(const std::string& line, char sep) {
+  std::vector<std::string> out;
+  if (sep == ' ') {
+    std::istringstream is(line);
+    for (std::string t; is >> t;) out.push_back(t);
+    return out;
+  }
+  std::size_t b = 0;
+  for (;;) {
+    const std::size_t e = line.find(sep, b);
+    out.push_back(trim(std::string_view(line).substr(b, e == std::string::npos ? std::string::npos : e - b)));
+    if (e == std::string::npos) break;
+    b = e + 1;
+  }
+  return out;
+}
+
+std::optional<double> parse_number(const std::string& t) {
+  double v = 0;
+  const char* b = t.data();
+  const char* e = t.data() + t.size();
+  if (b != e && *b == '+') ++b;
+  const auto r = std::from_chars(b, e, v);
+  if (r.ec != std::errc() || r.ptr != e) return std::nullopt;
+  return v;
+}
+
+// Collects up to kMaxReported row errors and throws them together.
+class Errors {
+ public:
+  explicit Errors(std::string name) : name_(std::move(name)) {}
+  void add(long line, const std::string& what) {
+    if (count_++ < kMaxReported) msg_ += "\n  " + name_ + ":" + std::to_string(line) + ": " + what;
+  }
+  void raise_if_any() const {
+    if (count_ == 0) return;
+    std::string m = std::to_string(count_) + " bad row" + (count_ > 1 ? "s" : "") + " in " + name_ + ":" + msg_;
+    if (count_ > kMaxReported) m += "\n  ... and " + std::to_string(count_ - kMaxReported) + " more";
+    throw PackingError(m);
+  }
+  [[noreturn]] void fatal(long line, const std::string& what) const {
+    throw PackingError(name_ + ":" + std::to_string(line) + ": " + what);
+  }
+
+ private:
+  std::string name_, msg_;
+  long count_ = 0;
+};
+
+// Validates one particle; returns an empty string when fine.
+std::string validate(Particle& p, bool sc) {
+  for (int k = 0; k < 3; ++k)
+    if (!std::isfinite(p.centre[k])) return "centre coordinate is not finite";
+  if (!std::isfinite(p.diameter)) return "diameter is not finite";
+  if (!(p.diameter > 0)) return "diameter must be > 0 (got " + std::to_string(p.diameter) + ")";
+  if (sc) {
+    if (!std::isfinite(p.length)) return "length is not finite";
+    if (p.length < 0) return "length must be >= 0 (got " + std::to_string(p.length) + ")";
+    for (int k = 0; k < 3; ++k)
+      if (!std::isfinite(p.axis[k])) return "axis component is not finite";
+    const double n = p.axis.norm();
+    if (!(n > 0)) return "axis (ux, uy, uz) must not be zero";
+    p.axis /= n;
+  }
+  return {};
+}
+
+}  // namespace
+
+Packing read_packing_csv(std::istream& in, const std::string& name) {
+  Errors err(name);
+  std::string line;
+  long ln = 0;
+  std::vector<std::string> header;
+  while (std::getline(in, line)) {
+    ++ln;
+    const std::string t = trim(line);
+    if (t.empty() || t[0] == '#') continue;
+    header = split(lower(t), ',');
+    break;
+  }
+  if (header.empty()) err.fatal(ln, "empty file: expected a CSV header (x,y,z,d or x,y,z,ux,uy,uz,d,l)");
+  std::map<std::string, int> col;
+  for (int k = 0; k < static_cast<int>(header.size()); ++k) {
+    std::string h = header[k];
+    if (h == "diameter") h = "d";
+    if (h == "length") h = "l";
+    col[h] = k;
+  }
+  for (const char* req : {"x", "y", "z", "d"})
+    if (!col.count(req)) err.fatal(ln, std::string("header lacks column '") + req + "' (need x,y,z,d for spheres)");
+  const bool sc = col.count("ux") || col.count("uy") || col.count("uz") || col.count("l");
+  if (sc)
+    for (const char* req : {"ux", "uy", "uz", "l"})
+      if (!col.count(req))
+        err.fatal(ln, std::string("header lacks column '") + req + "' (spherocylinders need x,y,z,ux,uy,uz,d,l)");
+  Packing out;
+  out.spherocylinders = sc;
+  const std::size_t ncol = header.size();
+  while (std::getline(in, line)) {
+    ++ln;
+    const std::string t = trim(line);
+    if (t.empty() || t[0] == '#') continue;
+    const auto f = split(t, ',');
+    if (f.size() < ncol) {
+      err.add(ln, "expected " + std::to_string(ncol) + " fields, found " + std::to_string(f.size()));
+      continue;
+    }
+    auto get = [&](const char* c, double& v) {
+      const auto x = parse_number(f[col.at(c)]);
+      if (!x) {
+        err.add(ln, std::string("column '") + c + "': not a number: '" + f[col.at(c)] + "'");
+        return false;
+      }
+      v = *x;
+      return true;
+    };
+    Particle p;
+    bool ok = get("x", p.centre.x()) && get("y", p.centre.y()) && get("z", p.centre.z()) && get("d", p.diameter);
+    if (ok && sc) ok = get("ux", p.axis.x()) && get("uy", p.axis.y()) && get("uz", p.axis.z()) && get("l", p.length);
+    if (!ok) continue;
+    if (const std::string w = validate(p, sc); !w.empty()) {
+      err.add(ln, w);
+      continue;
+    }
+    out.particles.push_back(p);
+  }
+  err.raise_if_any();
+  return out;
+}
+
+Packing read_lammps_dump(std::istream& in, const std::string& name) {
+  Errors err(name);
+  std::string line;
+  long ln = 0;
+  Packing last;
+  bool have = false;
+  long natoms = -1;
+  double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
+  auto next = [&](std::string& s) {
+    if (!std::getline(in, s)) return false;
+    ++ln;
+    return true;
+  };
+  while (next(line)) {
+    const std::string t = trim(line);
+    if (t.empty()) continue;
+    if (t.rfind("ITEM: NUMBER OF ATOMS", 0) == 0) {
+      if (!next(line)) err.fatal(ln, "missing atom count after 'ITEM: NUMBER OF ATOMS'");
+      const auto v = parse_number(trim(line));
+      if (!v || *v < 0 || *v != std::floor(*v)) err.fatal(ln, "bad atom count '" + trim(line) + "'");
+      natoms = static_cast<long>(*v);
+    } else if (t.rfind("ITEM: BOX BOUNDS", 0) == 0) {
+      for (int k = 0; k < 3; ++k) {
+        if (!next(line)) err.fatal(ln, "missing box bounds line");
+        const auto f = split(trim(line), ' ');
+        const auto a = f.size() >= 2 ? parse_number(f[0]) : std::nullopt;
+        const auto b = f.size() >= 2 ? parse_number(f[1]) : std::nullopt;
+        if (!a || !b) err.fatal(ln, "bad box bounds '" + trim(line) + "'");
+        lo[k] = *a;
+        hi[k] = *b;
+      }
+    } else if (t.rfind("ITEM: ATOMS", 0) == 0) {
+      if (natoms < 0) err.fatal(ln, "'ITEM: ATOMS' before 'ITEM: NUMBER OF ATOMS'");
+      const auto cols = split(t.substr(11), ' ');
+      std::map<std::string, int> col;
+      for (int k = 0; k < static_cast<int>(cols.size()); ++k) col[cols[k]] = k;
+      std::string cx[3];
+      bool scaled = false;
+      const char* axes[3] = {"x", "y", "z"};
+      for (int k = 0; k < 3; ++k) {
+        const std::string a = axes[k];
+        if (col.count(a)) cx[k] = a;
+        else if (col.count(a + "u")) cx[k] = a + "u";
+        else if (col.count(a + "s")) { cx[k] = a + "s"; scaled = true; }
+        else err.fatal(ln, "ATOMS columns lack '" + a + "' (or " + a + "u, " + a + "s)");
+      }
+      const bool has_r = col.count("radius") > 0, has_d = col.count("diameter") > 0;
+      if (!has_r && !has_d) err.fatal(ln, "ATOMS columns lack 'radius' (or 'diameter'): only sphere dumps are supported");
+      Packing snap;
+      for (long i = 0; i < natoms; ++i) {
+        if (!next(line)) err.fatal(ln, "file ends after " + std::to_string(i) + " of " + std::to_string(natoms) + " atoms");
+        const auto f = split(trim(line), ' ');
+        if (f.size() < cols.size()) {
+          err.add(ln, "expected " + std::to_string(cols.size()) + " fields, found " + std::to_string(f.size()));
+          continue;
+        }
+        Particle p;
+        bool ok = true;
+        for (int k = 0; k < 3 && ok; ++k) {
+          const auto v = parse_number(f[col[cx[k]]]);
+          if (!v) { err.add(ln, "column '" + cx[k] + "': not a number: '" + f[col[cx[k]]] + "'"); ok = false; break; }
+          p.centre[k] = scaled ? lo[k] + *v * (hi[k] - lo[k]) : *v;
+        }
+        if (!ok) continue;
+        const std::string rc = has_r ? "radius" : "diameter";
+        const auto v = parse_number(f[col[rc]]);
+        if (!v) { err.add(ln, "column '" + rc + "': not a number: '" + f[col[rc]] + "'"); continue; }
+        p.diameter = has_r ? 2 * *v : *v;
+        if (const std::string w = validate(p, false); !w.empty()) { err.add(ln, w); continue; }
+        snap.particles.push_back(p);
+      }
+      last = std::move(snap);
+      have = true;
+    }
+  }
+  err.raise_if_any();
+  if (!have) throw PackingError(name + ": no 'ITEM: ATOMS' section found (not a LAMMPS dump?)");
+  return last;
+}
+
+Packing read_packing(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw PackingError(path.string() + ": cannot open file");
+  std::string first;
+  while (std::getline(in, first) && trim(first).empty()) {
+  }
+  in.clear();
+  in.seekg(0);
+  if (trim(first).rfind("ITEM:", 0) == 0) return read_lammps_dump(in, path.string());
+  return read_packing_csv(in, path.string());
+}
+
+void write_packing_csv(std::ostream& out, std::span<const Particle> ps) {
+  const bool sc = std::any_of(ps.begin(), ps.end(), [](const Particle& p) { return p.length != 0; });
+  out << (sc ? "x,y,z,ux,uy,uz,d,l\n" : "x,y,z,d\n");
+  char buf[64];
+  auto num = [&](double v) {
+    const auto r = std::to_chars(buf, buf + sizeof buf, v);
+    out.write(buf, r.ptr - buf);
+  };
+  for (const Particle& p : ps) {
+    num(p.centre.x()); out << ','; num(p.centre.y()); out << ','; num(p.centre.z()); out << ',';
+    if (sc) { num(p.axis.x()); out << ','; num(p.axis.y()); out << ','; num(p.axis.z()); out << ','; }
+    num(p.diameter);
+    if (sc) { out << ','; num(p.length); }
+    out << '\n';
+  }
+}
+
+}  // namespace ssimarch::porosity

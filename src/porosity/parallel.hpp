@@ -1,0 +1,53 @@
+// Fixed-chunk parallel loop with progress polling on the calling thread (internal to porosity).
+#pragma once
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <exception>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace ssimarch::porosity::detail {
+
+inline unsigned worker_count(unsigned requested) {
+  if (requested > 0) return requested;
+  const unsigned h = std::thread::hardware_concurrency();
+  return h == 0 ? 1 : h;
+}
+
+/// Runs body(chunk) for chunk = 0..chunks-1 on `threads` workers; `progress(fraction)` is called on the
+/// calling thread while waiting. Exceptions from workers are rethrown.
+inline void parallel_chunks(int chunks, unsigned threads, const std::function<void(int)>& body,
+                            const std::function<void(double)>& progress) {
+  std::atomic<int> next{0}, done{0};
+  std::exception_ptr error;
+  std::mutex error_mutex;
+  auto worker = [&] {
+    for (int k; (k = next.fetch_add(1)) < chunks;) {
+      try {
+        body(k);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(error_mutex);
+        if (!error) error = std::current_exception();
+      }
+      done.fetch_add(1);
+    }
+  };
+  const unsigned n = std::max(1u, std::min<unsigned>(worker_count(threads), static_cast<unsigned>(std::max(chunks, 1))));
+  std::vector<std::thread> pool;
+  for (unsigned t = 0; t < n; ++t) pool.emplace_back(worker);
+  if (progress) {
+    while (done.load() < chunks) {
+      progress(static_cast<double>(done.load()) / std::max(chunks, 1));
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    progress(1.0);
+  }
+  for (auto& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
+}
+
+}  // namespace ssimarch::porosity::detail
