@@ -20,4 +20,13 @@ class CliError : public std::runtime_error {
   int exit_code_;
 };
 
+/// Exit status a subcommand sets when it ran but reported a failure (1); main() returns it.
+inline int g_exit_status = 0;
+
+void add_trace_command(CLI::App& app);
+void add_eval_command(CLI::App& app);
+void add_demo_command(CLI::App& app);
+void add_surfaces_command(CLI::App& app);
+void add_curve_geometry_command(CLI::App& app);
+
 }  // namespace ssimarch::cli

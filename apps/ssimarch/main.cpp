@@ -5,13 +5,17 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "ssimarch/core/error.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"ssimarch: intersection curves of surfaces, their differential geometry, and exact porosity profiles"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "ssimarch 0.1.0");
-  int exit_code = 0;
-  (void)exit_code;
+  ssimarch::cli::add_trace_command(app);
+  ssimarch::cli::add_eval_command(app);
+  ssimarch::cli::add_demo_command(app);
+  ssimarch::cli::add_surfaces_command(app);
+  ssimarch::cli::add_curve_geometry_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -19,9 +23,15 @@ int main(int argc, char** argv) {
   } catch (const ssimarch::cli::CliError& e) {
     std::cerr << "ssimarch: error: " << e.what() << "\n";
     return e.exit_code();
+  } catch (const ssimarch::InputError& e) {
+    std::cerr << "ssimarch: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::logic_error& e) {
+    std::cerr << "ssimarch: internal error: " << e.what() << "\n";
+    return 3;
   } catch (const std::exception& e) {
     std::cerr << "ssimarch: error: " << e.what() << "\n";
     return 2;
   }
-  return 0;
+  return ssimarch::cli::g_exit_status;
 }

@@ -23,8 +23,15 @@ Vec3 unit_perpendicular(const Vec3& v, const Vec3& t) {
   return w / w.norm();
 }
 
+bool finite(const CurveSample& s) { return s.point.allFinite() && s.tangent.allFinite(); }
+
+// A sample without a tangent (no direction at a tangential point) cannot carry a frame: the
+// frame then counts as missing, and the estimate reports kInsufficientSamples.
 Frame frame_at(std::span<const CurveSample> s, std::size_t k, EstimateCircle kind) {
   Frame f;
+  const std::size_t lo = kind == EstimateCircle::kThreePoint && k > 0 ? k - 1 : k;
+  for (std::size_t i = lo; i <= k + 1 && i < s.size(); ++i)
+    if (!finite(s[i])) return f;
   const Vec3& p = s[k].point;
   const Vec3& t = s[k].tangent;
   Circle c;

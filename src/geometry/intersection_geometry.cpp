@@ -1,6 +1,7 @@
 #include "ssimarch/geometry/intersection_geometry.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include "ssimarch/geometry/curve_jet.hpp"
 #include "ssimarch/geometry/intersection_formulas.hpp"
@@ -106,13 +107,19 @@ CurveGeometry exact_geometry(const Problem& problem, const VecX& x, const Vec3* 
                              const GeometryTolerances& tol) {
   CurveJet<3> jet = curve_jet<3>(problem, x, orientation);
   CurveGeometry g;
-  if (jet.status == CurveJetStatus::kOk) {
+  double theta = kNaN;
+  if (auto l = surface_locals(problem, x)) theta = normal_angle(unit_normal(l->first), unit_normal(l->second));
+  if (std::fabs(std::sin(theta)) < tol.singular_sin_theta) {
+    // Not distinguishable from a tangential point (see GeometryTolerances): the jet's solves
+    // would amplify rounding by 1 / sin(theta) per order.
+    g.status = GeometryStatus::kSingular;
+  } else if (jet.status == CurveJetStatus::kOk) {
     g = frenet_from_derivatives(jet.derivative(1), jet.derivative(2), jet.derivative(3), tol);
   } else {
     g.status = jet.status == CurveJetStatus::kSingular ? GeometryStatus::kSingular : GeometryStatus::kNonFinite;
   }
   g.point = problem.point(x);
-  if (auto l = surface_locals(problem, x)) g.theta = normal_angle(unit_normal(l->first), unit_normal(l->second));
+  g.theta = theta;
   return g;
 }
 
@@ -170,9 +177,27 @@ std::optional<VecX> project_to_curve(const Problem& problem, const Vec3& X, cons
   CorrectorOptions co;
   co.tolerance = opt.tolerance * std::max(1.0, problem.scale());
   co.max_iterations = opt.max_iterations;
-  CorrectorResult r = NewtonCorrector{}.correct(problem, *guess, co);
-  if (r.status != CorrectorStatus::kConverged) return std::nullopt;
-  return r.x;
+  VecX x = *guess;
+  // Already on the curve (a singular point included, where Newton has no update): keep it.
+  if (problem.linearize(x).distance > co.tolerance) {
+    CorrectorResult r = NewtonCorrector{}.correct(problem, x, co);
+    if (r.status != CorrectorStatus::kConverged && problem.linearize(r.x).distance > co.tolerance) return std::nullopt;
+    x = r.x;
+  }
+  // Near a tangential point the residual is quadratic in the distance to the curve, so a residual
+  // tolerance leaves the point up to sqrt(tolerance) off it. Gauss-Newton still converges there
+  // (linearly), so keep stepping while the steps shrink, down to rounding.
+  double last = std::numeric_limits<double>::infinity();
+  for (int it = 0; it < 4 * opt.max_iterations; ++it) {
+    Linearization L = problem.linearize(x);
+    VecX dx = L.jacobian.completeOrthogonalDecomposition().solve(-L.h);
+    double size = dx.norm();
+    if (!dx.allFinite() || !(size < last)) break;
+    x += dx;
+    last = size;
+    if (size <= 1e-15 * (1.0 + x.norm())) break;
+  }
+  return problem.wrap(x);
 }
 
 std::optional<VecX> step_along_curve(const Problem& problem, const VecX& x, const Vec3& t, double ds,
@@ -189,7 +214,7 @@ std::optional<VecX> step_along_curve(const Problem& problem, const VecX& x, cons
     auto l = surface_locals(problem, x);
     if (l) xi.tail(2) = x.tail(2) + tangent_coordinates(std::get<ParametricLocal>(l->second), ds * t);
   }
-  const double tol = opt.tolerance * std::max(1.0, problem.scale());
+  const double tol = opt.tolerance * std::max(1.0, problem.point(x).norm());
   for (int it = 0; it < opt.max_iterations; ++it) {
     Linearization L = problem.linearize(xi);
     f.head(n - 1) = L.h;
@@ -200,6 +225,9 @@ std::optional<VecX> step_along_curve(const Problem& problem, const VecX& x, cons
     VecX dx = A.fullPivLu().solve(-f);
     if (!dx.allFinite()) return std::nullopt;
     xi += dx;
+    // Converged: the update is already quadratically small; one more would change nothing the
+    // estimate could see, except near singular points where the tangent amplifies position
+    // errors by 1/sin(theta) -- hence the tight default tolerance.
     if (dx.norm() <= tol && L.distance <= tol) return problem.wrap(xi);
   }
   Linearization L = problem.linearize(xi);

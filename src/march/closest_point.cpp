@@ -1,5 +1,7 @@
 #include "ssimarch/march/closest_point.hpp"
 
+#include "ssimarch/march/corrector.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -83,6 +85,36 @@ std::optional<VecX> unknowns_near(const Problem& problem, const Vec3& X) {
       if (!a || !b) return std::nullopt;
       x << (*a)[0], (*a)[1], (*b)[0], (*b)[1];
       return x;
+    }
+  }
+  return std::nullopt;
+}
+
+std::optional<VecX> regular_point_near(const Problem& problem, const VecX& x, double distance, double tolerance,
+                                       double min_rank_ratio) {
+  const Vec3 p0 = problem.point(x);
+  Linearization L0 = problem.linearize(x);
+  NewtonCorrector corrector;
+  CorrectorOptions co{tolerance, 30};
+  // Directions: each unknown alone, then each pair of unknowns with both relative signs (at a
+  // node of a parametric-implicit pair, the coordinate lines through it may meet the curve
+  // only at the node itself).
+  const int n = problem.dim();
+  std::vector<VecX> directions;
+  for (int i = 0; i < n; ++i) directions.push_back(VecX::Unit(n, i));
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j)
+      for (double s : {1.0, -1.0}) directions.push_back(VecX::Unit(n, i) + s * VecX::Unit(n, j));
+  for (const VecX& dir : directions) {
+    double speed = (L0.point_jacobian * dir).norm();
+    if (!(speed > 0)) continue;
+    for (double sign : {1.0, -1.0}) {
+      VecX guess = x + (sign * distance / speed) * dir;
+      CorrectorResult r = corrector.correct(problem, guess, co);
+      if (r.status != CorrectorStatus::kConverged || !problem.inside(r.x)) continue;
+      double d = (problem.point(r.x) - p0).norm();
+      if (d < 0.1 * distance || d > 3 * distance) continue;
+      if (Problem::rank_ratio(problem.linearize(r.x)) >= min_rank_ratio) return r.x;
     }
   }
   return std::nullopt;

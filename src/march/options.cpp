@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include "ssimarch/march/predictor.hpp"
 #include "ssimarch/march/result.hpp"
 
 namespace ssimarch {
@@ -10,6 +9,11 @@ namespace ssimarch {
 std::string_view to_string(PredictorKind k) {
   switch (k) {
     case PredictorKind::kTangent: return "tangent";
+    case PredictorKind::kCircle: return "circle";
+    case PredictorKind::kCircleWuAndrade: return "circle-wu-andrade";
+    case PredictorKind::kParabola: return "parabola";
+    case PredictorKind::kPolynomial: return "polynomial";
+    case PredictorKind::kHelix: return "helix";
     case PredictorKind::kTaylor: return "taylor";
   }
   return "?";
@@ -17,27 +21,33 @@ std::string_view to_string(PredictorKind k) {
 std::string_view to_string(CorrectorKind k) {
   switch (k) {
     case CorrectorKind::kNewton: return "newton";
+    case CorrectorKind::kProjection: return "projection";
   }
   return "?";
 }
 std::string_view to_string(StepRule k) {
   switch (k) {
     case StepRule::kConstant: return "constant";
+    case StepRule::kAngular: return "angular";
+    case StepRule::kDeviation: return "deviation";
+    case StepRule::kOrder3: return "order3";
+    case StepRule::kChordal: return "chordal";
   }
   return "?";
 }
 bool parse(std::string_view s, PredictorKind* out) {
-  for (auto k : {PredictorKind::kTangent, PredictorKind::kTaylor})
+  for (auto k : {PredictorKind::kTangent, PredictorKind::kCircle, PredictorKind::kCircleWuAndrade, PredictorKind::kParabola,
+                 PredictorKind::kPolynomial, PredictorKind::kHelix, PredictorKind::kTaylor})
     if (s == to_string(k)) return *out = k, true;
   return false;
 }
 bool parse(std::string_view s, CorrectorKind* out) {
-  for (auto k : {CorrectorKind::kNewton})
+  for (auto k : {CorrectorKind::kNewton, CorrectorKind::kProjection})
     if (s == to_string(k)) return *out = k, true;
   return false;
 }
 bool parse(std::string_view s, StepRule* out) {
-  for (auto k : {StepRule::kConstant})
+  for (auto k : {StepRule::kConstant, StepRule::kAngular, StepRule::kDeviation, StepRule::kOrder3, StepRule::kChordal})
     if (s == to_string(k)) return *out = k, true;
   return false;
 }
@@ -61,6 +71,9 @@ TraceStats& TraceStats::operator+=(const TraceStats& o) {
   linearizations += o.linearizations;
   jet_evaluations += o.jet_evaluations;
   corrector_failures += o.corrector_failures;
+  surface_evaluations[0] += o.surface_evaluations[0];
+  surface_evaluations[1] += o.surface_evaluations[1];
+  predictor_fallbacks += o.predictor_fallbacks;
   time_ms += o.time_ms;
   return *this;
 }
@@ -73,6 +86,10 @@ bool TraceOptions::is_valid(std::string* error) const {
   if (!(step_length >= 0) || !std::isfinite(step_length)) return fail("step_length must be a finite number >= 0 (0 = automatic)");
   if (!(min_step >= 0) || !std::isfinite(min_step)) return fail("min_step must be a finite number >= 0 (0 = automatic)");
   if (step_length > 0 && min_step > step_length) return fail("min_step must not exceed step_length");
+  if (!(min_step_length >= 0) || !std::isfinite(min_step_length)) return fail("min_step_length must be a finite number >= 0 (0 = automatic)");
+  if (step_length > 0 && min_step_length > step_length) return fail("min_step_length must not exceed step_length");
+  if (!(deviation >= 0) || !std::isfinite(deviation)) return fail("deviation must be a finite number >= 0 (0 = automatic)");
+  if (!(turn_angle > 0 && turn_angle <= 1.5)) return fail("turn_angle must be in (0, 1.5] radians");
   if (taylor_order < 1 || taylor_order > 8) return fail("taylor_order must be between 1 and 8");
   if (!(tolerance > 0) || !std::isfinite(tolerance)) return fail("tolerance must be a finite number > 0");
   if (tolerance < 1e-15) return fail("tolerance below 1e-15 cannot be reached in double precision");
@@ -83,20 +100,6 @@ bool TraceOptions::is_valid(std::string* error) const {
   if (!(max_length > 0)) return fail("max_length must be > 0");
   if (start_samples < 2 || start_samples > 1000) return fail("start_samples must be between 2 and 1000");
   return true;
-}
-
-AnyPredictor make_predictor(const TraceOptions& options) {
-  switch (options.predictor) {
-    case PredictorKind::kTaylor: return TaylorPredictor{options.taylor_order};
-    case PredictorKind::kTangent: break;
-  }
-  return TangentPredictor{};
-}
-int jet_order(const AnyPredictor& p) {
-  return std::visit([](const auto& x) { return x.jet_order(); }, p);
-}
-VecX predict(const AnyPredictor& p, const Problem& problem, const MarchState& s, double h) {
-  return std::visit([&](const auto& x) { return x.predict(problem, s, h); }, p);
 }
 
 }  // namespace ssimarch

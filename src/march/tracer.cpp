@@ -30,9 +30,6 @@ std::string describe_point(const Vec3& p) {
   return os.str();
 }
 
-double effective_step(const TraceOptions& o, const Problem& p) {
-  return o.step_length > 0 ? o.step_length : p.scale() / 100.0;
-}
 
 }  // namespace
 
@@ -46,9 +43,23 @@ double arc_length_estimate(const Vec3& a, const Vec3& ta, const Vec3& b, const V
 Tracer::Tracer(const Problem& problem, TraceOptions options) : problem_(problem), options_(options) {
   std::string error;
   if (!options_.is_valid(&error)) throw InputError("options", error);
-  if (options_.step_length == 0) options_.step_length = effective_step(options_, problem_);
+  const bool adaptive = options_.step != StepRule::kConstant;
+  // Spacing used to tell curves and start points apart: the user's step, else the constant
+  // rule's automatic step (scale/100), whatever the rule.
+  spacing_ = options_.step_length > 0 ? options_.step_length : problem_.scale() / 100.0;
+  if (options_.step_length == 0) options_.step_length = problem_.scale() / (adaptive ? 10.0 : 100.0);
+  if (options_.min_step_length == 0) options_.min_step_length = 1e-3 * options_.step_length;
   if (options_.min_step == 0) options_.min_step = 1e-7 * options_.step_length;
+  options_.min_step = std::min(options_.min_step, options_.min_step_length);
+  if (options_.deviation == 0) options_.deviation = 1e-4 * problem_.scale();
 }
+
+namespace {
+void add_evaluations(TraceStats* stats, const std::array<long, 2>& e) {
+  stats->surface_evaluations[0] += e[0];
+  stats->surface_evaluations[1] += e[1];
+}
+}  // namespace
 
 Tracer::Branch Tracer::march(const CurvePoint& start, bool detect_closure, TraceStats* stats) const {
   const Problem& P = problem_;
@@ -56,20 +67,24 @@ Tracer::Branch Tracer::march(const CurvePoint& start, bool detect_closure, Trace
   Branch b;
   b.points.push_back(start);
   AnyPredictor predictor = make_predictor(o);
-  const int order = jet_order(predictor);
-  NewtonCorrector corrector;
+  AnyCorrector corrector = make_corrector(o);
+  AnyStepControl step = make_step_control(o);
+  const int order = std::max(jet_order(predictor), std::visit([](const auto& s) { return s.jet_order(); }, step));
+  const std::array<long, 2> jet_cost = jet_evaluation_cost(P, order);
   CorrectorOptions co{o.tolerance, o.max_corrector_iterations};
-  ConstantStep step{o.step_length, o.min_step, o.step_length};
 
   MarchState state;
+  state.map_tolerance = o.tolerance;
   state.here = curve_jet_dynamic(P, start.x, order, &start.t);
   stats->jet_evaluations += order;
+  add_evaluations(stats, jet_cost);
   CurvePoint cur = start;
   if (state.here.status != CurveJetStatus::kOk) {
     b.why = Termination::kSingularPoint;
     b.message = "the start point " + describe_point(start.p) + " is a singular point of the curve";
     return b;
   }
+  std::visit([&](auto& s) { s.start(curve_frame(state.here, P.scale())); }, step);
   const double sagitta_slack = 1e-8 * P.scale() + 10 * o.tolerance;
 
   while (true) {
@@ -83,30 +98,44 @@ Tracer::Branch Tracer::march(const CurvePoint& start, bool detect_closure, Trace
       b.message = "reached max_length";
       return b;
     }
-    const double h = step.step();
-    VecX guess = predict(predictor, P, state, h);
-    CorrectorResult cr = corrector.correct(P, guess, co);
+    const double h = std::visit([](const auto& s) { return s.step(); }, step);
+    Prediction pr = predict(predictor, P, state, h);
+    add_evaluations(stats, pr.evaluations);
+    if (pr.fallback) ++stats->predictor_fallbacks;
+    const double arc = pr.arc > 0 ? pr.arc : h;
+    CorrectorResult cr = correct(corrector, P, pr.x, co);
     stats->linearizations += cr.linearizations;
+    add_evaluations(stats, cr.evaluations);
     bool ok = cr.status == CorrectorStatus::kConverged;
+    bool measured = false;
+    StepReport report;
     DynamicCurveJet next;
     Vec3 p1;
     if (ok) {
       p1 = P.point(cr.x);
+      if (P.kind() != PairKind::kImplicitImplicit) ++stats->surface_evaluations[0];
       double chord = (p1 - cur.p).norm();
-      ok = chord >= 0.25 * h && chord <= 1.75 * h && (p1 - P.point(guess)).norm() <= o.max_correction_ratio * h &&
+      ok = chord >= 0.25 * arc && chord <= 1.75 * arc && (p1 - pr.point).norm() <= o.max_correction_ratio * arc &&
            (p1 - cur.p).dot(cur.t) > 0;
       if (ok) {
         next = curve_jet_dynamic(P, cr.x, order, &cur.t);
         stats->jet_evaluations += order;
+        add_evaluations(stats, jet_cost);
         ok = next.status == CurveJetStatus::kOk && angle_between(cur.t, next.tangent()) <= o.max_turn_angle;
+        if (ok) {
+          report = make_step_report(cur.p, cur.t, p1, next.tangent(), pr.point, arc, cr.iterations);
+          measured = true;
+          ok = std::visit([&](const auto& s) { return s.acceptable(report); }, step);
+        }
       }
     } else {
       ++stats->corrector_failures;
     }
     if (!ok) {
       ++stats->rejected_steps;
-      if (!step.rejected()) {
+      if (!std::visit([&](auto& s) { return s.rejected(measured ? &report : nullptr); }, step)) {
         Linearization L = P.linearize(cur.x);
+        add_evaluations(stats, linearize_evaluation_cost(P));
         double sin_theta = L.normal_first.cross(L.normal_second).norm();
         b.why = state.here.rank_ratio < kSingularRankRatio || sin_theta < kSingularRankRatio
                     ? Termination::kSingularPoint
@@ -145,6 +174,7 @@ Tracer::Branch Tracer::march(const CurvePoint& start, bool detect_closure, Trace
       }
       CorrectorResult landed = solve_with_fixed_unknown(P, cur.x + fraction * delta, edge, value, co);
       stats->linearizations += landed.linearizations;
+      add_evaluations(stats, landed.evaluations);
       std::string name = P.unknown_names()[static_cast<std::size_t>(edge)];
       if (landed.status != CorrectorStatus::kConverged || !P.inside(landed.x, 1e-9 * (1 + std::fabs(value)))) {
         b.message = "left the domain at " + name + " = " + std::to_string(value) + " (could not land on the edge)";
@@ -153,6 +183,8 @@ Tracer::Branch Tracer::march(const CurvePoint& start, bool detect_closure, Trace
       Vec3 pe = P.point(landed.x);
       if ((pe - cur.p).norm() > 1e-12 * P.scale()) {
         DynamicCurveJet ej = curve_jet_dynamic(P, landed.x, 1, &cur.t);
+        ++stats->jet_evaluations;
+        add_evaluations(stats, jet_evaluation_cost(P, 1));
         Vec3 te = ej.status == CurveJetStatus::kOk ? ej.tangent() : Vec3((pe - cur.p).normalized());
         b.length += arc_length_estimate(cur.p, cur.t, pe, te);
         b.points.push_back({landed.x, pe, te});
@@ -188,10 +220,13 @@ Tracer::Branch Tracer::march(const CurvePoint& start, bool detect_closure, Trace
     state.previous_x = cur.x;
     state.previous_p = cur.p;
     state.previous_t = cur.t;
+    state.circle_line_parameter = pr.circle_line_parameter;
+    state.circle_line_axis = pr.circle_line_axis;
     cur = CurvePoint{cr.x, p1, next.tangent()};
     state.here = std::move(next);
     b.points.push_back(cur);
-    step.accepted();
+    const CurveFrame frame = curve_frame(state.here, P.scale());
+    std::visit([&](auto& s) { s.accepted(report, frame); }, step);
   }
 }
 
@@ -199,6 +234,7 @@ TracedCurve Tracer::trace_from(const VecX& x0, TraceStats* stats) const {
   TracedCurve curve;
   DynamicCurveJet j = curve_jet_dynamic(problem_, x0, 1);
   ++stats->jet_evaluations;
+  add_evaluations(stats, jet_evaluation_cost(problem_, 1));
   CurvePoint start{x0, problem_.point(x0), j.tangent()};
   if (j.status != CurveJetStatus::kOk) {
     curve.points.push_back(start);
@@ -230,7 +266,7 @@ TracedCurve Tracer::trace_from(const VecX& x0, TraceStats* stats) const {
 }
 
 bool Tracer::on_traced_curve(const Vec3& p, const std::vector<TracedCurve>& curves) const {
-  const double radius = 0.2 * options_.step_length;
+  const double radius = 0.2 * spacing_;
   for (const auto& c : curves)
     for (std::size_t i = 0; i + 1 < c.points.size(); ++i) {
       Vec3 a = c.points[i].p, seg = c.points[i + 1].p - a;
@@ -247,10 +283,11 @@ std::vector<VecX> Tracer::find_start_points(TraceStats* stats) const {
   CorrectorOptions co{options_.tolerance, 20};
   std::vector<VecX> found;
   std::vector<Vec3> found_points;
-  const double separation = 0.5 * options_.step_length;
+  const double separation = 0.5 * spacing_;
   auto consider = [&](const VecX& guess) {
     CorrectorResult r = corrector.correct(P, guess, co);
     stats->linearizations += r.linearizations;
+    add_evaluations(stats, r.evaluations);
     if (r.status != CorrectorStatus::kConverged || !P.inside(r.x)) return;
     Vec3 p = P.point(r.x);
     for (const Vec3& q : found_points)
@@ -330,8 +367,10 @@ TraceResult Tracer::trace(const std::vector<Vec3>& starts) const {
       if (x) {
         r = corrector.correct(problem_, *x, co);
         result.stats.linearizations += r.linearizations;
+        add_evaluations(&result.stats, r.evaluations);
       }
       if (!x || r.status != CorrectorStatus::kConverged) {
+        ++result.failed_starts;
         result.warnings.push_back("start point " + describe_point(X) + " could not be moved onto the intersection (corrector " +
                                   std::string(x ? to_string(r.status) : "had no initial guess") + ")");
         continue;
@@ -339,7 +378,17 @@ TraceResult Tracer::trace(const std::vector<Vec3>& starts) const {
       seeds.push_back(r.x);
     }
   }
-  for (const VecX& x : seeds) {
+  for (VecX& x : seeds) {
+    // A start point that converged onto a singular point (e.g. Newton from far away ending at a
+    // node) is moved to a regular point of the curve next to it, which the trace then crosses.
+    if (Problem::rank_ratio(problem_.linearize(x)) < 1e-4) {
+      if (auto y = regular_point_near(problem_, x, 0.5 * options_.step_length, options_.tolerance)) {
+        result.warnings.push_back("start point " + describe_point(problem_.point(x)) +
+                                  " is a singular point of the curve; tracing from the regular point " +
+                                  describe_point(problem_.point(*y)) + " next to it");
+        x = *y;
+      }
+    }
     if (on_traced_curve(problem_.point(x), result.curves)) continue;
     result.curves.push_back(trace_from(x, &result.stats));
   }

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "ssimarch/porosity/piecewise_quadrature.hpp"
+#include "ssimarch/porosity/polynomial_roots.hpp"
 #include "ssimarch/porosity/sphere_arc.hpp"
 
 namespace ssimarch::porosity {
@@ -22,6 +23,8 @@ double arc_length(const Particle& p, double z, double r, const KernelTolerances&
 
 long kernel_signature(const Particle& p, double z, double r, const KernelTolerances& tol) {
   const auto res = circle_spherocylinder(p, z, r, tol);
+  // For a sphere the surface parts are one sphere: only the crossing count marks a singularity.
+  if (p.length == 0) return static_cast<long>(res.which) * 125 + res.count;
   long n[3] = {0, 0, 0};
   for (int k = 0; k < res.count; ++k) ++n[static_cast<int>(res.crossing_pieces[k])];
   return static_cast<long>(res.which) * 125 + n[0] * 25 + n[1] * 5 + n[2];
@@ -47,12 +50,36 @@ QuadResult lateral_area(const ParticleShape& s, double r, const Slab& slab, doub
   };
   std::array<Arc, 4> arcs;
   bool full = false;
-  const int n = s.shadow_arcs(r, arcs, full);
-  const double tol_theta = abs_tol / r;
+  int n = s.shadow_arcs(r, arcs, full);
   if (full) {
-    out = integrate(chord, -kPi, kPi, tol_theta);
-  } else {
-    for (int k = 0; k < n; ++k) out += integrate_sqrt_ends(chord, arcs[k].begin, arcs[k].end, tol_theta / n);
+    arcs[0] = {-kPi, kPi};
+    n = 1;
+  }
+  std::array<double, 8> junction{};
+  const int nj = s.junction_angles(r, junction);
+  const double tol_theta = abs_tol / r;
+  double total = 0;
+  for (int k = 0; k < n; ++k) total += arcs[k].end - arcs[k].begin;
+  for (int k = 0; k < n; ++k) {
+    // Split the arc at the junction angles inside it (shifted by 2 pi into the arc's range).
+    std::array<double, 10> br{};
+    int nb = 0;
+    br[nb++] = arcs[k].begin;
+    for (int j = 0; j < nj; ++j) {
+      double t = junction[j];
+      while (t < arcs[k].begin) t += 2 * kPi;
+      while (t > arcs[k].end) t -= 2 * kPi;
+      if (t > arcs[k].begin && t < arcs[k].end) br[nb++] = t;
+    }
+    detail::small_sort(br.data() + 1, nb - 1);
+    br[nb++] = arcs[k].end;
+    for (int j = 0; j + 1 < nb; ++j) {
+      const double w = br[j + 1] - br[j];
+      if (!(w > 0)) continue;
+      const double tol_piece = tol_theta * w / total;
+      out += (full && nb == 2) ? integrate(chord, br[j], br[j + 1], tol_piece)
+                               : integrate_sqrt_ends(chord, br[j], br[j + 1], tol_piece);
+    }
   }
   out.value *= r;
   out.error *= r;

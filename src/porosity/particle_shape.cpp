@@ -175,6 +175,39 @@ int ParticleShape::shadow_arcs(double r, std::array<Arc, 4>& arcs, bool& full) c
   return count;
 }
 
+int ParticleShape::junction_angles(double r, std::array<double, 8>& out) const {
+  if (h_ == 0) return 0;
+  // Orthonormal v1, v2 perpendicular to the axis: junction circle C + a (cos psi v1 + sin psi v2).
+  const Vec3<double>& u = p_.axis;
+  const Vec3<double> helper = std::abs(u.z()) < 0.9 ? Vec3<double>(0, 0, 1) : Vec3<double>(1, 0, 0);
+  const Vec3<double> v1 = u.cross(helper).normalized(), v2 = u.cross(v1);
+  int n = 0;
+  for (const Vec3<double>* c : {&cp_, &cm_}) {
+    const double cx = c->x(), cy = c->y();
+    const double K0 = cx * cx + cy * cy - r * r;
+    const double A1 = 2 * a_ * (cx * v1.x() + cy * v1.y()), B1 = 2 * a_ * (cx * v2.x() + cy * v2.y());
+    const double P = a2_ * (v1.x() * v1.x() + v1.y() * v1.y()), Q = 2 * a2_ * (v1.x() * v2.x() + v1.y() * v2.y());
+    const double S = a2_ * (v2.x() * v2.x() + v2.y() * v2.y());
+    // (1 + t^2)^2 (K0 + A1 cos + B1 sin + P cos^2 + Q cos sin + S sin^2), t = tan(psi/2), ascending.
+    double q[5] = {K0 + A1 + P, 2 * B1 + 2 * Q, 2 * K0 - 2 * P + 4 * S, 2 * B1 - 2 * Q, K0 - A1 + P};
+    int deg = 4;
+    const double scale = std::abs(K0) + std::abs(A1) + std::abs(B1) + P + std::abs(Q) + S;
+    while (deg > 0 && std::abs(q[deg]) <= 1e-14 * scale) --deg;
+    std::array<double, 5> psis{};
+    int np = 0;
+    if (deg < 4) psis[np++] = kPi;  // root at t = infinity
+    if (deg >= 1) {
+      const RealRoots<double> t = real_roots(q, deg, 1e-14);
+      for (int k = 0; k < t.count && np < 5; ++k) psis[np++] = 2 * std::atan(t.x[k]);
+    }
+    for (int k = 0; k < np && n < 8; ++k) {
+      const Vec3<double> e = *c + a_ * (std::cos(psis[k]) * v1 + std::sin(psis[k]) * v2);
+      out[n++] = std::atan2(e.y(), e.x());
+    }
+  }
+  return n;
+}
+
 std::vector<double> ParticleShape::critical_radii() const {
   std::vector<double> out;
   out.push_back(rho_min_);

@@ -143,6 +143,13 @@ TEST(Estimate, ReportsMissingSamplesAndStraightLines) {
   EXPECT_TRUE(none.has_tangent());
   EXPECT_TRUE(std::isnan(none.kappa));
   EXPECT_EQ(estimate_from_samples(s, 5, EstimateCircle::kWuAndrade).status, GeometryStatus::kInsufficientSamples);
+  // A neighbour without a tangent (e.g. an isolated tangential point) is a missing sample.
+  std::vector<CurveSample> holes = samples_of(Helix{}, 0.0, 0.1, 1, 1);
+  holes[2].tangent = Vec3::Constant(kNaN);
+  CurveGeometry h = estimate_from_samples(holes, 1, EstimateCircle::kWuAndrade);
+  EXPECT_EQ(h.status, GeometryStatus::kInsufficientSamples);
+  EXPECT_TRUE(std::isfinite(h.kappa));  // from the frame one step back
+  EXPECT_TRUE(std::isnan(h.tau));
   std::vector<CurveSample> line;
   for (int k = 0; k < 3; ++k) line.push_back({Vec3(k, 2 * k, 0), Vec3(1, 2, 0).normalized()});
   for (EstimateCircle kind : {EstimateCircle::kWuAndrade, EstimateCircle::kThreePoint}) {

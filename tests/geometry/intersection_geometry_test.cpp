@@ -87,7 +87,7 @@ void expect_geometry(const CurveGeometry& got, const CurveGeometry& want, double
 const std::array<GeometryMethod, 3> kClosedForm{GeometryMethod::kExact, GeometryMethod::kYeMaekawa,
                                                 GeometryMethod::kStoyanov};
 
-TEST(EvaluateGeometry, SeedViviniAllMethodsAllPairKinds) {
+TEST(EvaluateGeometry, SeedVivianiAllMethodsAllPairKinds) {
   const double t0 = kPi / 2;  // P = (1/2, 1/2, sqrt2/2)
   const CurveGeometry want = exact_frenet(Viviani{}, t0);
   ASSERT_NEAR(want.kappa, 2 * std::sqrt(39.0) / 9, 1e-15);
@@ -150,20 +150,21 @@ TEST(EvaluateGeometry, RandomPointsOnTorusKnotAndViviani) {
     ctx.orientation = want.t;
     for (GeometryMethod m : kClosedForm) {
       CurveGeometry g = evaluate_geometry(p1, pair1_x(s), m, ctx);
-      ASSERT_EQ(g.status, GeometryStatus::kOk);
+      ASSERT_EQ(g.status, GeometryStatus::kOk) << to_string(m) << " s=" << s << " theta=" << g.theta;
       expect_geometry(g, want, 1e-9, std::string(to_string(m)) + " torus knot s=" + std::to_string(s));
     }
   }
   for (PairKind kind : {PairKind::kImplicitImplicit, PairKind::kParametricImplicit, PairKind::kParametricParametric}) {
     Problem pb = viviani(kind);
-    for (int i = 0; i < 25; ++i) {
-      double t = 0.3 + (2 * kPi - 0.6) * i / 24.0;  // away from the double point t = 0
+    for (int i = 0; i < 24; ++i) {
+      // Away from the double point (t = 0, 2 pi) and from the sphere's parametric pole (t = pi).
+      double t = 0.3 + (2 * kPi - 0.6) * (i + 0.5) / 24.0;
       CurveGeometry want = exact_frenet(Viviani{}, t);
       GeometryContext ctx;
       ctx.orientation = want.t;
       for (GeometryMethod m : kClosedForm) {
         CurveGeometry g = evaluate_geometry(pb, viviani_x(kind, t), m, ctx);
-        ASSERT_EQ(g.status, GeometryStatus::kOk);
+        ASSERT_EQ(g.status, GeometryStatus::kOk) << to_string(m) << " " << to_string(kind) << " t=" << t;
         expect_geometry(g, want, 1e-9, std::string(to_string(m)) + " viviani t=" + std::to_string(t));
       }
     }
@@ -252,10 +253,16 @@ TEST(Sampling, ProjectAndWalkAlongTheCurveThroughASingularPoint) {
   for (PairKind kind : {PairKind::kParametricParametric, PairKind::kImplicitImplicit}) {
     Problem p2 = pair2(kind);
     const CurveGeometry exact = exact_frenet(CurveC2{}, 0.0);
-    GeometryContext sc = sample_context(p2, pair2_x(kind, 0.0), 1e-3, &exact.t);
+    // Step 1e-2, not smaller: near a singular point a sample's position error (rounding of
+    // Newton) grows by 1/sin(theta) in its tangent, and the torsion divides that by step^2.
+    GeometryContext sc = sample_context(p2, pair2_x(kind, 0.0), 1e-2, &exact.t);
     ASSERT_EQ(sc.previous.size(), 2u);
     ASSERT_EQ(sc.next.size(), 1u);
-    for (const VecX& xi : sc.previous) EXPECT_LT(p2.point(xi).z(), 0.0);  // C2(s<0) has z < 0
+    for (const VecX& xi : sc.previous) {
+      Vec3 p = p2.point(xi);
+      EXPECT_LT(p.z(), 0.0);  // C2(s<0) has z < 0, its mirror branch z > 0
+      EXPECT_LT((p - curve_point(CurveC2{}, 2 * std::asin(p.z() / 2))).norm(), 1e-12);
+    }
     EXPECT_GT(p2.point(sc.next[0]).z(), 0.0);
     CurveGeometry e = evaluate_geometry(p2, pair2_x(kind, 0.0), GeometryMethod::kEstimate, sc);
     ASSERT_EQ(e.status, GeometryStatus::kOk);
@@ -264,8 +271,8 @@ TEST(Sampling, ProjectAndWalkAlongTheCurveThroughASingularPoint) {
     EXPECT_NEAR(e.kappa_prime, 0.0, 1e-5);
   }
   // Causal use (the tracer's): only previous samples; the estimate lags one sample.
-  GeometryContext causal = sample_context(pb, viviani_x(PairKind::kImplicitImplicit, kPi / 2), 1e-3,
-                                          &exact_frenet(Viviani{}, kPi / 2).t);
+  const Vec3 t_here = exact_frenet(Viviani{}, kPi / 2).t;
+  GeometryContext causal = sample_context(pb, viviani_x(PairKind::kImplicitImplicit, kPi / 2), 1e-3, &t_here);
   causal.next.clear();
   CurveGeometry lag = evaluate_geometry(pb, viviani_x(PairKind::kImplicitImplicit, kPi / 2), GeometryMethod::kEstimate, causal);
   ASSERT_EQ(lag.status, GeometryStatus::kOk);

@@ -220,3 +220,27 @@ TEST(Primitives, RejectInvalidParameters) {
 
 }  // namespace
 }  // namespace ssimarch
+
+// Compile-time checks: every kind has the forms its header promises, for every number type.
+#include "ssimarch/surface/concepts.hpp"
+#include "ssimarch/surface/surface.hpp"
+namespace ssimarch {
+static_assert(ParametricSurface<Plane> && ImplicitSurface<Plane>);
+static_assert(ParametricSurface<Sphere> && ImplicitSurface<Sphere>);
+static_assert(ParametricSurface<Cylinder> && ImplicitSurface<Cylinder>);
+static_assert(ParametricSurface<Cone> && ImplicitSurface<Cone>);
+static_assert(ParametricSurface<Torus> && ImplicitSurface<Torus>);
+static_assert(ParametricSurface<Ellipsoid> && ImplicitSurface<Ellipsoid>);
+static_assert(ParametricSurface<Paraboloid> && ImplicitSurface<Paraboloid>);
+static_assert(ParametricSurface<Capsule> && ImplicitSurface<Capsule>);
+static_assert(ParametricSurface<ExprParametric> && !ImplicitSurface<ExprParametric>);
+static_assert(!ParametricSurface<ExprImplicit> && ImplicitSurface<ExprImplicit>);
+static_assert(ParametricSurface<BezierPatch> && !ImplicitSurface<BezierPatch>);
+static_assert(ParametricSurface<BSplineSurface> && !ImplicitSurface<BSplineSurface>);
+// Explicit instantiations of Surface's dispatch for the number types the tracer uses.
+template Vec3T<double> Surface::point<double>(const double&, const double&) const;
+template Vec3T<Jet<4, 1>> Surface::point<Jet<4, 1>>(const Jet<4, 1>&, const Jet<4, 1>&) const;
+template Vec3T<Taylor<8>> Surface::point<Taylor<8>>(const Taylor<8>&, const Taylor<8>&) const;
+template Jet<3, 4> Surface::value<Jet<3, 4>>(const Vec3T<Jet<3, 4>>&) const;
+template Taylor<8> Surface::value<Taylor<8>>(const Vec3T<Taylor<8>>&) const;
+}  // namespace ssimarch

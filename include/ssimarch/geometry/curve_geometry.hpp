@@ -70,8 +70,10 @@ inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 struct GeometryTolerances {
   /// sin(theta) below which the normals count as parallel (dimensionless). Transversal formulas
   /// divide by sin^2(theta): below this they report kSingular, and ye-maekawa switches to its
-  /// tangential formulas.
-  double singular_sin_theta = 1e-9;
+  /// tangential formulas. About sqrt(machine epsilon): where two surfaces are tangent the
+  /// residual is quadratic in the distance, so a point can only be located to ~1e-8 of a
+  /// tangential point, where sin(theta) is of that order too.
+  double singular_sin_theta = 1e-7;
   /// Curvature below which the Frenet frame is undefined (1 / model length).
   double zero_curvature = 1e-12;
   /// mixed: ye-maekawa where sin(theta) >= this, estimate below (dimensionless; thesis §3.2,

@@ -44,13 +44,16 @@ std::optional<std::pair<SurfaceLocal, SurfaceLocal>> surface_locals(const Proble
                                                                      bool implicit_forms = false);
 
 /// `exact`: the curve's arc-length jet by the implicit function theorem (curve_jet.hpp, order 3)
-/// through frenet_from_derivatives. kSingular where the curve Jacobian is rank deficient.
+/// through frenet_from_derivatives. kSingular where the curve Jacobian is rank deficient or
+/// sin(theta) < tol.singular_sin_theta.
 CurveGeometry exact_geometry(const Problem& problem, const VecX& x, const Vec3* orientation,
                              const GeometryTolerances& tol = {});
 
 /// Bounds of project_to_curve and step_along_curve.
 struct CurveSamplingOptions {
-  double tolerance = 1e-13;  // Newton stops when |H| / |grad| and the last update are below (model units)
+  /// Newton stops when the distance to both surfaces and the last update are below
+  /// tolerance * max(1, |point|) (model units).
+  double tolerance = 1e-14;
   int max_iterations = 30;
 };
 

@@ -19,4 +19,12 @@ Vec2 refine_closest_parameters(const Surface& surface, const Vec3& X, Vec2 uv);
 /// parametric pairs, X itself for implicit-implicit pairs. Not yet on the curve: correct it.
 std::optional<VecX> unknowns_near(const Problem& problem, const Vec3& X);
 
+/// A regular point of the curve about `distance` (model units) from the solution x, for when
+/// x is a singular point (rank ratio of J_H below `min_rank_ratio`): Newton from x offset along
+/// each unknown in turn (both signs), keeping the first solution whose Jacobian has rank ratio
+/// >= min_rank_ratio and whose 3D distance from x is in (0.1, 3] * distance. Empty when none is
+/// found (an isolated singular point has no regular neighbours).
+std::optional<VecX> regular_point_near(const Problem& problem, const VecX& x, double distance, double tolerance,
+                                       double min_rank_ratio = 1e-4);
+
 }  // namespace ssimarch

@@ -48,7 +48,12 @@ struct TraceStats {
   long linearizations = 0;           // first-order evaluations of both surfaces
   long jet_evaluations = 0;          // higher-order (Taylor) evaluations of H
   long corrector_failures = 0;
+  // Calls of the first and of the second surface (Surface::point or Surface::value, any number
+  // type: an evaluation with derivatives counts once), by the tracer, its predictor and corrector.
+  std::array<long, 2> surface_evaluations{};
+  long predictor_fallbacks = 0;      // predictions that fell back to the tangent step (docs/marching.md)
   double time_ms = 0;
+  // Wall time is `time_ms` (milliseconds, steady clock), over the whole trace() call.
 
   void record_iterations(int n) { ++iterations[static_cast<std::size_t>(n <= 1 ? 0 : (n >= 5 ? 4 : n - 1))]; }
   TraceStats& operator+=(const TraceStats& o);
@@ -58,6 +63,7 @@ struct TraceResult {
   std::vector<TracedCurve> curves;
   TraceStats stats;
   std::vector<std::string> warnings;  // e.g. a start point that could not be put on the curve
+  int failed_starts = 0;              // given start points that could not be put on the curve
 };
 
 }  // namespace ssimarch

@@ -24,7 +24,8 @@ namespace ssimarch {
 
 class Tracer {
  public:
-  /// Throws InputError when the options are invalid (TraceOptions::is_valid).
+  /// Throws InputError when the options are invalid (TraceOptions::is_valid). Resolves the
+  /// automatic (zero) step_length, min_step_length, min_step and deviation (options.hpp).
   Tracer(const Problem& problem, TraceOptions options);
 
   /// Traces every curve through the 3D points `starts` (each near the curve); with no start
@@ -53,7 +54,8 @@ class Tracer {
   bool on_traced_curve(const Vec3& p, const std::vector<TracedCurve>& curves) const;
 
   const Problem& problem_;
-  TraceOptions options_;
+  TraceOptions options_;  // with the automatic values resolved
+  double spacing_ = 0;    // distance scale for telling curves and start points apart (model units)
 };
 
 /// Arc length between two points of a curve with unit tangents ta, tb: the length of the

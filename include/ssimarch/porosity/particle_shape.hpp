@@ -42,6 +42,11 @@ class ParticleShape {
   /// Arcs of the circle of radius r (centred on the z axis) inside the shadow; `full` when the whole
   /// circle is inside (then no arcs are returned).
   int shadow_arcs(double r, std::array<Arc, 4>& arcs, bool& full) const;
+  /// Angles theta at which the circle of radius r passes under a cylinder-cap junction circle (the
+  /// projections of the two junction circles are ellipses; circle-ellipse = a quartic in
+  /// tan(psi/2)): there the chord's end switches between cylinder and cap, a curvature jump that the
+  /// quadrature should not straddle. Returns the count (<= 8), angles in (-pi, pi].
+  int junction_angles(double r, std::array<double, 8>& out) const;
   /// Radii at which the circle's crossings with the shadow outline change (tangencies to the outline,
   /// outline corners): the breakpoints of the lateral area as a function of r. Sorted.
   std::vector<double> critical_radii() const;

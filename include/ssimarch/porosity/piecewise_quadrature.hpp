@@ -25,7 +25,11 @@ QuadResult integrate_piecewise(V&& value, S&& sig, double a, double b, double ab
                                int coarse = kPiecewiseCoarseSamples) {
   QuadResult out;
   if (!(b > a)) return out;
-  const double res = 4 * 2.220446049250313e-16 * std::max({std::abs(a), std::abs(b), b - a});
+  // Breakpoints are located to `res`; changes closer than `merge` are one breakpoint, so that a
+  // signature flickering in a rounding-sized band (a crossing exactly on a decision boundary) does
+  // not shatter the range into thousands of pieces.
+  const double res = 1e-12 * (b - a) + 4 * 2.220446049250313e-16 * std::max(std::abs(a), std::abs(b));
+  const double merge = 1e-10 * (b - a);
   std::vector<double> breaks{a};
   // Bisection on [l, r] with sig(l) = sl != sr = sig(r); finds every change that the halves expose.
   auto refine = [&](auto&& self, double l, long sl, double r, long sr) -> void {
@@ -40,18 +44,21 @@ QuadResult integrate_piecewise(V&& value, S&& sig, double a, double b, double ab
     self(self, l, sl, m, sm);
     self(self, m, sm, r, sr);
   };
-  // Samples strictly inside (a, b): the ends themselves are often exactly at a tangency.
+  // Coarse samples, ends included (a change between an end and its neighbour is found as well).
   std::vector<double> xs(coarse + 1);
   std::vector<long> ss(coarse + 1);
   for (int k = 0; k <= coarse; ++k) {
-    const double t = (k + 0.5) / (coarse + 1);
-    xs[k] = a + (b - a) * t;
+    xs[k] = k == coarse ? b : a + (b - a) * k / coarse;
     ss[k] = sig(xs[k]);
   }
   out.evaluations += coarse + 1;
   for (int k = 0; k < coarse; ++k) refine(refine, xs[k], ss[k], xs[k + 1], ss[k + 1]);
-  breaks.push_back(b);
   std::sort(breaks.begin(), breaks.end());
+  std::vector<double> merged;
+  for (double x : breaks)
+    if (merged.empty() || x - merged.back() > merge) merged.push_back(x);
+  merged.push_back(b);
+  breaks.swap(merged);
   const double total = b - a;
   for (std::size_t k = 0; k + 1 < breaks.size(); ++k) {
     const double lo = breaks[k], hi = breaks[k + 1];

@@ -13,8 +13,8 @@
 namespace ssimarch::porosity {
 
 enum class QuadStatus {
-  converged,  ///< estimated |error| <= abs_tol
-  max_depth,  ///< bisection depth limit reached; `error` is the remaining estimate
+  converged,  ///< estimated |error| <= abs_tol (or at the rounding floor of the rule)
+  max_depth,  ///< bisection depth or rule-call budget exhausted; `error` is the remaining estimate
 };
 
 struct QuadResult {
@@ -22,6 +22,7 @@ struct QuadResult {
   double error = 0.0;     ///< estimated absolute error (sum over accepted subintervals)
   long evaluations = 0;
   QuadStatus status = QuadStatus::converged;
+  bool roundoff_limited = false;  ///< the error estimate is the rounding floor of the rule itself
 
   QuadResult& operator+=(const QuadResult& o) {
     value += o.value;
@@ -34,6 +35,9 @@ struct QuadResult {
 
 /// Default bisection depth limit of the adaptive integrators (intervals down to 2^-40 of the range).
 inline constexpr int kQuadMaxDepth = 40;
+/// Default budget of 15-point rule applications per integral: noisy integrands (values known only to
+/// a few ulps more than the rule's rounding floor) must not split into 2^depth pieces.
+inline constexpr int kQuadMaxRules = 2000;
 
 namespace detail {
 
@@ -74,24 +78,28 @@ QuadResult gk15(F& f, double a, double b) {
   double err = std::abs((resk - resg) * h);
   if (resasc != 0.0 && err != 0.0) err = resasc * std::min(1.0, std::pow(200.0 * err / resasc, 1.5));
   const double round = 50.0 * 2.220446049250313e-16 * resabs * std::abs(h);
-  if (round > err) err = round;
+  if (round >= err) {
+    err = round;
+    r.roundoff_limited = true;  // further bisection cannot improve this interval
+  }
   r.error = err;
   r.evaluations = 15;
   return r;
 }
 
 template <class F>
-QuadResult adapt(F& f, double a, double b, double tol, int depth, const QuadResult& whole) {
-  if (whole.error <= tol) return whole;
-  if (depth <= 0 || !(b - a > 4 * 2.220446049250313e-16 * std::max(std::abs(a), std::abs(b)))) {
+QuadResult adapt(F& f, double a, double b, double tol, int depth, const QuadResult& whole, int& budget) {
+  if (whole.error <= tol || whole.roundoff_limited) return whole;
+  if (depth <= 0 || budget < 2 || !(b - a > 4 * 2.220446049250313e-16 * std::max(std::abs(a), std::abs(b)))) {
     QuadResult r = whole;
     r.status = QuadStatus::max_depth;
     return r;
   }
   const double m = (a + b) / 2;
   const QuadResult left = gk15(f, a, m), right = gk15(f, m, b);
-  QuadResult out = adapt(f, a, m, tol / 2, depth - 1, left);
-  out += adapt(f, m, b, tol / 2, depth - 1, right);
+  budget -= 2;
+  QuadResult out = adapt(f, a, m, tol / 2, depth - 1, left, budget);
+  out += adapt(f, m, b, tol / 2, depth - 1, right, budget);
   out.evaluations += whole.evaluations;
   return out;
 }
@@ -100,10 +108,12 @@ QuadResult adapt(F& f, double a, double b, double tol, int depth, const QuadResu
 
 /// Integral of f over [a, b] to absolute tolerance abs_tol (model units of the integral).
 template <class F>
-QuadResult integrate(F&& f, double a, double b, double abs_tol, int max_depth = kQuadMaxDepth) {
+QuadResult integrate(F&& f, double a, double b, double abs_tol, int max_depth = kQuadMaxDepth,
+                     int max_rules = kQuadMaxRules) {
   if (!(b > a)) return {};
   const QuadResult whole = detail::gk15(f, a, b);
-  return detail::adapt(f, a, b, abs_tol, max_depth, whole);
+  int budget = max_rules - 1;
+  return detail::adapt(f, a, b, abs_tol, max_depth, whole, budget);
 }
 
 /// Integral of f over [a, b] where f may behave like sqrt(x - a) and sqrt(b - x) at the ends

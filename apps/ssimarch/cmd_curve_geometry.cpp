@@ -1,0 +1,121 @@
+// ssimarch curve-geometry SCENE.json --intersection NAME --at X,Y,Z [--method M] [--step H]:
+// the differential geometry of one intersection curve at the curve point nearest to X,Y,Z, as
+// JSON (issue 4; docs/geometry.md).
+#include <cmath>
+#include <iostream>
+#include <memory>
+
+#include "commands.hpp"
+#include "ssimarch/geometry/intersection_geometry.hpp"
+#include "ssimarch/io/scene.hpp"
+
+namespace ssimarch::cli {
+
+namespace {
+
+struct CurveGeometryArgs {
+  std::string scene, intersection, at, method, toward;
+  double step = 0.01;
+};
+
+Vec3 parse_xyz(const std::string& text, const expr::Constants& constants, const std::string& option) {
+  std::vector<double> v;
+  std::size_t start = 0;
+  while (true) {
+    std::size_t comma = text.find(',', start);
+    std::string part = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    v.push_back(number_from_json(nlohmann::json(part), constants, option + " component " + std::to_string(v.size() + 1)));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (v.size() != 3) throw CliError(option + " " + text + ": expected three components X,Y,Z, got " + std::to_string(v.size()));
+  return {v[0], v[1], v[2]};
+}
+
+nlohmann::json vec_json(const Vec3& a) {
+  return a.allFinite() ? nlohmann::json::array({a.x(), a.y(), a.z()}) : nlohmann::json(nullptr);
+}
+nlohmann::json num_json(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
+
+void run_curve_geometry(const CurveGeometryArgs& a) {
+  if (!(a.step > 0) || !std::isfinite(a.step)) throw CliError("--step must be a positive length, got " + std::to_string(a.step));
+  Scene scene = load_scene(a.scene);
+  const IntersectionSpec* spec = nullptr;
+  std::string known;
+  for (const auto& s : scene.intersections) {
+    if (s.name == a.intersection) spec = &s;
+    known += (known.empty() ? "" : ", ") + s.name;
+  }
+  if (!spec)
+    throw CliError("--intersection: the scene has no intersection \"" + a.intersection + "\" (it has: " +
+                   (known.empty() ? std::string("none") : known) + ")");
+  std::string method_name = a.method;
+  if (method_name.empty())
+    method_name = spec->extra_options.contains("geometry") ? spec->extra_options["geometry"].get<std::string>() : "exact";
+  geometry::GeometryMethod method;
+  if (!geometry::parse(method_name, &method))
+    throw CliError("--method: unknown method \"" + method_name + "\" (known: " + geometry::method_names() + ")");
+  const Vec3 at = parse_xyz(a.at, scene.constants, "--at");
+  std::optional<Vec3> toward;
+  if (!a.toward.empty()) toward = parse_xyz(a.toward, scene.constants, "--toward");
+
+  Problem problem = scene.problem(*spec);
+  nlohmann::json out{{"intersection", spec->name}, {"method", method_name}, {"at", vec_json(at)}};
+  auto x = geometry::project_to_curve(problem, at);
+  if (!x) {
+    out["status"] = "not-on-curve";
+    out["message"] = "Newton from the nearest surface points did not converge onto the curve";
+    std::cout << out.dump(2) << "\n";
+    g_exit_status = 1;
+    return;
+  }
+  geometry::GeometryContext ctx;
+  const Vec3* o = toward ? &*toward : nullptr;
+  const bool sampled = method == geometry::GeometryMethod::kEstimate ||
+                       method == geometry::GeometryMethod::kBarnhillKersey || method == geometry::GeometryMethod::kMixed;
+  if (sampled) ctx = geometry::sample_context(problem, *x, a.step, o, 2);
+  if (o) ctx.orientation = *o;
+  geometry::CurveGeometry g = geometry::evaluate_geometry(problem, *x, method, ctx);
+  out["point"] = vec_json(problem.point(*x));
+  out["distance"] = num_json((problem.point(*x) - at).norm());
+  out["unknowns"] = std::vector<double>(x->data(), x->data() + x->size());
+  out["t"] = vec_json(g.t);
+  out["n"] = vec_json(g.n);
+  out["b"] = vec_json(g.b);
+  out["kappa"] = num_json(g.kappa);
+  out["tau"] = num_json(g.tau);
+  out["kappa_prime"] = num_json(g.kappa_prime);
+  out["theta"] = num_json(g.theta);
+  out["status"] = std::string(geometry::to_string(g.status));
+  out["tau_convention"] = "standard: (c' x c'').c''' / |c' x c''|^2 (the thesis prints -tau)";
+  if (sampled) {
+    out["step"] = a.step;
+    out["samples"] = ctx.previous.size() + 1 + ctx.next.size();
+  }
+  std::cout << out.dump(2) << "\n";
+}
+
+}  // namespace
+
+void add_curve_geometry_command(CLI::App& app) {
+  auto args = std::make_shared<CurveGeometryArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "curve-geometry",
+      "Tangent t, principal normal n, binormal b, curvature kappa, torsion tau, dkappa/ds and the angle theta between the "
+      "surface normals of one intersection curve at the point nearest to --at, as JSON. Quantities a method cannot "
+      "determine there are null and \"status\" says why. Exit status 1 if no curve point is found near --at.");
+  cmd->add_option("scene", args->scene, "Scene file (JSON, docs/scene-format.md)")->required();
+  cmd->add_option("--intersection", args->intersection, "Name of the intersection in the scene")->required();
+  cmd->add_option("--at", args->at, "A point near the curve, X,Y,Z (numbers or expressions); it is projected onto the curve")
+      ->required();
+  cmd->add_option("--method", args->method,
+                  "exact, ye-maekawa, willmore, stoyanov, estimate, barnhill-kersey or mixed (default: the "
+                  "intersection's \"geometry\" option, else exact; docs/geometry.md)");
+  cmd->add_option("--step", args->step,
+                  "Chord between the samples the estimate methods take along the curve (model units, default 0.01)");
+  cmd->add_option("--toward", args->toward,
+                  "Orient t so that t . (X,Y,Z) >= 0 (default: the method's natural orientation, N1 x N2)");
+  cmd->callback([args] { run_curve_geometry(*args); });
+}
+
+}  // namespace ssimarch::cli

@@ -1,0 +1,16 @@
+// ssimarch surfaces: the surface types a scene file may use.
+#include <iostream>
+
+#include "commands.hpp"
+#include "ssimarch/surface/surface_json.hpp"
+
+namespace ssimarch::cli {
+
+void add_surfaces_command(CLI::App& app) {
+  CLI::App* cmd = app.add_subcommand("surfaces", "List the surface types a scene file may use (keys: docs/scene-format.md)");
+  cmd->callback([] {
+    for (const auto& n : surface_type_names()) std::cout << n << "\n";
+  });
+}
+
+}  // namespace ssimarch::cli

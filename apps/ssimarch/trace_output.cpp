@@ -1,0 +1,88 @@
+#include "trace_output.hpp"
+
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+
+#include "commands.hpp"
+#include "ssimarch/io/svg_plot.hpp"
+
+namespace ssimarch::cli {
+
+OutputFormat parse_format(const std::string& s) {
+  if (s == "json") return OutputFormat::kJson;
+  if (s == "csv") return OutputFormat::kCsv;
+  if (s == "obj") return OutputFormat::kObj;
+  if (s == "svg") return OutputFormat::kSvg;
+  throw CliError("--format: unknown format \"" + s + "\" (known: json, csv, obj, svg)");
+}
+
+OutputFormat format_from_path(const std::filesystem::path& p) {
+  std::string e = p.extension().string();
+  if (e == ".csv") return OutputFormat::kCsv;
+  if (e == ".obj") return OutputFormat::kObj;
+  if (e == ".svg") return OutputFormat::kSvg;
+  return OutputFormat::kJson;
+}
+
+namespace {
+std::ofstream open_for_writing(const std::filesystem::path& p) {
+  std::ofstream out(p, std::ios::binary);
+  if (!out) throw CliError(p.string() + ": cannot be opened for writing");
+  return out;
+}
+}  // namespace
+
+void write_runs(const std::vector<IntersectionRun>& runs, OutputFormat format, const std::string& path,
+                const PointDecorator& decorate) {
+  if (format == OutputFormat::kSvg) {
+    if (path == "-") {
+      if (runs.size() != 1) throw CliError("SVG to standard output needs exactly one intersection (use --intersection NAME or -o FILE.svg)");
+      write_svg(std::cout, runs[0]);
+      return;
+    }
+    std::filesystem::path p(path);
+    for (const auto& r : runs) {
+      std::filesystem::path file = runs.size() == 1 ? p : p.parent_path() / (p.stem().string() + "_" + r.spec.name + ".svg");
+      auto out = open_for_writing(file);
+      write_svg(out, r);
+    }
+    return;
+  }
+  std::ofstream file;
+  std::ostream* out = &std::cout;
+  if (path != "-") {
+    file = open_for_writing(path);
+    out = &file;
+  }
+  switch (format) {
+    case OutputFormat::kJson: write_json(*out, runs, decorate); break;
+    case OutputFormat::kCsv: write_csv(*out, runs); break;
+    case OutputFormat::kObj: write_obj(*out, runs); break;
+    case OutputFormat::kSvg: break;
+  }
+  out->flush();
+  if (!*out) throw CliError(path + ": write failed");
+}
+
+void print_summary(const std::vector<IntersectionRun>& runs) {
+  for (const auto& r : runs) {
+    const auto& s = r.result.stats;
+    std::cerr << r.spec.name << ": " << r.result.curves.size() << " curve(s), " << s.points << " points, "
+              << s.rejected_steps << " rejected steps, " << s.time_ms << " ms\n";
+    for (std::size_t i = 0; i < r.result.curves.size(); ++i) {
+      const auto& c = r.result.curves[i];
+      std::cerr << "  curve " << i << ": " << (c.closed ? "closed" : "open") << ", length " << std::setprecision(12) << c.length
+                << ", " << c.points.size() << " points";
+      if (!c.closed) std::cerr << "; ends: " << to_string(c.start_end) << " / " << to_string(c.end_end);
+      std::cerr << std::setprecision(6) << "\n";
+      if (!c.closed) {
+        if (!c.start_message.empty()) std::cerr << "    start: " << c.start_message << "\n";
+        if (!c.end_message.empty()) std::cerr << "    end: " << c.end_message << "\n";
+      }
+    }
+    for (const auto& w : r.result.warnings) std::cerr << "  warning: " << w << "\n";
+  }
+}
+
+}  // namespace ssimarch::cli

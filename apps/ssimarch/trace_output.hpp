@@ -1,0 +1,33 @@
+// Shared by `trace` and `demo`: choosing output formats and writing traced runs.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "ssimarch/io/run.hpp"
+
+namespace ssimarch::cli {
+
+enum class OutputFormat { kJson, kCsv, kObj, kSvg };
+
+/// "json", "csv", "obj", "svg"; throws CliError otherwise.
+OutputFormat parse_format(const std::string& s);
+/// From a file name's extension; json when it has none of the known ones.
+OutputFormat format_from_path(const std::filesystem::path& p);
+
+/// Writes runs in the format to `path` ("-" = standard output). SVG writes one file per run
+/// (path itself when there is one run, else <stem>_<name>.svg beside it).
+void write_runs(const std::vector<IntersectionRun>& runs, OutputFormat format, const std::string& path,
+                const PointDecorator& decorate = {});
+
+/// One line per curve on stderr: closed/open, length, points, time.
+void print_summary(const std::vector<IntersectionRun>& runs);
+
+}  // namespace ssimarch::cli
+
+namespace ssimarch::cli {
+/// The point decorator for the runs' "geometry" option (empty when no run asks for one).
+/// Throws CliError for an unknown method.
+PointDecorator make_geometry_decorator(const std::vector<IntersectionRun>& runs);
+}  // namespace ssimarch::cli

@@ -1,0 +1,131 @@
+#include "ssimarch/io/run.hpp"
+
+#include <charconv>
+#include <iomanip>
+
+#include "ssimarch/march/tracer.hpp"
+
+namespace ssimarch {
+
+using nlohmann::json;
+
+IntersectionRun run_intersection(const Scene& scene, const IntersectionSpec& spec) {
+  IntersectionRun run{spec, scene.problem(spec), {}};
+  Tracer tracer(run.problem, spec.options);
+  run.result = tracer.trace(spec.starts);
+  return run;
+}
+
+namespace {
+json vec(const Vec3& v) { return json::array({v.x(), v.y(), v.z()}); }
+json vec(const VecX& v) {
+  json a = json::array();
+  for (int i = 0; i < v.size(); ++i) a.push_back(v[i]);
+  return a;
+}
+json end_json(Termination t, const std::string& message) {
+  return json{{"reason", std::string(to_string(t))}, {"message", message}};
+}
+// Shortest decimal that reads back to the same double.
+std::string shortest(double x) {
+  char buf[64];
+  auto r = std::to_chars(buf, buf + sizeof buf, x);
+  return std::string(buf, r.ptr);
+}
+}  // namespace
+
+json stats_to_json(const TraceStats& s) {
+  return json{{"points", s.points},
+              {"rejected_steps", s.rejected_steps},
+              {"iterations",
+               {{"1", s.iterations[0]}, {"2", s.iterations[1]}, {"3", s.iterations[2]}, {"4", s.iterations[3]}, {"5+", s.iterations[4]}}},
+              {"linearizations", s.linearizations},
+              {"jet_evaluations", s.jet_evaluations},
+              {"corrector_failures", s.corrector_failures},
+              {"time_ms", s.time_ms}};
+}
+
+json to_json(const IntersectionRun& run, const PointDecorator& decorate) {
+  json curves = json::array();
+  for (const TracedCurve& c : run.result.curves) {
+    json points = json::array();
+    for (std::size_t i = 0; i < c.points.size(); ++i) {
+      json p{{"xyz", vec(c.points[i].p)}, {"params", vec(c.points[i].x)}};
+      if (decorate) decorate(run, c, i, &p);
+      points.push_back(std::move(p));
+    }
+    json ends = c.closed ? json{{"start", end_json(Termination::kClosedLoop, "closed loop")},
+                                {"end", end_json(Termination::kClosedLoop, "closed loop")}}
+                         : json{{"start", end_json(c.start_end, c.start_message)}, {"end", end_json(c.end_end, c.end_message)}};
+    curves.push_back(json{{"closed", c.closed}, {"length", c.length}, {"num_points", c.points.size()}, {"ends", ends},
+                          {"points", std::move(points)}});
+  }
+  json names = json::array();
+  for (const auto& n : run.problem.unknown_names()) names.push_back(n);
+  const auto& s = run.spec.surfaces;
+  return json{{"name", run.spec.name},
+              {"surfaces", json::array({s[0], s[1]})},
+              {"pair_kind", std::string(to_string(run.spec.kind))},
+              {"unknowns", names},
+              {"parametric_first", run.spec.swapped ? s[1] : s[0]},
+              {"options",
+               {{"predictor", std::string(to_string(run.spec.options.predictor))},
+                {"corrector", std::string(to_string(run.spec.options.corrector))},
+                {"step", std::string(to_string(run.spec.options.step))},
+                {"step_length", run.spec.options.step_length},
+                {"tolerance", run.spec.options.tolerance}}},
+              {"curves", std::move(curves)},
+              {"stats", stats_to_json(run.result.stats)},
+              {"warnings", run.result.warnings}};
+}
+
+void write_json(std::ostream& out, const std::vector<IntersectionRun>& runs, const PointDecorator& decorate) {
+  json all = json::array();
+  for (const auto& r : runs) all.push_back(to_json(r, decorate));
+  out << json{{"intersections", std::move(all)}}.dump(1) << "\n";
+}
+
+void write_csv(std::ostream& out, const std::vector<IntersectionRun>& runs) {
+  out << "intersection,curve,point,closed,x,y,z,u,v,p,q\n";
+  for (const auto& r : runs) {
+    bool implicit_pair = r.problem.kind() == PairKind::kImplicitImplicit;
+    for (std::size_t ci = 0; ci < r.result.curves.size(); ++ci) {
+      const TracedCurve& c = r.result.curves[ci];
+      for (std::size_t i = 0; i < c.points.size(); ++i) {
+        const CurvePoint& p = c.points[i];
+        out << r.spec.name << "," << ci << "," << i << "," << (c.closed ? 1 : 0) << "," << shortest(p.p.x()) << ","
+            << shortest(p.p.y()) << "," << shortest(p.p.z());
+        for (int k = 0; k < 4; ++k) {
+          out << ",";
+          if (!implicit_pair && k < p.x.size()) out << shortest(p.x[k]);
+        }
+        out << "\n";
+      }
+    }
+  }
+}
+
+void write_obj(std::ostream& out, const std::vector<IntersectionRun>& runs) {
+  out << "# ssimarch intersection curves: one polyline object per curve\n";
+  long base = 1;
+  for (const auto& r : runs) {
+    for (std::size_t ci = 0; ci < r.result.curves.size(); ++ci) {
+      const TracedCurve& c = r.result.curves[ci];
+      out << "o " << r.spec.name << "_curve" << ci << "\n";
+      std::size_t n = c.points.size();
+      // A closed curve's last point repeats its first: write it once and close the polyline.
+      std::size_t m = (c.closed && n > 1) ? n - 1 : n;
+      for (std::size_t i = 0; i < m; ++i)
+        out << "v " << shortest(c.points[i].p.x()) << " " << shortest(c.points[i].p.y()) << " " << shortest(c.points[i].p.z()) << "\n";
+      if (m >= 2) {
+        out << "l";
+        for (std::size_t i = 0; i < m; ++i) out << " " << base + static_cast<long>(i);
+        if (c.closed) out << " " << base;
+        out << "\n";
+      }
+      base += static_cast<long>(m);
+    }
+  }
+}
+
+}  // namespace ssimarch

@@ -1,0 +1,186 @@
+#include "ssimarch/io/svg_plot.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <iomanip>
+#include <sstream>
+#include <vector>
+
+namespace ssimarch {
+
+namespace {
+
+const char* kColors[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf", "#8c564b", "#e377c2"};
+
+struct Panel {
+  std::string title, xlabel, ylabel;
+  // Polylines in panel coordinates, each with its curve index; breaks where a periodic
+  // parameter wraps.
+  std::vector<std::pair<int, std::vector<Vec2>>> lines;
+  std::vector<std::pair<int, Vec2>> ends;  // open ends
+  double xmin = 0, xmax = 1, ymin = 0, ymax = 1;
+  bool fixed_range = false;
+};
+
+void fit(Panel* p) {
+  if (p->fixed_range) return;
+  double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
+  for (const auto& [c, l] : p->lines)
+    for (const Vec2& q : l) {
+      x0 = std::min(x0, q.x());
+      x1 = std::max(x1, q.x());
+      y0 = std::min(y0, q.y());
+      y1 = std::max(y1, q.y());
+    }
+  if (!std::isfinite(x0)) return;
+  double pad = 0.05 * std::max({x1 - x0, y1 - y0, 1e-9});
+  // Equal scales on both axes (a 3D view or a plane section must not be distorted).
+  double cx = 0.5 * (x0 + x1), cy = 0.5 * (y0 + y1), half = 0.5 * std::max(x1 - x0, y1 - y0) + pad;
+  p->xmin = cx - half;
+  p->xmax = cx + half;
+  p->ymin = cy - half;
+  p->ymax = cy + half;
+}
+
+void draw(std::ostream& out, const Panel& p, double ox, int size) {
+  const double m = 36;  // margin for labels
+  double w = size - 2 * m;
+  auto X = [&](double x) { return ox + m + (x - p.xmin) / (p.xmax - p.xmin) * w; };
+  auto Y = [&](double y) { return m + (p.ymax - y) / (p.ymax - p.ymin) * w; };
+  out << "<rect x='" << ox + m << "' y='" << m << "' width='" << w << "' height='" << w
+      << "' fill='white' stroke='#999'/>\n";
+  out << "<text x='" << ox + size / 2.0 << "' y='" << m - 14 << "' text-anchor='middle' font-size='14'>" << p.title << "</text>\n";
+  out << "<text x='" << ox + size / 2.0 << "' y='" << m + w + 24 << "' text-anchor='middle' font-size='12'>" << p.xlabel
+      << " [" << std::setprecision(3) << p.xmin << ", " << p.xmax << "]</text>\n";
+  out << "<text x='" << ox + 14 << "' y='" << m + w / 2 << "' text-anchor='middle' font-size='12' transform='rotate(-90 "
+      << ox + 14 << " " << m + w / 2 << ")'>" << p.ylabel << " [" << p.ymin << ", " << p.ymax << "]</text>\n";
+  out << std::setprecision(6);
+  for (const auto& [c, l] : p.lines) {
+    if (l.size() < 2) continue;
+    out << "<polyline fill='none' stroke-width='1.6' stroke='" << kColors[c % 8] << "' points='";
+    for (const Vec2& q : l) out << X(q.x()) << "," << Y(q.y()) << " ";
+    out << "'/>\n";
+  }
+  for (const auto& [c, q] : p.ends)
+    out << "<circle cx='" << X(q.x()) << "' cy='" << Y(q.y()) << "' r='3.5' fill='none' stroke='" << kColors[c % 8] << "'/>\n";
+}
+
+}  // namespace
+
+void write_svg(std::ostream& out, const IntersectionRun& run, const SvgOptions& o) {
+  const Problem& P = run.problem;
+  const auto& curves = run.result.curves;
+  std::vector<Panel> panels;
+
+  // 3D view: principal axes of the points, or axonometric.
+  double az = o.azimuth_deg * M_PI / 180, el = o.elevation_deg * M_PI / 180;
+  Vec3 right(std::cos(az), std::sin(az), 0), up(-std::sin(az) * std::sin(el), std::cos(az) * std::sin(el), std::cos(el));
+  std::string view_title = "3D view (azimuth " + std::to_string(static_cast<int>(o.azimuth_deg)) + "\u00b0)";
+  if (!o.axonometric) {
+    Vec3 mean = Vec3::Zero();
+    long count = 0;
+    for (const auto& c : curves)
+      for (const auto& p : c.points) {
+        mean += p.p;
+        ++count;
+      }
+    if (count > 2) {
+      mean /= static_cast<double>(count);
+      Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+      for (const auto& c : curves)
+        for (const auto& p : c.points) cov += (p.p - mean) * (p.p - mean).transpose();
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);  // eigenvalues ascending
+      right = eig.eigenvectors().col(2);
+      up = eig.eigenvectors().col(1);
+      Vec3 look = right.cross(up);
+      auto fmt = [](const Vec3& v) {
+        std::ostringstream os;
+        os << std::setprecision(2) << std::fixed << "(" << v.x() << ", " << v.y() << ", " << v.z() << ")";
+        return os.str();
+      };
+      view_title = "3D view along " + fmt(look);
+    }
+  }
+  Panel view{view_title, "screen x", "screen y", {}, {}};
+  for (std::size_t ci = 0; ci < curves.size(); ++ci) {
+    std::vector<Vec2> l;
+    for (const auto& p : curves[ci].points) l.emplace_back(p.p.dot(right), p.p.dot(up));
+    if (!curves[ci].closed && !l.empty()) {
+      view.ends.push_back({static_cast<int>(ci), l.front()});
+      view.ends.push_back({static_cast<int>(ci), l.back()});
+    }
+    view.lines.push_back({static_cast<int>(ci), std::move(l)});
+  }
+  fit(&view);
+  panels.push_back(std::move(view));
+
+  // Parameter domains (pairs of unknowns), or two orthographic views for implicit pairs.
+  auto names = P.unknown_names();
+  std::vector<std::pair<int, int>> pairs;
+  if (P.kind() == PairKind::kImplicitImplicit) pairs = {{0, 1}, {0, 2}};
+  else if (P.kind() == PairKind::kParametricImplicit) pairs = {{0, 1}};
+  else pairs = {{0, 1}, {2, 3}};
+  for (auto [a, b] : pairs) {
+    Panel p;
+    bool param = P.kind() != PairKind::kImplicitImplicit;
+    std::string which = param ? (a == 0 ? run.spec.swapped ? run.spec.surfaces[1] : run.spec.surfaces[0] : run.spec.surfaces[1]) : "";
+    p.title = param ? "domain of " + which : (b == 1 ? "top view (x, y)" : "front view (x, z)");
+    p.xlabel = names[static_cast<std::size_t>(a)];
+    p.ylabel = names[static_cast<std::size_t>(b)];
+    if (param) {
+      const Interval &ia = P.bounds()[static_cast<std::size_t>(a)], &ib = P.bounds()[static_cast<std::size_t>(b)];
+      p.xmin = ia.lo;
+      p.xmax = ia.hi;
+      p.ymin = ib.lo;
+      p.ymax = ib.hi;
+      p.fixed_range = true;
+    }
+    for (std::size_t ci = 0; ci < curves.size(); ++ci) {
+      std::vector<Vec2> l;
+      const CurvePoint* prev = nullptr;
+      for (const auto& q : curves[ci].points) {
+        Vec2 v(q.x[a], q.x[b]);
+        if (prev) {
+          double pa = P.periods()[static_cast<std::size_t>(a)], pb = P.periods()[static_cast<std::size_t>(b)];
+          bool wrapped = (pa > 0 && std::fabs(q.x[a] - prev->x[a]) > pa / 2) || (pb > 0 && std::fabs(q.x[b] - prev->x[b]) > pb / 2);
+          if (wrapped) {
+            p.lines.push_back({static_cast<int>(ci), std::move(l)});
+            l.clear();
+          }
+        }
+        l.push_back(v);
+        prev = &q;
+      }
+      if (!curves[ci].closed && !curves[ci].points.empty()) {
+        const auto& f = curves[ci].points.front().x;
+        const auto& e = curves[ci].points.back().x;
+        p.ends.push_back({static_cast<int>(ci), Vec2(f[a], f[b])});
+        p.ends.push_back({static_cast<int>(ci), Vec2(e[a], e[b])});
+      }
+      p.lines.push_back({static_cast<int>(ci), std::move(l)});
+    }
+    fit(&p);
+    panels.push_back(std::move(p));
+  }
+
+  const int S = o.panel_size;
+  const int width = S * static_cast<int>(panels.size()), height = S + 60 + 18 * static_cast<int>(std::min<std::size_t>(curves.size(), 8));
+  out << "<?xml version='1.0' encoding='UTF-8'?>\n<svg xmlns='http://www.w3.org/2000/svg' width='" << width << "' height='"
+      << height << "' font-family='sans-serif'>\n<rect width='100%' height='100%' fill='#fafafa'/>\n";
+  for (std::size_t i = 0; i < panels.size(); ++i) draw(out, panels[i], static_cast<double>(i * static_cast<std::size_t>(S)), S);
+  double y = S + 20;
+  out << "<text x='12' y='" << y << "' font-size='13' font-weight='bold'>" << run.spec.name << ": " << run.spec.surfaces[0] << " \u2229 "
+      << run.spec.surfaces[1] << " (" << to_string(P.kind()) << ", " << run.result.stats.points << " points, "
+      << std::setprecision(4) << run.result.stats.time_ms << " ms)</text>\n";
+  for (std::size_t ci = 0; ci < std::min<std::size_t>(curves.size(), 8); ++ci) {
+    y += 18;
+    const auto& c = curves[ci];
+    out << "<text x='24' y='" << y << "' font-size='12' fill='" << kColors[ci % 8] << "'>curve " << ci << ": "
+        << (c.closed ? "closed" : "open (" + std::string(to_string(c.start_end)) + " / " + std::string(to_string(c.end_end)) + ")")
+        << ", length " << std::setprecision(10) << c.length << ", " << c.points.size() << " points</text>\n";
+  }
+  out << "</svg>\n";
+}
+
+}  // namespace ssimarch
