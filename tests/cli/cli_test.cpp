@@ -1,0 +1,161 @@
+// The ssimarch binary run as a user runs it: outputs parsed and compared with tolerances, error
+// messages and exit statuses checked.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+struct CliRun {
+  int status;
+  std::string out, err;
+};
+
+fs::path scratch() {
+  fs::path d = fs::temp_directory_path() / ("ssimarch_cli_test_" + std::to_string(::getpid()));
+  fs::create_directories(d);
+  return d;
+}
+
+CliRun run(const std::string& args) {
+  fs::path err = scratch() / "stderr.txt";
+  std::string cmd = std::string(SSIMARCH_CLI) + " " + args + " 2>" + err.string();
+  CliRun r;
+  FILE* p = popen(cmd.c_str(), "r");
+  char buf[4096];
+  std::size_t n;
+  while ((n = fread(buf, 1, sizeof buf, p)) > 0) r.out.append(buf, n);
+  int st = pclose(p);
+  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+  std::ifstream in(err);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  r.err = ss.str();
+  return r;
+}
+
+std::string write_file(const std::string& name, const std::string& text) {
+  fs::path p = scratch() / name;
+  std::ofstream(p) << text;
+  return p.string();
+}
+
+const std::string kExamples = std::string(SSIMARCH_SOURCE_DIR) + "/examples/";
+
+TEST(Cli, TraceWritesJsonWithTheExactLength) {
+  CliRun r = run("trace " + kExamples + "thesis_pair2_cylinder_sphere.json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  const auto& c = j["intersections"][0]["curves"][0];
+  EXPECT_TRUE(c["closed"].get<bool>());
+  EXPECT_NEAR(c["length"].get<double>() / 15.2807911561 - 1, 0.0, 1e-6);
+  EXPECT_THAT(r.err, HasSubstr("viviani: 1 curve(s)"));
+}
+
+TEST(Cli, TraceFormatsAndOverrides) {
+  std::string out = (scratch() / "t.csv").string();
+  CliRun r = run("trace " + kExamples + "thesis_pair1_ruled_torus.json --intersection torus_curve --step-length 0.1 -q -o " + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(r.err.empty()) << r.err;
+  std::ifstream in(out);
+  std::string header;
+  std::getline(in, header);
+  EXPECT_EQ(header, "intersection,curve,point,closed,x,y,z,u,v,p,q");
+  CliRun o = run("trace " + kExamples + "thesis_pair1_ruled_torus.json --intersection torus_curve --format obj");
+  ASSERT_EQ(o.status, 0);
+  EXPECT_THAT(o.out, HasSubstr("o torus_curve_curve0"));
+  CliRun s = run("trace " + kExamples + "thesis_pair1_ruled_torus.json --intersection torus_curve --format svg");
+  ASSERT_EQ(s.status, 0);
+  EXPECT_THAT(s.out, HasSubstr("<svg"));
+}
+
+TEST(Cli, BadInputGivesAClearErrorAndStatus2) {
+  CliRun missing = run("trace /nonexistent/scene.json");
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_THAT(missing.err, HasSubstr("/nonexistent/scene.json: no such file"));
+
+  CliRun syntax = run("trace " + write_file("bad.json", "{\n \"surfaces\": {\n  \"a\": [1,,2]\n }\n}"));
+  EXPECT_EQ(syntax.status, 2);
+  EXPECT_THAT(syntax.err, HasSubstr("bad.json:3:"));
+
+  CliRun expr = run("trace " + write_file("expr.json", R"json({"surfaces": {"a": {"implicit": "x^2+sine(y)", "box": [[-1,1],[-1,1],[-1,1]]}}})json"));
+  EXPECT_EQ(expr.status, 2);
+  EXPECT_THAT(expr.err, HasSubstr("surfaces.a"));
+  EXPECT_THAT(expr.err, HasSubstr("sine"));
+
+  CliRun option = run("trace " + kExamples + "viviani.json --predictor nonsense");
+  EXPECT_EQ(option.status, 2);
+  EXPECT_THAT(option.err, HasSubstr("unknown predictor \"nonsense\""));
+
+  CliRun which = run("trace " + kExamples + "viviani.json --intersection nope");
+  EXPECT_EQ(which.status, 2);
+  EXPECT_THAT(which.err, HasSubstr("no intersection \"nope\""));
+
+  CliRun usage = run("trace");
+  EXPECT_EQ(usage.status, 2);
+}
+
+TEST(Cli, NoCurveFoundExitsWith1) {
+  CliRun r = run("trace " + write_file("apart.json", R"json({
+    "surfaces": {"a": {"sphere": {"center": [0,0,0], "radius": 1}}, "b": {"sphere": {"center": [0,0,0], "radius": 0.5}}},
+    "intersections": [{"name": "apart", "surfaces": ["a", "b"]}]})json"));
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("apart: 0 curve(s)"));
+}
+
+TEST(Cli, EvalPrintsExactDerivatives) {
+  CliRun r = run("eval " + kExamples + "viviani.json --surface cyl --at pi/2,1 --order 3");
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["form"], "parametric");
+  // F = (cos u, sin u - 1, v) at u = pi/2: F = (0, 0, 1), F_uuu = (sin u, -cos u, 0) = (1, 0, 0).
+  EXPECT_NEAR(j["point"][0].get<double>(), 0.0, 1e-15);
+  bool found = false;
+  for (const auto& d : j["derivatives"])
+    if (d["order"] == nlohmann::json({3, 0})) {
+      EXPECT_NEAR(d["value"][0].get<double>(), 1.0, 1e-15);
+      found = true;
+    }
+  EXPECT_TRUE(found);
+  EXPECT_EQ(j["derivatives"].size(), 10u);  // multi-indices of total order <= 3 in 2 variables
+  CliRun imp = run("eval " + kExamples + "viviani.json --surface cyl2 --at 1,0,0 --order 1");
+  ASSERT_EQ(imp.status, 0) << imp.err;
+  auto k = nlohmann::json::parse(imp.out);
+  EXPECT_EQ(k["gradient"], nlohmann::json({1.0, 0.0, 0.0}));  // grad(x^2 + y^2 - x) = (2x - 1, 2y, 0)
+  CliRun wrong = run("eval " + kExamples + "viviani.json --surface cyl2 --at 1,0 --order 1");
+  EXPECT_EQ(wrong.status, 2);
+  EXPECT_THAT(wrong.err, HasSubstr("no parametric form"));
+  CliRun order = run("eval " + kExamples + "viviani.json --surface cyl --at 0,0 --order 99");
+  EXPECT_EQ(order.status, 2);
+}
+
+TEST(Cli, DemoWritesWhatReadmePromises) {
+  fs::path out = scratch() / "demo";
+  CliRun r = run("demo --no-porosity --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* f : {"curves.json", "curves.csv", "curves.obj", "viviani.svg", "torus_curve.svg", "two_cylinders.svg"})
+    EXPECT_TRUE(fs::exists(out / f)) << f;
+  EXPECT_THAT(r.out, HasSubstr("relative error"));
+}
+
+TEST(Cli, HelpOnEverySubcommand) {
+  for (const char* sub : {"trace", "eval", "demo", "surfaces"}) {
+    CliRun r = run(std::string(sub) + " --help");
+    EXPECT_EQ(r.status, 0) << sub;
+    EXPECT_THAT(r.out, HasSubstr("Usage")) << sub;
+  }
+}
+
+}  // namespace
