@@ -28,5 +28,7 @@ void add_eval_command(CLI::App& app);
 void add_demo_command(CLI::App& app);
 void add_surfaces_command(CLI::App& app);
 void add_curve_geometry_command(CLI::App& app);
+void add_porosity_command(CLI::App& app);
+void add_packing_command(CLI::App& app);
 
 }  // namespace ssimarch::cli

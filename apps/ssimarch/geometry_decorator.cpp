@@ -26,7 +26,7 @@ PointDecorator make_geometry_decorator(const std::vector<IntersectionRun>& runs)
     // Neighbours along the traced curve (closed curves wrap; the closing point repeats the first).
     const std::size_t n = curve.points.size();
     const std::size_t m = curve.closed && n > 1 ? n - 1 : n;
-    const std::size_t k = std::min(i, m - 1);
+    const std::size_t k = (curve.closed && i + 1 == n) ? 0 : std::min(i, m - 1);  // the closing point is point 0
     for (std::size_t back = 3; back >= 1; --back) {
       if (k >= back) ctx.previous.push_back(curve.points[k - back].x);
       else if (curve.closed && m > back) ctx.previous.push_back(curve.points[m + k - back].x);

@@ -141,6 +141,18 @@ CurveGeometry estimate_from_samples(std::span<const CurveSample> samples, std::s
     return g;
   }
   double chord = (here.point - samples[index - 1].point).norm();
+  // Eqs 2.11 and 3.27 divide by the chord, which is the distance between the two frames when the
+  // samples are equally spaced (Table 3.3). A Wu-Andrade frame belongs to the middle of its arc,
+  // so with unequal steps (a tracer's adaptive ones) the distance between the frames is the mean
+  // of the two chords; the literal variant keeps the thesis' chord to reproduce its table.
+  if (circle == EstimateCircle::kWuAndrade)
+    chord = 0.5 * (chord + (samples[index + 1].point - here.point).norm());
+  // A three-point circle belongs to about the mean arc position of its points, so the frames at
+  // index and index-1 are a third of the chords from P_index-2 to P_index+1 apart.
+  if (circle == EstimateCircle::kThreePoint)
+    chord = ((samples[index + 1].point - here.point).norm() + chord +
+             (samples[index - 1].point - samples[index - 2].point).norm()) /
+            3.0;
   if (before.straight) {
     g.status = GeometryStatus::kZeroCurvature;  // the osculating plane one step back is undefined
     return g;

@@ -30,10 +30,19 @@ CurveGeometry with_status(const Vec3& point, GeometryStatus status) {
 // sample order).
 CurveGeometry estimate_geometry(const Problem& problem, const VecX& x, EstimateCircle circle,
                                 const GeometryContext& ctx) {
-  std::vector<VecX> xs(ctx.previous.begin(), ctx.previous.end());
+  // Samples that repeat their predecessor's point (a closed curve's closing point) carry no
+  // information and would make a zero chord: they are dropped.
+  const Vec3 p_here = problem.point(x);
+  const double same = 1e-12 * std::max(1.0, p_here.norm());
+  std::vector<VecX> xs;
+  for (const VecX& xi : ctx.previous)
+    if (xs.empty() || (problem.point(xi) - problem.point(xs.back())).norm() > same) xs.push_back(xi);
+  while (!xs.empty() && (problem.point(xs.back()) - p_here).norm() <= same) xs.pop_back();
   const std::size_t here = xs.size();
   xs.push_back(x);
-  xs.insert(xs.end(), ctx.next.begin(), ctx.next.end());
+  for (const VecX& xi : ctx.next)
+    if ((problem.point(xi) - problem.point(xs.back())).norm() > same) xs.push_back(xi);
+  const bool has_next = xs.size() > here + 1;
   std::vector<CurveSample> samples;
   std::vector<std::pair<SurfaceLocal, SurfaceLocal>> locals;
   for (const VecX& xi : xs) {
@@ -53,7 +62,7 @@ CurveGeometry estimate_geometry(const Problem& problem, const VecX& x, EstimateC
   Vec3 n1 = unit_normal(first), n2 = unit_normal(second);
   double theta = normal_angle(n1, n2);
   CurveGeometry g;
-  if (!ctx.next.empty() || here == 0) {
+  if (has_next || here == 0) {
     g = estimate_from_samples(samples, here, circle, ctx.tolerances);
   } else {
     // No forward neighbour: the thesis' estimate at the previous sample, reported at x.

@@ -238,8 +238,9 @@ Prediction CirclePredictor::predict(const Problem& problem, const MarchState& s,
   const double rho = (Q - c.centre).norm();
   if (!((P - c.centre).cross(Q - c.centre).norm() > 0) || !(rho > 0)) return fallback_step(problem, s, h);
   Prediction r = from_point(problem, s, seed000_arc_point(P, Q, c.centre, rho, h), h);
-  // Store t relative to the next step's origin: the tracer's next Q is the corrected point,
-  // close to this one, and the paper reuses the coordinate along the same axis.
+  // For the paper's "reuse t": t is the centre's coordinate along `axis` measured from this
+  // step's Q; reused at the next step (from its own Q) it keeps the centre at the same height
+  // along that axis, which is exact for the planar arcs where b = 0 happens.
   r.circle_line_parameter = c.line_parameter;
   r.circle_line_axis = c.axis;
   return r;

@@ -118,7 +118,8 @@ class Deposition {
     return (o_.container_radius - a) - std::hypot(p.x(), p.y());
   }
 
-  // Pushes p out of the constraints in S (few sweeps of projections).
+  // Pushes p out of the constraints in S that it violates (few sweeps of one-sided projections; a
+  // tangential step that lifts the sphere off a contact is left to the next fall).
   void project(Vec3<double>& p, double a, const std::vector<Constraint>& S) const {
     for (int sweep = 0; sweep < 4; ++sweep)
       for (const auto& c : S) {
@@ -127,10 +128,10 @@ class Deposition {
           const double D = a + placed_[c.id].radius();
           const Vec3<double> w = p - cc;
           const double nw = w.norm();
-          if (nw > 0) p = cc + w * (D / nw);
+          if (nw > 0 && nw < D) p = cc + w * (D / nw);
         } else {
           const double q = std::hypot(p.x(), p.y()), Rw = o_.container_radius - a;
-          if (q > 0) {
+          if (q > Rw) {
             p.x() *= Rw / q;
             p.y() *= Rw / q;
           }

@@ -57,16 +57,22 @@ QuadResult lateral_area(const ParticleShape& s, double r, const Slab& slab, doub
   }
   std::array<double, 8> junction{};
   const int nj = s.junction_angles(r, junction);
+  std::array<double, 8> cuts{};
+  int nc = 0;
+  if (clip) {
+    if (slab.z_min > s.z_min()) nc = s.clip_angles(r, slab.z_min, cuts, nc);
+    if (slab.z_max < s.z_max()) nc = s.clip_angles(r, slab.z_max, cuts, nc);
+  }
   const double tol_theta = abs_tol / r;
   double total = 0;
   for (int k = 0; k < n; ++k) total += arcs[k].end - arcs[k].begin;
   for (int k = 0; k < n; ++k) {
     // Split the arc at the junction angles inside it (shifted by 2 pi into the arc's range).
-    std::array<double, 10> br{};
+    std::array<double, 18> br{};
     int nb = 0;
     br[nb++] = arcs[k].begin;
-    for (int j = 0; j < nj; ++j) {
-      double t = junction[j];
+    for (int j = 0; j < nj + nc; ++j) {
+      double t = j < nj ? junction[j] : cuts[j - nj];
       while (t < arcs[k].begin) t += 2 * kPi;
       while (t > arcs[k].end) t -= 2 * kPi;
       if (t > arcs[k].begin && t < arcs[k].end) br[nb++] = t;
@@ -92,9 +98,13 @@ QuadResult shell_volume(const ParticleShape& s, double r0, double r1, const Slab
   r0 = std::max(r0, s.rho_min());
   r1 = std::min(r1, s.rho_max());
   if (!(r1 > r0)) return out;
+  std::vector<double> crit = s.critical_radii();
+  if (slab.z_min > s.z_min()) s.clip_radii(slab.z_min, crit);
+  if (slab.z_max < s.z_max()) s.clip_radii(slab.z_max, crit);
+  std::sort(crit.begin(), crit.end());
   std::vector<double> br{r0};
-  for (double c : s.critical_radii())
-    if (c > r0 && c < r1) br.push_back(c);
+  for (double c : crit)
+    if (c > br.back() && c < r1) br.push_back(c);
   br.push_back(r1);
   // Inner tolerance a tenth of the outer one per unit radius, so that inner errors stay negligible.
   const double inner = 0.1 * abs_tol / (r1 - r0);

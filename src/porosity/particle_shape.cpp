@@ -208,6 +208,35 @@ int ParticleShape::junction_angles(double r, std::array<double, 8>& out) const {
   return n;
 }
 
+int ParticleShape::clip_angles(double r, double z_cut, std::array<double, 8>& out, int n) const {
+  for (const Vec3<double>* c : {&cp_, &cm_}) {
+    const double dz = z_cut - c->z(), s2 = a2_ - dz * dz;
+    const double rho = std::hypot(c->x(), c->y());
+    if (s2 > 0 && rho > 0) {
+      const double cs = (r * r + rho * rho - s2) / (2 * r * rho);
+      if (std::abs(cs) <= 1 && n + 2 <= 8) {
+        const double phi = std::atan2(c->y(), c->x()), al = std::acos(cs);
+        out[n++] = std::remainder(phi - al, 2 * kPi);
+        out[n++] = std::remainder(phi + al, 2 * kPi);
+      }
+    }
+    if (h_ == 0) break;
+  }
+  return n;
+}
+
+void ParticleShape::clip_radii(double z_cut, std::vector<double>& out) const {
+  for (const Vec3<double>* c : {&cp_, &cm_}) {
+    const double dz = z_cut - c->z(), s2 = a2_ - dz * dz;
+    if (s2 > 0) {
+      const double rho = std::hypot(c->x(), c->y()), sr = std::sqrt(s2);
+      out.push_back(rho + sr);
+      out.push_back(std::abs(rho - sr));
+    }
+    if (h_ == 0) break;
+  }
+}
+
 std::vector<double> ParticleShape::critical_radii() const {
   std::vector<double> out;
   out.push_back(rho_min_);

@@ -101,6 +101,14 @@ void require_sorted(std::span<const double> v, const char* what) {
   }
 }
 
+// Volume of a ball between two horizontal planes: integral of pi (a^2 - (z - z_c)^2) dz.
+double sphere_slab_volume(const Particle& p, const Slab& slab) {
+  const double a = p.radius();
+  const double lo = std::clamp(slab.z_min - p.centre.z(), -a, a), hi = std::clamp(slab.z_max - p.centre.z(), -a, a);
+  auto F = [&](double t) { return kPi * (a * a * t - t * t * t / 3); };
+  return hi > lo ? F(hi) - F(lo) : 0.0;
+}
+
 }  // namespace
 
 double Container::volume() const { return kPi * radius * radius * height(); }
@@ -190,8 +198,13 @@ Profile bin_profile(std::span<const Particle> particles, const Container& c, std
     const auto [b, e] = bins_of(s);
     const bool in_slab = s.z_min() >= c.slab.z_min && s.z_max() <= c.slab.z_max;
     for (std::size_t k = b; k < e; ++k) {
-      if (in_slab && s.rho_min() >= edges[k] && s.rho_max() <= edges[k + 1]) {
+      const bool in_annulus = s.rho_min() >= edges[k] && s.rho_max() <= edges[k + 1];
+      if (in_annulus && in_slab) {
         cr.sum[k] += s.particle().volume();  // whole particle inside this annulus: closed form
+        continue;
+      }
+      if (in_annulus && s.particle().length == 0) {
+        cr.sum[k] += sphere_slab_volume(s.particle(), c.slab);  // sphere cut by the planes: caps
         continue;
       }
       account(cr, k, shell_volume(s, edges[k], edges[k + 1], c.slab, budget[k], opt.method, opt.kernel));

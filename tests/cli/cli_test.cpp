@@ -151,11 +151,43 @@ TEST(Cli, DemoWritesWhatReadmePromises) {
 }
 
 TEST(Cli, HelpOnEverySubcommand) {
-  for (const char* sub : {"trace", "eval", "demo", "surfaces"}) {
+  for (const char* sub : {"trace", "eval", "demo", "surfaces", "curve-geometry"}) {
     CliRun r = run(std::string(sub) + " --help");
     EXPECT_EQ(r.status, 0) << sub;
     EXPECT_THAT(r.out, HasSubstr("Usage")) << sub;
   }
+}
+
+}  // namespace
+
+namespace {
+
+// Viviani's curve (sin s, -1 - cos s, 2 sin(s/2)) at s = pi/2, the point (1, -1, sqrt 2):
+// c' = (0, 1, sqrt2/2), c'' = (-1, 0, -sqrt2/4), c''' = (0, -1, -sqrt2/8), so
+// kappa = sqrt(13/8) / (3/2)^(3/2) and tau = (3 sqrt2/8) / (13/8) = 3 sqrt2 / 13.
+const double kVivianiKappa = std::sqrt(13.0 / 8) / std::pow(1.5, 1.5);
+const double kVivianiTau = 3 * std::sqrt(2.0) / 13;
+
+TEST(Cli, TraceWithGeometryAddsFrenetDataToEveryPoint) {
+  CliRun r = run("trace " + kExamples + "thesis_pair2_cylinder_sphere.json --geometry exact -q");
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  const auto& pts = j["intersections"][0]["curves"][0]["points"];
+  for (const char* k : {"t", "n", "b", "kappa", "tau", "kappa_prime", "theta"}) EXPECT_TRUE(pts[5].contains(k)) << k;
+  // The first point is the start point (1, -1, sqrt 2).
+  EXPECT_NEAR(pts[0]["kappa"].get<double>(), kVivianiKappa, 1e-9);
+  EXPECT_NEAR(pts[0]["tau"].get<double>(), kVivianiTau, 1e-9);
+  CliRun bad = run("trace " + kExamples + "thesis_pair2_cylinder_sphere.json --geometry guesswork");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_THAT(bad.err, HasSubstr("guesswork"));
+}
+
+TEST(Cli, CurveGeometryAtOnePoint) {
+  CliRun r = run("curve-geometry " + kExamples + "thesis_pair2_cylinder_sphere.json --intersection viviani --at 1,-1,1.41421356 --method exact");
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["kappa"].get<double>(), kVivianiKappa, 1e-7);
+  EXPECT_NEAR(j["tau"].get<double>(), kVivianiTau, 1e-7);
 }
 
 }  // namespace

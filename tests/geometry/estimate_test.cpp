@@ -115,6 +115,22 @@ TEST(Estimate, ConvergesOnTable33CurvesAndKnownCurves) {
   }
 }
 
+TEST(Estimate, UnequalStepsAsATracerTakesThem) {
+  // Viviani at P with the backward step half the forward one (a tracer's closing step): the
+  // torsion divides the binormal turning by the distance between the arcs' midpoints.
+  const double s0 = std::numbers::pi / 2, h = 0.01;
+  const CurveGeometry exact = exact_frenet(Viviani{}, s0);
+  std::vector<CurveSample> s;
+  for (double ds : {-1.5 * h, -0.5 * h, 0.0, h}) s.push_back({curve_point(Viviani{}, s0 + ds), curve_tangent(Viviani{}, s0 + ds)});
+  for (EstimateCircle kind : {EstimateCircle::kWuAndrade, EstimateCircle::kThreePoint}) {
+    CurveGeometry g = estimate_from_samples(s, 2, kind);
+    ASSERT_EQ(g.status, GeometryStatus::kOk);
+    EXPECT_NEAR(g.tau, exact.tau, 5 * h);
+    EXPECT_NEAR(g.kappa_prime, exact.kappa_prime, 5 * h);
+    EXPECT_NEAR(g.kappa, exact.kappa, 5 * h);
+  }
+}
+
 TEST(Estimate, TorsionSignFollowsHandedness) {
   auto left = [](const auto& t) {
     auto p = Helix{}(t);

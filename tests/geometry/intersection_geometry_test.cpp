@@ -278,6 +278,15 @@ TEST(Sampling, ProjectAndWalkAlongTheCurveThroughASingularPoint) {
   ASSERT_EQ(lag.status, GeometryStatus::kOk);
   EXPECT_NEAR(lag.kappa, 2 * std::sqrt(39.0) / 9, 5e-3);
   EXPECT_NEAR(lag.tau, 6 * std::sqrt(2.0) / 13, 5e-3);
+  // A closed curve's closing point repeats the first: a sample equal to x is ignored.
+  GeometryContext dup = sample_context(pb, viviani_x(PairKind::kImplicitImplicit, kPi / 2), 1e-3, &t_here);
+  GeometryContext with_dup = dup;
+  with_dup.next.insert(with_dup.next.begin(), viviani_x(PairKind::kImplicitImplicit, kPi / 2));
+  CurveGeometry a = evaluate_geometry(pb, viviani_x(PairKind::kImplicitImplicit, kPi / 2), GeometryMethod::kEstimate, dup);
+  CurveGeometry b = evaluate_geometry(pb, viviani_x(PairKind::kImplicitImplicit, kPi / 2), GeometryMethod::kEstimate, with_dup);
+  EXPECT_EQ(b.status, GeometryStatus::kOk);
+  EXPECT_EQ(a.kappa, b.kappa);
+  EXPECT_EQ(a.tau, b.tau);
   // Malformed x: a status, not a crash.
   EXPECT_EQ(evaluate_geometry(pb, VecX::Zero(2), GeometryMethod::kExact).status, GeometryStatus::kNonFinite);
   VecX nan_x = VecX::Constant(3, kNaN);

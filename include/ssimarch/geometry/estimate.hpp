@@ -9,6 +9,9 @@
 //   sign   = sign[(P_j - P_{j-1}).b(j)] gives the sign of the standard torsion      (eq 2.12,
 //            read with n towards the centre; spec/curve-geometry.md §1.3 caveat)
 //   kappa' = (kappa(j) - kappa(j-1)) / |P_j - P_{j-1}|                                 (eq 3.27)
+// (with kWuAndrade the two denominators are the distance between the frames' arc midpoints,
+// (|P_j - P_{j-1}| + |P_{j+1} - P_j|) / 2: the chord for equal steps, right for unequal ones;
+// with kThreePoint the mean of the three chords from P_{j-2} to P_{j+1}, for the same reason)
 // The frame at k is
 //   kWuAndrade:        the Wu-Andrade circle through P_k, P_{k+1} with tangents t_k, t_{k+1}
 //                      (eq 3.10, geometric plane assignment: plane through P_k with normal t_k,

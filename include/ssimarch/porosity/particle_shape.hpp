@@ -47,6 +47,11 @@ class ParticleShape {
   /// tan(psi/2)): there the chord's end switches between cylinder and cap, a curvature jump that the
   /// quadrature should not straddle. Returns the count (<= 8), angles in (-pi, pi].
   int junction_angles(double r, std::array<double, 8>& out) const;
+  /// Angles at which the circle of radius r passes under the rim of a cap sphere's section by the
+  /// plane z = z_cut (circle-circle intersections): where the chord clipped at z_cut has a kink.
+  int clip_angles(double r, double z_cut, std::array<double, 8>& out, int n) const;
+  /// Radii at which the circle is tangent to those sections (breakpoints in r of clipped integrals).
+  void clip_radii(double z_cut, std::vector<double>& out) const;
   /// Radii at which the circle's crossings with the shadow outline change (tangencies to the outline,
   /// outline corners): the breakpoints of the lateral area as a function of r. Sorted.
   std::vector<double> critical_radii() const;
