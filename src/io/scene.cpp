@@ -105,7 +105,8 @@ double number_from_json(const json& j, const expr::Constants& constants, const s
 
 const std::vector<std::string>& trace_option_keys() {
   static const std::vector<std::string> keys = {
-      "predictor", "corrector", "step", "step_length", "min_step", "taylor_order", "tolerance",
+      "predictor", "corrector", "step", "step_length", "min_step_length", "min_step", "deviation", "turn_angle",
+      "taylor_order", "tolerance",
       "max_corrector_iterations", "max_turn_angle", "max_correction_ratio", "max_points", "max_length",
       "start_samples", "geometry"};
   return keys;
@@ -136,6 +137,12 @@ void apply_trace_options(const json& options, const expr::Constants& c, const st
       o->step_length = number_from_json(v, c, w);
     } else if (key == "min_step") {
       o->min_step = number_from_json(v, c, w);
+    } else if (key == "min_step_length") {
+      o->min_step_length = number_from_json(v, c, w);
+    } else if (key == "deviation") {
+      o->deviation = number_from_json(v, c, w);
+    } else if (key == "turn_angle") {
+      o->turn_angle = number_from_json(v, c, w);
     } else if (key == "taylor_order") {
       o->taylor_order = static_cast<int>(integer(key, v));
     } else if (key == "tolerance") {
