@@ -78,6 +78,26 @@ Foot implicit_foot(const Surface& s, Vec3 X, double stop, long* evaluations) {
   f.point = X;
   return f;
 }
+enum class Progress { kConverged, kContinue, kDiverging };
+
+// After an update: counts the linearization L at the new point and judges it. Converged when
+// its distance is <= tolerance; diverging when the distance is not finite or grew twice in a
+// row (the CorrectorStatus::kDiverged conditions); both correctors share this rule.
+Progress assess(const Linearization& L, const CorrectorOptions& options, CorrectorResult* r, double* previous, int* growth) {
+  ++r->linearizations;
+  ++r->evaluations[0];
+  ++r->evaluations[1];
+  r->distance = L.distance;
+  if (!std::isfinite(L.distance)) return Progress::kDiverging;
+  if (L.distance <= options.tolerance) {
+    r->status = CorrectorStatus::kConverged;
+    return Progress::kConverged;
+  }
+  *growth = L.distance > *previous ? *growth + 1 : 0;
+  if (*growth >= 2) return Progress::kDiverging;
+  *previous = L.distance;
+  return Progress::kContinue;
+}
 }  // namespace
 
 CorrectorResult NewtonCorrector::correct(const Problem& problem, const VecX& guess,
@@ -104,18 +124,9 @@ CorrectorResult NewtonCorrector::correct(const Problem& problem, const VecX& gue
     r.x -= svd.solve(L.h);
     r.iterations = it;
     L = problem.linearize(r.x);
-    ++r.linearizations;
-    ++r.evaluations[0];
-    ++r.evaluations[1];
-    r.distance = L.distance;
-    if (!std::isfinite(L.distance)) break;
-    if (L.distance <= options.tolerance) {
-      r.status = CorrectorStatus::kConverged;
-      return r;
-    }
-    growth = L.distance > previous ? growth + 1 : 0;
-    if (growth >= 2) break;
-    previous = L.distance;
+    const Progress p = assess(L, options, &r, &previous, &growth);
+    if (p == Progress::kConverged) return r;
+    if (p == Progress::kDiverging) break;
   }
   r.status = CorrectorStatus::kDiverged;
   return r;
@@ -196,19 +207,9 @@ CorrectorResult ProjectionCorrector::correct(const Problem& problem, const VecX&
       case PairKind::kParametricImplicit: r.x << uv[0], uv[1]; break;
       case PairKind::kImplicitImplicit: r.x = P; break;
     }
-    Linearization L = problem.linearize(r.x);
-    ++r.linearizations;
-    ++r.evaluations[0];
-    ++r.evaluations[1];
-    r.distance = L.distance;
-    if (!std::isfinite(L.distance)) break;
-    if (L.distance <= options.tolerance) {
-      r.status = CorrectorStatus::kConverged;
-      return r;
-    }
-    growth = L.distance > previous ? growth + 1 : 0;
-    if (growth >= 2) break;
-    previous = L.distance;
+    const Progress p = assess(problem.linearize(r.x), options, &r, &previous, &growth);
+    if (p == Progress::kConverged) return r;
+    if (p == Progress::kDiverging) break;
   }
   r.status = CorrectorStatus::kDiverged;
   return r;
