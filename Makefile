@@ -16,7 +16,7 @@ build: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS)
 
 test: build
-	ctest --test-dir $(BUILD_DIR) -j $(JOBS) --output-on-failure
+	ctest --test-dir $(BUILD_DIR) -j $(JOBS) --output-on-failure --timeout 300
 
 demo: build
 	$(BUILD_DIR)/bin/ssimarch demo --out out/demo
@@ -24,7 +24,7 @@ demo: build
 asan: deps
 	cmake --preset dev
 	cmake --build build-asan -j $(JOBS)
-	ctest --test-dir build-asan -j $(JOBS) --output-on-failure
+	ctest --test-dir build-asan -j $(JOBS) --output-on-failure --timeout 1200
 
 bench: deps
 	cmake --preset bench
