@@ -67,7 +67,7 @@ void run_porosity_demo(const std::filesystem::path& out_dir, std::ostream& log) 
   spec.xlabel = "distance from the wall (R - r)/d";
   spec.ylabel = "porosity";
   PlotSeries exact{"exact (ssimarch)", {}, {}, "#1f77b4", false};
-  PlotSeries corr{"de Klerk (2003), eps_b = core mean", {}, {}, "#d62728", true};
+  PlotSeries corr{"de Klerk (2003) correlation", {}, {}, "#d62728", true};
   for (std::size_t j = 0; j < radii.size(); ++j) {
     const double x = (R - radii[j]) / d;
     exact.x.push_back(x);

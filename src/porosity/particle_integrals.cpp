@@ -14,6 +14,10 @@ namespace ssimarch::porosity {
 
 namespace {
 constexpr double kPi = std::numbers::pi;
+// Coarse signature samples of the kernel formulation. Near r = rho_min (or z = z_min) the contact
+// region is a sliver of width w ~ sqrt(delta) that sampling at spacing D misses when delta < D^2/(8a);
+// the lost integral scales like (D/extent)^4, about 1e-10 relative at 256 samples (1e-6 at 32).
+constexpr int kKernelSamples = 256;
 }
 
 double arc_length(const Particle& p, double z, double r, const KernelTolerances& tol, bool sphere_closed_form) {
@@ -39,7 +43,8 @@ QuadResult lateral_area(const ParticleShape& s, double r, const Slab& slab, doub
   if (method == Method::kernel) {
     const Particle& p = s.particle();
     return integrate_piecewise([&](double z) { return arc_length(p, z, r, tol, false); },
-                               [&](double z) { return kernel_signature(p, z, r, tol); }, z0, z1, abs_tol);
+                               [&](double z) { return kernel_signature(p, z, r, tol); }, z0, z1, abs_tol,
+                               kKernelSamples);
   }
   const bool clip = slab.z_min > s.z_min() || slab.z_max < s.z_max();
   auto chord = [&](double th) {
@@ -122,7 +127,64 @@ QuadResult shell_volume(const ParticleShape& s, double r0, double r1, const Slab
   return out;
 }
 
-QuadResult slice_area(const ParticleShape& s, double z, double R, double abs_tol, const KernelTolerances& tol) {
+namespace {
+
+// Area of the unit disk between the chords v = v0 and v = v1: F(v1) - F(v0), F(v) = v sqrt(1 - v^2) + asin v.
+double unit_disk_band(double v0, double v1) {
+  auto F = [](double v) {
+    v = std::clamp(v, -1.0, 1.0);
+    return v * std::sqrt(1 - v * v) + std::asin(v);
+  };
+  return v1 > v0 ? F(v1) - F(v0) : 0.0;
+}
+
+}  // namespace
+
+double slice_area_unclipped(const Particle& p, double z) {
+  // In the plane z, with s along e = u_xy/|u_xy| and t across it (origin below the centre), the
+  // infinite cylinder is t^2 + (u_z s - |u_xy| Z)^2 <= a^2 (Z = z - c_z) and lambda = |u_xy| s + u_z Z,
+  // so K_z = ellipse between the chords s = s-, s+ (lambda = -+h) plus the cap-sphere disks beyond them.
+  const double a = p.radius(), h = p.half_length(), Z = z - p.centre.z();
+  const double uz = p.axis.z(), w = std::hypot(p.axis.x(), p.axis.y());
+  auto cap_disk = [&](double zc) {
+    const double q = a * a - (z - zc) * (z - zc);
+    return q > 0 ? q : 0.0;  // squared radius of the cap sphere's section
+  };
+  if (w < 1e-300) {  // vertical axis: one disk
+    const double lam = uz * Z;
+    if (std::abs(lam) <= h) return kPi * a * a;
+    return kPi * cap_disk(p.centre.z() + (lam > 0 ? h : -h) * uz);
+  }
+  const double sm = (-h - uz * Z) / w, sp = (h - uz * Z) / w;
+  double area = 0;
+  if (std::abs(uz) > 1e-4) {
+    // v = (u_z s - |u_xy| Z)/a maps the ellipse to the unit disk (Jacobian a^2/|u_z|); v decreases
+    // with s when u_z < 0.
+    const double va = (uz * sm - w * Z) / a, vb = (uz * sp - w * Z) / a;
+    area = a * a / std::abs(uz) * unit_disk_band(std::min(va, vb), std::max(va, vb));
+  } else {
+    // Nearly horizontal axis: the band formula cancels; integrate the ellipse width 2a sqrt(1 - v^2).
+    auto width = [&](double s) {
+      const double v = (uz * s - w * Z) / a;
+      return v * v < 1 ? 2 * a * std::sqrt(1 - v * v) : 0.0;
+    };
+    area = integrate(width, sm, sp, 1e-15 * a * a).value;
+  }
+  // Cap disks: centre at s = +-h w, keep s >= s+ (plus) and s <= s- (minus).
+  const double qp = cap_disk(p.centre.z() + h * uz), qm = cap_disk(p.centre.z() - h * uz);
+  if (qp > 0) {
+    const double rp = std::sqrt(qp);
+    area += qp * unit_disk_band((sp - h * w) / rp, 1.0);
+  }
+  if (qm > 0) {
+    const double rm = std::sqrt(qm);
+    area += qm * unit_disk_band(-1.0, (sm + h * w) / rm);
+  }
+  return area;
+}
+
+QuadResult slice_area(const ParticleShape& s, double z, double R, double abs_tol, const KernelTolerances& tol,
+                      Method method) {
   QuadResult out;
   const Particle& p = s.particle();
   if (z <= s.z_min() || z >= s.z_max()) return out;
@@ -132,11 +194,16 @@ QuadResult slice_area(const ParticleShape& s, double z, double R, double abs_tol
     out.evaluations = 1;
     return out;
   }
+  if (method == Method::chord && s.rho_max() <= R) {
+    out.value = slice_area_unclipped(p, z);
+    out.evaluations = 1;
+    return out;
+  }
   const double r0 = s.rho_min(), r1 = std::min(R, s.rho_max());
   if (!(r1 > r0)) return out;
   return integrate_piecewise([&](double r) { return arc_length(p, z, r, tol, false); },
                              [&](double r) { return kernel_signature(p, z, r, tol); }, std::max(r0, 0.0), r1,
-                             abs_tol);
+                             abs_tol, kKernelSamples);
 }
 
 }  // namespace ssimarch::porosity

@@ -107,10 +107,10 @@ void write_svg_plot(const std::filesystem::path& path, const PlotSpec& spec) {
     for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i)
       if (std::isfinite(s.x[i]) && std::isfinite(s.y[i])) o << X(s.x[i]) << "," << Y(s.y[i]) << " ";
     o << "\"/>\n";
-    const double ly = T + 20 + 18 * k++;
-    o << "<line x1=\"" << W - Rm - 220 << "\" y1=\"" << ly << "\" x2=\"" << W - Rm - 190 << "\" y2=\"" << ly
+    const double ly = T + 20 + 18 * k++;  // legend, top right
+    o << "<line x1=\"" << W - Rm - 330 << "\" y1=\"" << ly << "\" x2=\"" << W - Rm - 300 << "\" y2=\"" << ly
       << "\" stroke=\"" << s.color << "\" stroke-width=\"2\"" << (s.dashed ? " stroke-dasharray=\"6,4\"" : "")
-      << "/><text x=\"" << W - Rm - 184 << "\" y=\"" << ly + 4 << "\">" << xml_escape(s.label) << "</text>\n";
+      << "/><text x=\"" << W - Rm - 294 << "\" y=\"" << ly + 4 << "\">" << xml_escape(s.label) << "</text>\n";
   }
   o << "</svg>\n";
   if (!o) throw std::runtime_error(path.string() + ": error writing plot");

@@ -251,7 +251,7 @@ Profile axial_profile(std::span<const Particle> particles, const Container& c, s
   for (std::size_t j = 0; j < m; ++j) budget[j] = 0.5 * opt.tolerance * area / std::max(1L, count[j]);
   auto res = run_chunks(prep.shapes, m, opt, [&](const ParticleShape& s, ChunkResult& cr) {
     const auto [b, e] = index_range(heights, s.z_min(), s.z_max());
-    for (std::size_t j = b; j < e; ++j) account(cr, j, slice_area(s, heights[j], c.radius, budget[j], opt.kernel));
+    for (std::size_t j = b; j < e; ++j) account(cr, j, slice_area(s, heights[j], c.radius, budget[j], opt.kernel, opt.method));
   });
   Profile out;
   out.x.assign(heights.begin(), heights.end());

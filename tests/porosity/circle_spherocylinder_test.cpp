@@ -62,7 +62,7 @@ const OracleCase kOracle[] = {
      {0.00303393130666, 0.736797110261, -0.676107102146}, 0.8, 1.2, 0.2, 1.3, 0.0, 1e-9},
 };
 
-TEST(CircleSpherocylinder, OracleValues) {
+TEST(porosity_CircleSpherocylinder, OracleValues) {
   for (const auto& c : kOracle) {
     const auto s = make(c.c, c.u, c.sigma, c.l);
     const auto res = circle_spherocylinder(s, c.z, c.r);
@@ -71,7 +71,7 @@ TEST(CircleSpherocylinder, OracleValues) {
   }
 }
 
-TEST(CircleSpherocylinder, OracleCrossingCounts) {
+TEST(porosity_CircleSpherocylinder, OracleCrossingCounts) {
   // s001.config.2: 4 crossings; config.3 and 7: 2; config.6: a tangency at theta = pi plus 2 (a = b = 0).
   EXPECT_EQ(circle_spherocylinder(make({0, 0, 0}, {1, 0, 0}, 1.0, 2.0), 0.2, 1.0).count, 4);
   EXPECT_EQ(circle_spherocylinder(make({0.8, -0.3, 0.1}, {0.6, 0.48, 0.64}, 0.9, 1.5), 0.3, 1.0).count, 2);
@@ -83,7 +83,7 @@ TEST(CircleSpherocylinder, OracleCrossingCounts) {
   EXPECT_TRUE(r6.theta_m_test);
 }
 
-TEST(CircleSpherocylinder, FlowchartOmissionCaseGivesZero) {
+TEST(porosity_CircleSpherocylinder, FlowchartOmissionCaseGivesZero) {
   // s001.flowchart_omission.cyl_0.9: theta = pi lies on the infinite cylinder outside |lambda| <= l/2.
   const auto s = make({-1.60616505319, -0.486226243077, 0.999904369753},
                       {0.00303393130666, 0.736797110261, -0.676107102146}, 0.8, 1.2);
@@ -92,7 +92,7 @@ TEST(CircleSpherocylinder, FlowchartOmissionCaseGivesZero) {
   EXPECT_NE(res.which, ArcCase::fallback);
 }
 
-TEST(CircleSpherocylinder, RandomSweepMatchesBruteForce) {
+TEST(porosity_CircleSpherocylinder, RandomSweepMatchesBruteForce) {
   // Same distribution as the oracle's random sweep (s001.random_sweep), fresh seed.
   std::mt19937_64 rng(20240501);
   std::uniform_real_distribution<double> U(0, 1);
@@ -113,7 +113,7 @@ TEST(CircleSpherocylinder, RandomSweepMatchesBruteForce) {
   EXPECT_GT(crossings4, 0);
 }
 
-TEST(CircleSpherocylinder, AxisVerticalAndHorizontal) {
+TEST(porosity_CircleSpherocylinder, AxisVerticalAndHorizontal) {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> U(-1, 1);
   for (const Vec3<double>& u : {Vec3<double>(0, 0, 1), Vec3<double>(0, 0, -1), Vec3<double>(1, 0, 0),
@@ -127,7 +127,7 @@ TEST(CircleSpherocylinder, AxisVerticalAndHorizontal) {
   }
 }
 
-TEST(CircleSpherocylinder, CoaxialSpecialCases) {
+TEST(porosity_CircleSpherocylinder, CoaxialSpecialCases) {
   // A.14: circle on the cylindrical surface; A.38: circle on a cap sphere.
   const auto s = make({0, 0, 1}, {0, 0, 1}, 2.0, 3.0);
   const auto on = circle_spherocylinder(s, 1.5, 1.0);
@@ -141,7 +141,7 @@ TEST(CircleSpherocylinder, CoaxialSpecialCases) {
   EXPECT_NEAR(circle_spherocylinder(s, 3.0, 0.8).inside_length, 2 * kPi * 0.8, 1e-14);
 }
 
-TEST(CircleSpherocylinder, CircleTangentToCylinder) {
+TEST(porosity_CircleSpherocylinder, CircleTangentToCylinder) {
   // Vertical axis at distance r + sigma/2 (outside tangency) and r - sigma/2 (inside tangency), then
   // moved inwards by small offsets: the arcs grow like a square root; brute force must agree.
   const double r = 1.3, sigma = 0.6;
@@ -167,7 +167,7 @@ TEST(CircleSpherocylinder, CircleTangentToCylinder) {
   }
 }
 
-TEST(CircleSpherocylinder, CapTouchingCircle) {
+TEST(porosity_CircleSpherocylinder, CapTouchingCircle) {
   // The top point of the plus cap on the circle, and the cap sphere tangent to the circle sideways.
   const double r = 0.9, sigma = 0.5, l = 1.0;
   for (double phi : {0.3, kPi, -2.0}) {
@@ -192,7 +192,7 @@ TEST(CircleSpherocylinder, CapTouchingCircle) {
   }
 }
 
-TEST(CircleSpherocylinder, ThetaNearPi) {
+TEST(porosity_CircleSpherocylinder, ThetaNearPi) {
   // Rotating a configuration about the z axis by beta shifts every crossing by beta and keeps the
   // length. Choose beta so that a crossing lands at pi - eps, pi, -pi + eps.
   std::mt19937_64 rng(99);
@@ -220,7 +220,7 @@ TEST(CircleSpherocylinder, ThetaNearPi) {
   EXPECT_GT(tested, 500);
 }
 
-TEST(CircleSpherocylinder, ZeroLengthMatchesSphereClosedForm) {
+TEST(porosity_CircleSpherocylinder, ZeroLengthMatchesSphereClosedForm) {
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> U(-1, 1);
   for (int k = 0; k < 2000; ++k) {
@@ -232,7 +232,7 @@ TEST(CircleSpherocylinder, ZeroLengthMatchesSphereClosedForm) {
   }
 }
 
-TEST(CircleSpherocylinder, LongDoubleChoosesTheSameCase) {
+TEST(porosity_CircleSpherocylinder, LongDoubleChoosesTheSameCase) {
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> U(0, 1);
   std::normal_distribution<double> N;

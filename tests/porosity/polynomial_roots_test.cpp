@@ -21,7 +21,7 @@ std::vector<double> from_roots(const std::vector<double>& roots, double lead) {
   return c;
 }
 
-TEST(PolynomialRoots, RandomSimpleRoots) {
+TEST(porosity_PolynomialRoots, RandomSimpleRoots) {
   std::mt19937_64 rng(3);
   std::uniform_real_distribution<double> U(-3, 3);
   for (int deg = 1; deg <= 4; ++deg) {
@@ -40,7 +40,7 @@ TEST(PolynomialRoots, RandomSimpleRoots) {
   }
 }
 
-TEST(PolynomialRoots, DoubleRootIsReportedTwice) {
+TEST(porosity_PolynomialRoots, DoubleRootIsReportedTwice) {
   // (x - 1)^2 (x + 2)(x - 3) and (x^2 + 1)(x - 0.5)^2: a tangency counts twice, a complex pair not at all.
   auto c = from_roots({1, 1, -2, 3}, 1.0);
   auto got = real_roots(c.data(), 4, 1e-12);
@@ -59,7 +59,7 @@ TEST(PolynomialRoots, DoubleRootIsReportedTwice) {
   EXPECT_EQ(real_roots(none, 4, 1e-12).count, 0);
 }
 
-TEST(PolynomialRoots, LongDouble) {
+TEST(porosity_PolynomialRoots, LongDouble) {
   const long double c[3] = {2.0L, -3.0L, 1.0L};
   const auto got = real_roots(c, 2, 1e-15L);
   ASSERT_EQ(got.count, 2);

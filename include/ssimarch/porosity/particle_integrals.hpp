@@ -37,7 +37,15 @@ QuadResult shell_volume(const ParticleShape& s, double r0, double r1, const Slab
                         Method method = Method::chord, const KernelTolerances& tol = {});
 
 /// S_i(z) inside the disk of radius R to absolute tolerance abs_tol (units length^2). Spheres use the
-/// closed-form disk-disk lens area; spherocylinders integrate the kernel over r.
-QuadResult slice_area(const ParticleShape& s, double z, double R, double abs_tol, const KernelTolerances& tol = {});
+/// closed-form disk-disk lens area. Spherocylinders inside the disk use the closed-form slice area
+/// (Method::chord); those crossing the circle r = R, or all with Method::kernel, integrate the seed
+/// kernel over r.
+QuadResult slice_area(const ParticleShape& s, double z, double R, double abs_tol, const KernelTolerances& tol = {},
+                      Method method = Method::chord);
+
+/// Area of the horizontal section of a particle at height z: an ellipse (section of the cylinder)
+/// between the two chords lambda = -+l/2, plus the sections of the two cap spheres beyond them
+/// (closed form through the area of a unit-disk band). Units length^2.
+double slice_area_unclipped(const Particle& p, double z);
 
 }  // namespace ssimarch::porosity

@@ -45,25 +45,56 @@ QuadResult integrate_piecewise(V&& value, S&& sig, double a, double b, double ab
     self(self, m, sm, r, sr);
   };
   // Coarse samples, ends included (a change between an end and its neighbour is found as well).
-  std::vector<double> xs(coarse + 1);
-  std::vector<long> ss(coarse + 1);
-  for (int k = 0; k <= coarse; ++k) {
-    xs[k] = k == coarse ? b : a + (b - a) * k / coarse;
-    ss[k] = sig(xs[k]);
-  }
-  out.evaluations += coarse + 1;
-  for (int k = 0; k < coarse; ++k) refine(refine, xs[k], ss[k], xs[k + 1], ss[k + 1]);
-  std::sort(breaks.begin(), breaks.end());
-  std::vector<double> merged;
-  for (double x : breaks)
-    if (merged.empty() || x - merged.back() > merge) merged.push_back(x);
-  merged.push_back(b);
-  breaks.swap(merged);
+  auto find_breaks = [&](double lo, double hi, int n) {
+    std::vector<double> xs(n + 1);
+    std::vector<long> ss(n + 1);
+    for (int k = 0; k <= n; ++k) {
+      xs[k] = k == n ? hi : lo + (hi - lo) * k / n;
+      ss[k] = sig(xs[k]);
+    }
+    out.evaluations += n + 1;
+    for (int k = 0; k < n; ++k) refine(refine, xs[k], ss[k], xs[k + 1], ss[k + 1]);
+  };
+  find_breaks(a, b, coarse);
+  auto merged_breaks = [&] {
+    std::sort(breaks.begin(), breaks.end());
+    std::vector<double> m;
+    for (double x : breaks)
+      if (m.empty() || x - m.back() > merge) m.push_back(x);
+    if (b - m.back() <= merge) m.pop_back();
+    m.push_back(b);
+    return m;
+  };
+  std::vector<double> pieces = merged_breaks();
   const double total = b - a;
-  for (std::size_t k = 0; k + 1 < breaks.size(); ++k) {
-    const double lo = breaks[k], hi = breaks[k + 1];
+  // A piece that does not converge may hide a pair of changes between two coarse samples: sample
+  // it finer once and integrate its sub-pieces.
+  for (std::size_t k = 0; k + 1 < pieces.size(); ++k) {
+    const double lo = pieces[k], hi = pieces[k + 1];
     if (!(hi > lo)) continue;
-    out += integrate_sqrt_ends(value, lo, hi, abs_tol * (hi - lo) / total);
+    const double tol = abs_tol * (hi - lo) / total;
+    QuadResult q = integrate_sqrt_ends(value, lo, hi, tol);
+    if (q.status != QuadStatus::converged) {
+      breaks.assign({lo});
+      find_breaks(lo, hi, 4 * coarse);
+      const std::vector<double> sub = [&] {
+        std::sort(breaks.begin(), breaks.end());
+        std::vector<double> m;
+        for (double x : breaks)
+          if (m.empty() || x - m.back() > merge) m.push_back(x);
+        if (hi - m.back() <= merge) m.pop_back();
+        m.push_back(hi);
+        return m;
+      }();
+      if (sub.size() > 2) {
+        QuadResult r;
+        r.evaluations = q.evaluations;
+        for (std::size_t j = 0; j + 1 < sub.size(); ++j)
+          r += integrate_sqrt_ends(value, sub[j], sub[j + 1], tol * (sub[j + 1] - sub[j]) / (hi - lo));
+        q = r;
+      }
+    }
+    out += q;
   }
   return out;
 }
