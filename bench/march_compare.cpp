@@ -33,19 +33,13 @@
 #include "ssimarch/march/tracer.hpp"
 #include "ssimarch/surface/sphere.hpp"
 #include "ssimarch/surface/surface.hpp"
+#include "testing/surface_pairs.hpp"
 
 using namespace ssimarch;
 
 namespace {
 
-Surface parametric(const std::string& x, const std::string& y, const std::string& z, Interval u, Interval v,
-                   bool periodic_u = false, bool periodic_v = false) {
-  std::vector<std::string> vars = {"u", "v"};
-  expr::Constants c;
-  std::array<expr::Program, 3> p = {expr::Program::compile_or_throw(x, vars, c), expr::Program::compile_or_throw(y, vars, c),
-                                    expr::Program::compile_or_throw(z, vars, c)};
-  return ExprParametric(p, ParamDomain{u, v, periodic_u, periodic_v});
-}
+using testing::parametric;
 
 struct Pair {
   std::string name;
@@ -58,14 +52,10 @@ std::vector<Pair> pairs() {
   const double pi = M_PI;
   std::vector<Pair> r;
   r.push_back({"ruled-torus", "thesis pair 1 (ch. 3/4), PP",
-               Problem(parametric("(4+cos(4*u))*cos(u) + v*(cos(4*u)+sin(4*u))*cos(u)",
-                                  "(4+cos(4*u))*sin(u) + v*(cos(4*u)+sin(4*u))*sin(u)", "sin(4*u) + v*(sin(4*u)-cos(4*u))",
-                                  {0, 2 * pi}, {-0.5, 0.5}, true, false),
-                       parametric("(4+cos(u))*sin(v)", "(4+cos(u))*cos(v)", "sin(u)", {0, 2 * pi}, {0, 2 * pi}, true, true),
-                       PairKind::kParametricParametric),
+               Problem(testing::ruled_surface(), testing::torus_g1(), PairKind::kParametricParametric),
                Vec3(5, 0, 0)});
   r.push_back({"sphere-cylinder", "Viviani (thesis pair 2 / seed 004), PI, node at (0,-2,0)",
-               Problem(parametric("cos(u)", "sin(u)-1", "v", {0, 2 * pi}, {-3, 3}, true, false), Sphere(Vec3::Zero(), 2.0),
+               Problem(testing::cylinder_f2(), Sphere(Vec3::Zero(), 2.0),
                        PairKind::kParametricImplicit),
                Vec3(1, -1, std::sqrt(2.0))});
   r.push_back({"plane-ellipsoid", "seed 000 ex. 4, PP",

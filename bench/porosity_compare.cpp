@@ -8,10 +8,10 @@
 #include <cstdio>
 #include <thread>
 
-#include "porosity_beds.hpp"
+#include "testing/packed_beds.hpp"
 #include "ssimarch/porosity/monte_carlo.hpp"
 
-namespace po = ssimarch::porosity;
+using namespace ssimarch;
 
 namespace {
 
@@ -19,33 +19,33 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-void row(const char* name, const po::bench::Bed& bed) {
-  const auto radii = po::even_radii(bed.container.radius, 200);
-  po::ProfileOptions opt;
+void row(const char* name, const testing::PackedBed& bed) {
+  const auto radii = even_radii(bed.container.radius, 200);
+  ProfileOptions opt;
   opt.tolerance = 1e-8;
   std::vector<double> times;
-  po::Profile p;
+  PorosityProfile p;
   for (int k = 0; k < 3; ++k) {
     const auto t0 = std::chrono::steady_clock::now();
-    p = po::radial_profile(bed.particles, bed.container, radii, opt);
+    p = radial_profile(bed.particles, bed.container, radii, opt);
     times.push_back(seconds_since(t0));
   }
   std::sort(times.begin(), times.end());
   const double t_exact = times[1];
-  po::ProfileOptions ref_opt;
+  ProfileOptions ref_opt;
   ref_opt.tolerance = 1e-11;
-  const po::Profile ref = po::radial_profile(bed.particles, bed.container, radii, ref_opt);
+  const PorosityProfile ref = radial_profile(bed.particles, bed.container, radii, ref_opt);
   double err = 0;
   for (std::size_t j = 0; j < radii.size(); ++j) err = std::max(err, std::abs(p.porosity[j] - ref.porosity[j]));
   // Monte Carlo pilot, then the sample count that fills t_exact.
-  po::MonteCarloOptions mo;
+  MonteCarloOptions mo;
   mo.samples_per_radius = 2000;
   auto t0 = std::chrono::steady_clock::now();
-  po::monte_carlo_radial(bed.particles, bed.container, radii, mo);
+  monte_carlo_radial(bed.particles, bed.container, radii, mo);
   const double per_sample = seconds_since(t0) / (mo.samples_per_radius * 200.0);
   mo.samples_per_radius = std::max(100L, static_cast<long>(t_exact / (per_sample * 200.0)));
   t0 = std::chrono::steady_clock::now();
-  const po::MonteCarloProfile mc = po::monte_carlo_radial(bed.particles, bed.container, radii, mo);
+  const MonteCarloProfile mc = monte_carlo_radial(bed.particles, bed.container, radii, mo);
   const double t_mc = seconds_since(t0);
   double mc_max = 0, mc_rms = 0, se = 0;
   for (std::size_t j = 0; j < radii.size(); ++j) {
@@ -70,7 +70,7 @@ int main() {
   std::printf("| packing | particles | exact time (s, median of 3) | estimated max error | actual max error (vs 1e-11 run) "
               "| MC time (s) | MC samples per radius | MC max error | MC rms error | MC mean std. error | MC time for 1e-8 |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
-  row("drop-and-roll spheres, D/d = 20", po::bench::sphere_bed_100k());
-  row("RSA spherocylinders l/d = 2, D/d = 20", po::bench::rod_bed_20k());
+  row("drop-and-roll spheres, D/d = 20", testing::sphere_bed_100k());
+  row("RSA spherocylinders l/d = 2, D/d = 20", testing::rod_bed_20k());
   return 0;
 }

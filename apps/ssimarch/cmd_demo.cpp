@@ -10,7 +10,7 @@
 #include "ssimarch/io/run.hpp"
 #include "ssimarch/io/scene.hpp"
 #include "ssimarch/io/svg_plot.hpp"
-#include "ssimarch/porosity/demo.hpp"
+#include "ssimarch/io/porosity_demo.hpp"
 #include "trace_output.hpp"
 
 namespace ssimarch::cli {
@@ -57,7 +57,7 @@ void run_demo(const DemoArgs& a) {
             << "3D view and parameter domains)\n";
   if (!a.skip_porosity) {
     std::cout << "\n* packed bed of spheres: exact radial porosity profile\n";
-    porosity::run_porosity_demo(dir / "porosity", std::cout);
+    run_porosity_demo(dir / "porosity", std::cout);
   }
 }
 

@@ -1,18 +1,17 @@
-// `ssimarch packing`: packing generators (drop-and-roll spheres, RSA spherocylinders). See docs/porosity.md.
-#include <cmath>
+// `ssimarch packing`: packing generators (drop-and-roll spheres, RSA spherocylinders). Argument
+// parsing and output only; generation is the library's packing job (pipeline/packing_job.hpp).
+// See docs/porosity.md.
 #include <fstream>
 #include <iostream>
+#include <map>
 
 #include "commands.hpp"
-#include "ssimarch/porosity/generator.hpp"
+#include "ssimarch/pipeline/packing_job.hpp"
 #include "ssimarch/porosity/packing.hpp"
-#include "ssimarch/porosity/profile.hpp"
 
 namespace ssimarch::cli {
 
 namespace {
-
-namespace po = ssimarch::porosity;
 
 struct PackingArgs {
   std::string output;
@@ -21,7 +20,13 @@ struct PackingArgs {
   std::uint64_t seed = 1;
 };
 
-void write(const std::string& path, const std::vector<po::Particle>& ps) {
+// The flag that sets each generator option, to name it in errors.
+const std::map<std::string, std::string> kFlagOfOption = {
+    {"container_radius", "--container-radius"}, {"diameter", "--diameter"}, {"count", "--count"},
+    {"diameter_max", "--diameter-max"}, {"length", "--length"}, {"height", "--height"},
+    {"target_solid_fraction", "--solid-fraction"}};
+
+void write(const std::string& path, const std::vector<Particle>& ps) {
   std::ofstream file;
   std::ostream* out = &std::cout;
   if (!path.empty()) {
@@ -29,28 +34,57 @@ void write(const std::string& path, const std::vector<po::Particle>& ps) {
     if (!file) throw CliError(path + ": cannot open for writing");
     out = &file;
   }
-  po::write_packing_csv(*out, ps);
+  write_packing_csv(*out, ps);
   if (!*out) throw CliError((path.empty() ? std::string("stdout") : path) + ": write failed");
 }
 
-void check_common(const PackingArgs& a) {
-  if (!(a.radius > 0) || !std::isfinite(a.radius)) throw CliError("--container-radius must be a positive number");
-  if (!(a.diameter > 0) || !std::isfinite(a.diameter)) throw CliError("--diameter must be a positive number");
-  if (a.diameter >= 2 * a.radius) throw CliError("--diameter must be smaller than the container diameter");
-  if (a.count < 1) throw CliError("--count must be >= 1");
+void report(const char* what, const PackingJobResult& r) {
+  std::cerr << what << ": " << r.report.placed << " particles, height " << r.report.height << ", bulk porosity "
+            << r.bulk.porosity << " (z in [" << r.bed.slab.z_min << ", " << r.bed.slab.z_max << "])";
+  if (r.report.max_overlap > 0) std::cerr << ", max overlap " << r.report.max_overlap;
+  if (r.report.unstable > 0) std::cerr << ", " << r.report.unstable << " spheres stopped at the roll iteration limit";
+  std::cerr << "\n";
 }
 
-void report(const char* what, const po::GeneratorReport& r, const std::vector<po::Particle>& ps, double R, double z0,
-            double z1) {
-  po::Container c;
-  c.radius = R;
-  c.slab = {z0, z1};
-  const auto bulk = po::bulk_porosity(ps, c);
-  std::cerr << what << ": " << r.placed << " particles, height " << r.height << ", bulk porosity " << bulk.porosity
-            << " (z in [" << z0 << ", " << z1 << "])";
-  if (r.max_overlap > 0) std::cerr << ", max overlap " << r.max_overlap;
-  if (r.unstable > 0) std::cerr << ", " << r.unstable << " spheres stopped at the roll iteration limit";
-  std::cerr << "\n";
+PackingJobResult run_job(const PackingJob& job) {
+  try {
+    return run_packing_job(job);
+  } catch (const InputError& e) {
+    const auto flag = kFlagOfOption.find(e.where());
+    if (flag != kFlagOfOption.end()) throw CliError(flag->second + ": " + e.message());
+    throw CliError(e.what());
+  }
+}
+
+void generate_spheres(const PackingArgs& a) {
+  if (a.count < 1) throw CliError("--count must be >= 1");
+  SphereBedOptions o;
+  o.container_radius = a.radius;
+  o.diameter = a.diameter;
+  o.diameter_max = a.diameter_max;
+  o.count = a.count;
+  o.seed = a.seed;
+  const PackingJobResult r = run_job(o);
+  write(a.output, r.particles);
+  report("drop-and-roll", r);
+}
+
+void generate_spherocylinders(const PackingArgs& a) {
+  if (a.count < 1) throw CliError("--count must be >= 1");
+  SpherocylinderRsaOptions o;
+  o.container_radius = a.radius;
+  o.diameter = a.diameter;
+  o.length = a.length;
+  o.count = a.count;
+  o.height = a.height;
+  o.target_solid_fraction = a.fraction;
+  o.seed = a.seed;
+  const PackingJobResult r = run_job(o);
+  write(a.output, r.particles);
+  if (r.report.placed < a.count)
+    std::cerr << "ssimarch: warning: RSA jammed after " << r.report.attempts << " attempts: placed " << r.report.placed
+              << " of " << a.count << "\n";
+  report("RSA", r);
 }
 
 }  // namespace
@@ -72,42 +106,8 @@ void add_packing_command(CLI::App& app) {
   sc->add_option("--length", a->length, "cylinder length l (default 2)");
   sc->add_option("--height", a->height, "container height H (default: from --solid-fraction)");
   sc->add_option("--solid-fraction", a->fraction, "target solid fraction fixing H when --height is not given (default 0.2)");
-  sp->callback([a] {
-    check_common(*a);
-    if (a->diameter_max != 0 && !(a->diameter_max >= a->diameter)) throw CliError("--diameter-max must be >= --diameter");
-    po::SphereBedOptions o;
-    o.container_radius = a->radius;
-    o.diameter = a->diameter;
-    o.diameter_max = a->diameter_max;
-    o.count = a->count;
-    o.seed = a->seed;
-    po::GeneratorReport r;
-    const auto ps = po::drop_and_roll_spheres(o, &r);
-    write(a->output, ps);
-    const double d = std::max(a->diameter, a->diameter_max);
-    report("drop-and-roll", r, ps, a->radius, 0.0, r.height > 0 ? r.height : d);
-  });
-  sc->callback([a] {
-    check_common(*a);
-    if (!(a->length >= 0) || !std::isfinite(a->length)) throw CliError("--length must be >= 0");
-    if (a->height < 0 || !std::isfinite(a->height)) throw CliError("--height must be >= 0");
-    if (!(a->fraction > 0 && a->fraction < 1)) throw CliError("--solid-fraction must be in (0, 1)");
-    po::SpherocylinderRsaOptions o;
-    o.container_radius = a->radius;
-    o.diameter = a->diameter;
-    o.length = a->length;
-    o.count = a->count;
-    o.height = a->height;
-    o.target_solid_fraction = a->fraction;
-    o.seed = a->seed;
-    po::GeneratorReport r;
-    const auto ps = po::rsa_spherocylinders(o, &r);
-    write(a->output, ps);
-    if (r.placed < a->count)
-      std::cerr << "ssimarch: warning: RSA jammed after " << r.attempts << " attempts: placed " << r.placed << " of "
-                << a->count << "\n";
-    report("RSA", r, ps, a->radius, 0.0, r.height);
-  });
+  sp->callback([a] { generate_spheres(*a); });
+  sc->callback([a] { generate_spherocylinders(*a); });
 }
 
 }  // namespace ssimarch::cli

@@ -1,25 +1,24 @@
-// `ssimarch porosity`: exact porosity profiles of a packing file (issue 5). See docs/porosity.md.
+// `ssimarch porosity`: exact porosity profiles of a packing file (issue 5). Argument parsing and
+// output only; the run itself is the library's porosity job (pipeline/porosity_job.hpp). See
+// docs/porosity.md.
 #include <unistd.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "commands.hpp"
-#include "ssimarch/porosity/packing.hpp"
-#include "ssimarch/porosity/plot.hpp"
-#include "ssimarch/porosity/profile.hpp"
+#include "ssimarch/io/profile_plot.hpp"
+#include "ssimarch/pipeline/porosity_job.hpp"
 
 namespace ssimarch::cli {
 
 namespace {
-
-namespace po = ssimarch::porosity;
 
 struct PorosityArgs {
   std::string packing, output, plot, summary, z_range, map, method = "chord";
@@ -27,6 +26,12 @@ struct PorosityArgs {
   int radii = 0, bins = 0, axial = 0;
   unsigned threads = 0;
 };
+
+// The flag that sets each field of PorosityJob, to name it in errors.
+const std::map<std::string, std::string> kFlagOfJobField = {
+    {"container_radius", "--container-radius"}, {"options.tolerance", "--tolerance"}, {"radial_points", "--radii"},
+    {"bins", "--bins"}, {"axial_slices", "--axial"}, {"map_radii", "--map"}, {"map_heights", "--map"},
+    {"height_range", "--z-range"}};
 
 std::pair<double, double> parse_pair(const std::string& s, const char* opt) {
   const auto comma = s.find(',');
@@ -42,15 +47,63 @@ std::pair<double, double> parse_pair(const std::string& s, const char* opt) {
 }
 
 // Progress bar on stderr, only when stderr is a terminal.
-std::function<void(double)> progress_bar(const char* what) {
+std::function<void(std::string_view, double)> progress_bar() {
   if (!isatty(fileno(stderr))) return {};
-  return [what](double f) {
+  return [](std::string_view what, double f) {
     const int w = 30, n = static_cast<int>(f * w + 0.5);
-    std::fprintf(stderr, "\r%-8s [%s%s] %3d%%", what, std::string(n, '#').c_str(), std::string(w - n, ' ').c_str(),
-                 static_cast<int>(f * 100 + 0.5));
+    std::fprintf(stderr, "\r%-8s [%s%s] %3d%%", std::string(what).c_str(), std::string(n, '#').c_str(),
+                 std::string(w - n, ' ').c_str(), static_cast<int>(f * 100 + 0.5));
     if (f >= 1.0) std::fprintf(stderr, "\r%*s\r", w + 18, "");
     std::fflush(stderr);
   };
+}
+
+// The job the flags describe; flag syntax and combinations are checked here, values by the job.
+PorosityJob make_job(const PorosityArgs& a) {
+  if (a.radii && a.bins) throw CliError("--radii and --bins are mutually exclusive");
+  if (a.method != "chord" && a.method != "kernel") throw CliError("--method must be 'chord' or 'kernel'");
+  PorosityJob job;
+  job.packing_file = a.packing;
+  job.container_radius = a.radius;
+  job.radial_points = a.radii;
+  job.bins = a.bins;
+  job.axial_slices = a.axial;
+  if (!a.map.empty()) {
+    const auto [nr, nz] = parse_pair(a.map, "--map");
+    if (nr < 1 || nz < 1 || nr != std::floor(nr) || nz != std::floor(nz) || nr > 1e5 || nz > 1e5)
+      throw CliError("--map expects two positive integers NR,NZ, got '" + a.map + "'");
+    job.map_radii = static_cast<int>(nr);
+    job.map_heights = static_cast<int>(nz);
+  }
+  if (!a.radii && !a.bins && !a.axial && !job.map_radii) job.radial_points = 200;  // default: radial profile
+  if (!a.z_range.empty()) {
+    const auto [z0, z1] = parse_pair(a.z_range, "--z-range");
+    if (!(z1 > z0)) throw CliError("--z-range A,B needs A < B");
+    job.height_range = Slab{z0, z1};
+  }
+  job.options.tolerance = a.tolerance;
+  job.options.threads = a.threads;
+  job.options.method = a.method == "kernel" ? ProfileMethod::kKernel : ProfileMethod::kChord;
+  job.progress = progress_bar();
+  const int kinds = (job.radial_points > 0) + (job.bins > 0) + (job.axial_slices > 0) + (job.map_radii > 0);
+  if (kinds > 1 && a.output.empty())
+    throw CliError("several profiles requested: give -o FILE (the others go to FILE_axial.csv, FILE_map.csv)");
+  if (!a.plot.empty()) {
+    if (std::filesystem::path(a.plot).extension() != ".svg")
+      throw CliError("--plot file must end in .svg: " + a.plot);
+    if (!job.radial_points && !job.bins && !job.axial_slices) throw CliError("--plot needs --radii, --bins or --axial");
+  }
+  return job;
+}
+
+PorosityJobResult run_job(const PorosityJob& job) {
+  try {
+    return run_porosity_job(job);
+  } catch (const InputError& e) {
+    const auto flag = kFlagOfJobField.find(e.where());
+    if (flag != kFlagOfJobField.end()) throw CliError(flag->second + ": " + e.message());
+    throw CliError(e.what());
+  }
 }
 
 std::string derived_path(const std::string& base, const std::string& suffix) {
@@ -75,165 +128,114 @@ void write_csv(const std::string& path, const std::string& header, const std::ve
   if (!*out) throw CliError((path.empty() ? std::string("stdout") : path) + ": write failed");
 }
 
-nlohmann::json stats_json(const po::ProfileStats& s) {
+nlohmann::json stats_json(const ProfileStats& s) {
   return {{"evaluations", s.evaluations}, {"unconverged", s.unconverged}, {"max_error_estimate", s.max_error}};
 }
 
-void run(const PorosityArgs& a) {
-  using clock = std::chrono::steady_clock;
-  if (!(a.radius > 0) || !std::isfinite(a.radius)) throw CliError("--container-radius must be a positive number");
-  if (!(a.tolerance > 0) || !std::isfinite(a.tolerance)) throw CliError("--tolerance must be a positive number");
-  if (a.radii && a.bins) throw CliError("--radii and --bins are mutually exclusive");
-  if (a.radii < 0 || a.bins < 0 || a.axial < 0) throw CliError("--radii, --bins and --axial need a positive count");
-  if (a.method != "chord" && a.method != "kernel") throw CliError("--method must be 'chord' or 'kernel'");
-  int map_nr = 0, map_nz = 0;
-  if (!a.map.empty()) {
-    const auto [nr, nz] = parse_pair(a.map, "--map");
-    if (nr < 1 || nz < 1 || nr != std::floor(nr) || nz != std::floor(nz) || nr > 1e5 || nz > 1e5)
-      throw CliError("--map expects two positive integers NR,NZ, got '" + a.map + "'");
-    map_nr = static_cast<int>(nr);
-    map_nz = static_cast<int>(nz);
-  }
-  int radii = a.radii;
-  if (!radii && !a.bins && !a.axial && !map_nr) radii = 200;  // default: radial profile
-  const int kinds = (radii > 0) + (a.bins > 0) + (a.axial > 0) + (map_nr > 0);
-  if (kinds > 1 && a.output.empty())
-    throw CliError("several profiles requested: give -o FILE (the others go to FILE_axial.csv, FILE_map.csv)");
-  if (!a.plot.empty()) {
-    const auto ext = std::filesystem::path(a.plot).extension().string();
-    if (ext != ".svg" && ext != ".png") throw CliError("--plot file must end in .svg or .png: " + a.plot);
-    if (!radii && !a.bins && !a.axial) throw CliError("--plot needs --radii, --bins or --axial");
-  }
-
-  po::Packing pk;
-  try {
-    pk = po::read_packing(a.packing);
-  } catch (const po::PackingError& e) {
-    throw CliError(e.what());
-  }
-  if (pk.particles.empty()) throw CliError(a.packing + ": no particles");
-  po::Container c;
-  c.radius = a.radius;
-  if (!a.z_range.empty()) {
-    const auto [z0, z1] = parse_pair(a.z_range, "--z-range");
-    if (!(z1 > z0)) throw CliError("--z-range A,B needs A < B");
-    c.slab = {z0, z1};
-  } else {
-    double z0 = INFINITY, z1 = -INFINITY;
-    for (const auto& p : pk.particles) {
-      const double ext = std::abs(p.axis.z()) * p.half_length() + p.radius();
-      z0 = std::min(z0, p.centre.z() - ext);
-      z1 = std::max(z1, p.centre.z() + ext);
-    }
-    c.slab = {z0, z1};
-  }
-  po::ProfileOptions opt;
-  opt.tolerance = a.tolerance;
-  opt.threads = a.threads;
-  opt.method = a.method == "kernel" ? po::Method::kernel : po::Method::chord;
-
-  nlohmann::json js;
-  js["packing"] = a.packing;
-  js["particles"] = pk.particles.size();
-  js["particle_type"] = pk.spherocylinders ? "spherocylinder" : "sphere";
-  js["container_radius"] = c.radius;
-  js["z_range"] = {c.slab.z_min, c.slab.z_max};
-  js["tolerance"] = a.tolerance;
-  js["method"] = a.method;
-  js["outputs"] = nlohmann::json::object();
-
-  auto t0 = clock::now();
-  opt.progress = progress_bar("bulk");
-  const po::Bulk bulk = po::bulk_porosity(pk.particles, c, opt);
-  js["bulk_porosity"] = bulk.porosity;
-  js["solid_volume"] = bulk.solid_volume;
-  js["particles_in_container"] = bulk.stats.particles_used;
-  js["particles_clipped"] = bulk.stats.particles_clipped;
-  js["timings_s"]["bulk"] = std::chrono::duration<double>(clock::now() - t0).count();
-  if (bulk.stats.particles_clipped > 0)
-    std::cerr << "ssimarch: note: " << bulk.stats.particles_clipped
-              << " particles stick out of the container (radius or height range); only their parts inside are counted\n";
-  if (bulk.stats.particles_used < static_cast<long>(pk.particles.size()))
-    std::cerr << "ssimarch: note: " << pk.particles.size() - bulk.stats.particles_used
-              << " particles lie entirely outside the container and are ignored\n";
-
-  po::PlotSpec plot;
-  // The first profile goes to -o (or stdout); further ones to files named after -o.
+// Writes each profile as CSV (the first to -o or stdout, further ones to files named after -o) and
+// returns the summary's "outputs" entry.
+nlohmann::json write_profiles(const PorosityArgs& a, const PorosityJobResult& r) {
+  nlohmann::json outputs = nlohmann::json::object();
   int emitted = 0;
   auto next_out = [&](const char* suffix) { return emitted++ == 0 ? a.output : derived_path(a.output, suffix); };
-  long unconverged = bulk.stats.unconverged;
-  if (radii > 0 || a.bins > 0) {
-    t0 = clock::now();
-    opt.progress = progress_bar("radial");
+  auto entry = [](const std::string& path, const char* columns, nlohmann::json n) {
+    return nlohmann::json{{"file", path.empty() ? "-" : path}, {"columns", columns}, {"n", std::move(n)}};
+  };
+  if (r.radial) {
     const std::string path = next_out("radial");
-    if (radii > 0) {
-      const auto p = po::radial_profile(pk.particles, c, po::even_radii(c.radius, radii), opt);
-      write_csv(path, "r,porosity", {p.x, p.porosity});
-      js["outputs"]["radial"] = {{"file", path.empty() ? "-" : path}, {"columns", "r,porosity"}, {"n", radii}, {"stats", stats_json(p.stats)}};
-      plot.series.push_back({"exact radial porosity", p.x, p.porosity, "#1f77b4", false});
-      plot.xlabel = "r";
-      unconverged += p.stats.unconverged;
-    } else {
-      const auto p = po::bin_profile(pk.particles, c, po::even_edges(c.radius, a.bins), opt);
-      write_csv(path, "r_inner,r_outer,porosity", {p.x, p.x_upper, p.porosity});
-      js["outputs"]["bins"] = {{"file", path.empty() ? "-" : path}, {"columns", "r_inner,r_outer,porosity"}, {"n", a.bins}, {"stats", stats_json(p.stats)}};
-      std::vector<double> xs, ys;  // staircase
-      for (std::size_t k = 0; k < p.x.size(); ++k) {
-        xs.insert(xs.end(), {p.x[k], p.x_upper[k]});
-        ys.insert(ys.end(), {p.porosity[k], p.porosity[k]});
-      }
-      plot.series.push_back({"exact annular-bin porosity", xs, ys, "#1f77b4", false});
-      plot.xlabel = "r";
-      unconverged += p.stats.unconverged;
-    }
-    js["timings_s"]["radial"] = std::chrono::duration<double>(clock::now() - t0).count();
+    write_csv(path, "r,porosity", {r.radial->x, r.radial->porosity});
+    outputs["radial"] = entry(path, "r,porosity", r.radial->x.size());
+    outputs["radial"]["stats"] = stats_json(r.radial->stats);
+  } else if (r.bins) {
+    const std::string path = next_out("radial");
+    write_csv(path, "r_inner,r_outer,porosity", {r.bins->x, r.bins->x_upper, r.bins->porosity});
+    outputs["bins"] = entry(path, "r_inner,r_outer,porosity", r.bins->x.size());
+    outputs["bins"]["stats"] = stats_json(r.bins->stats);
   }
-  if (a.axial > 0) {
-    t0 = clock::now();
-    opt.progress = progress_bar("axial");
+  if (r.axial) {
     const std::string path = next_out("axial");
-    const auto p = po::axial_profile(pk.particles, c, po::slice_centres(c.slab.z_min, c.slab.z_max, a.axial), opt);
-    write_csv(path, "z,porosity", {p.x, p.porosity});
-    js["outputs"]["axial"] = {{"file", path.empty() ? "-" : path}, {"columns", "z,porosity"}, {"n", a.axial}, {"stats", stats_json(p.stats)}};
-    if (plot.series.empty()) {
-      plot.series.push_back({"exact axial porosity", p.x, p.porosity, "#1f77b4", false});
-      plot.xlabel = "z";
-    }
-    unconverged += p.stats.unconverged;
-    js["timings_s"]["axial"] = std::chrono::duration<double>(clock::now() - t0).count();
+    write_csv(path, "z,porosity", {r.axial->x, r.axial->porosity});
+    outputs["axial"] = entry(path, "z,porosity", r.axial->x.size());
+    outputs["axial"]["stats"] = stats_json(r.axial->stats);
   }
-  if (map_nr > 0) {
-    t0 = clock::now();
-    opt.progress = progress_bar("map");
+  if (r.map) {
     const std::string path = next_out("map");
-    std::vector<double> rs(map_nr);
-    for (int k = 0; k < map_nr; ++k) rs[k] = c.radius * (k + 0.5) / map_nr;
-    const auto m = po::porosity_map(pk.particles, c, rs, po::slice_centres(c.slab.z_min, c.slab.z_max, map_nz), opt);
     std::vector<double> cr, cz;
-    for (double z : m.z)
-      for (double r : m.r) cr.push_back(r), cz.push_back(z);
-    write_csv(path, "r,z,porosity", {cr, cz, m.porosity});
-    js["outputs"]["map"] = {{"file", path.empty() ? "-" : path}, {"columns", "r,z,porosity"}, {"n", {map_nr, map_nz}}};
-    js["timings_s"]["map"] = std::chrono::duration<double>(clock::now() - t0).count();
+    for (double z : r.map->z)
+      for (double rr : r.map->r) cr.push_back(rr), cz.push_back(z);
+    write_csv(path, "r,z,porosity", {cr, cz, r.map->porosity});
+    outputs["map"] = entry(path, "r,z,porosity", {r.map->r.size(), r.map->z.size()});
   }
-  js["unconverged_integrals"] = unconverged;
-  if (!a.plot.empty()) {
-    plot.title = "Porosity profile of " + std::filesystem::path(a.packing).filename().string();
-    plot.ylabel = "porosity";
-    try {
-      po::write_plot(a.plot, plot);
-    } catch (const std::exception& e) {
-      throw CliError(e.what(), 1);
-    }
+  return outputs;
+}
+
+// The first 1D profile against r (radial or bins) or else z.
+void write_plot(const PorosityArgs& a, const PorosityJobResult& r) {
+  ProfilePlot plot;
+  if (r.radial) {
+    plot.series.push_back({"exact radial porosity", r.radial->x, r.radial->porosity, "#1f77b4", false});
+    plot.xlabel = "r";
+  } else if (r.bins) {
+    plot.series.push_back(staircase("exact annular-bin porosity", r.bins->x, r.bins->x_upper, r.bins->porosity));
+    plot.xlabel = "r";
+  } else if (r.axial) {
+    plot.series.push_back({"exact axial porosity", r.axial->x, r.axial->porosity, "#1f77b4", false});
+    plot.xlabel = "z";
   }
+  plot.title = "Porosity profile of " + std::filesystem::path(a.packing).filename().string();
+  plot.ylabel = "porosity";
+  try {
+    write_profile_plot(a.plot, plot);
+  } catch (const InputError& e) {
+    throw CliError(e.what(), 1);
+  }
+}
+
+nlohmann::json summary(const PorosityArgs& a, const PorosityJobResult& r) {
+  nlohmann::json js;
+  js["packing"] = a.packing;
+  js["particles"] = r.particles;
+  js["particle_type"] = r.spherocylinders ? "spherocylinder" : "sphere";
+  js["container_radius"] = r.container.radius;
+  js["z_range"] = {r.container.slab.z_min, r.container.slab.z_max};
+  js["tolerance"] = a.tolerance;
+  js["method"] = a.method;
+  js["bulk_porosity"] = r.bulk.porosity;
+  js["solid_volume"] = r.bulk.solid_volume;
+  js["particles_in_container"] = r.bulk.stats.particles_used;
+  js["particles_clipped"] = r.bulk.stats.particles_clipped;
+  const std::pair<const char*, const std::optional<double>*> stages[] = {
+      {"bulk", &r.timings.bulk}, {"radial", &r.timings.radial}, {"axial", &r.timings.axial}, {"map", &r.timings.map}};
+  for (const auto& [name, t] : stages)
+    if (*t) js["timings_s"][name] = **t;
+  js["unconverged_integrals"] = r.unconverged;
+  return js;
+}
+
+void report(const PorosityJobResult& r) {
+  const Container& c = r.container;
+  if (r.bulk.stats.particles_clipped > 0)
+    std::cerr << "ssimarch: note: " << r.bulk.stats.particles_clipped
+              << " particles stick out of the container (radius or height range); only their parts inside are counted\n";
+  if (r.bulk.stats.particles_used < r.particles)
+    std::cerr << "ssimarch: note: " << r.particles - r.bulk.stats.particles_used
+              << " particles lie entirely outside the container and are ignored\n";
   std::ostringstream msg;
   msg.precision(10);
-  msg << "bulk porosity: " << bulk.porosity << " (R = " << c.radius << ", z in [" << c.slab.z_min << ", " << c.slab.z_max
-      << "], " << bulk.stats.particles_used << " particles)\n";
+  msg << "bulk porosity: " << r.bulk.porosity << " (R = " << c.radius << ", z in [" << c.slab.z_min << ", "
+      << c.slab.z_max << "], " << r.bulk.stats.particles_used << " particles)\n";
   std::cerr << msg.str();
-  if (unconverged > 0)
-    std::cerr << "ssimarch: warning: " << unconverged
+  if (r.unconverged > 0)
+    std::cerr << "ssimarch: warning: " << r.unconverged
               << " per-particle integrals did not reach the requested tolerance (see --summary)\n";
+}
+
+void run(const PorosityArgs& a) {
+  const PorosityJobResult r = run_job(make_job(a));
+  nlohmann::json js = summary(a, r);
+  js["outputs"] = write_profiles(a, r);
+  if (!a.plot.empty()) write_plot(a, r);
+  report(r);
   if (!a.summary.empty()) {
     std::ofstream o(a.summary);
     if (!o) throw CliError(a.summary + ": cannot open for writing");
@@ -258,18 +260,12 @@ void add_porosity_command(CLI::App& app) {
   sub->add_option("--axial", args->axial, "axial profile at N slice centres of the height range");
   sub->add_option("--map", args->map, "2D map eps(r, z) at NR x NZ cell centres (NR,NZ)");
   sub->add_option("-o,--output", args->output, "output CSV (default stdout)");
-  sub->add_option("--plot", args->plot, "plot the profile: FILE.svg or FILE.png");
+  sub->add_option("--plot", args->plot, "plot the profile: FILE.svg");
   sub->add_option("--summary", args->summary, "write a JSON summary (bulk porosity, timings, accuracy)");
   sub->add_option("--tolerance", args->tolerance, "absolute accuracy of each porosity value (default 1e-8)");
   sub->add_option("--threads", args->threads, "worker threads (default: all cores)");
   sub->add_option("--method", args->method, "chord (fast, default) or kernel (seed kernel integrated directly)");
-  sub->callback([args] {
-    try {
-      run(*args);
-    } catch (const std::invalid_argument& e) {  // library input checks: a user error, not internal
-      throw CliError(e.what());
-    }
-  });
+  sub->callback([args] { run(*args); });
 }
 
 }  // namespace ssimarch::cli

@@ -1,5 +1,7 @@
 #include "ssimarch/io/svg_plot.hpp"
 
+#include "ssimarch/io/svg_canvas.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -43,27 +45,29 @@ void fit(Panel* p) {
   p->ymax = cy + half;
 }
 
-void draw(std::ostream& out, const Panel& p, double ox, int size) {
+void draw(SvgCanvas& svg, const Panel& p, double ox, int size) {
   const double m = 36;  // margin for labels
   double w = size - 2 * m;
-  auto X = [&](double x) { return ox + m + (x - p.xmin) / (p.xmax - p.xmin) * w; };
-  auto Y = [&](double y) { return m + (p.ymax - y) / (p.ymax - p.ymin) * w; };
-  out << "<rect x='" << ox + m << "' y='" << m << "' width='" << w << "' height='" << w
-      << "' fill='white' stroke='#999'/>\n";
-  out << "<text x='" << ox + size / 2.0 << "' y='" << m - 14 << "' text-anchor='middle' font-size='14'>" << p.title << "</text>\n";
-  out << "<text x='" << ox + size / 2.0 << "' y='" << m + w + 24 << "' text-anchor='middle' font-size='12'>" << p.xlabel
-      << " [" << std::setprecision(3) << p.xmin << ", " << p.xmax << "]</text>\n";
-  out << "<text x='" << ox + 14 << "' y='" << m + w / 2 << "' text-anchor='middle' font-size='12' transform='rotate(-90 "
-      << ox + 14 << " " << m + w / 2 << ")'>" << p.ylabel << " [" << p.ymin << ", " << p.ymax << "]</text>\n";
-  out << std::setprecision(6);
+  const PlotBox box{ox + m, m, w, w, p.xmin, p.xmax, p.ymin, p.ymax};
+  svg.rect(ox + m, m, w, w, "fill='white' stroke='#999'");
+  svg.text(ox + size / 2.0, m - 14, "text-anchor='middle' font-size='14'") << xml_escape(p.title);
+  svg.end_text();
+  svg.text(ox + size / 2.0, m + w + 24, "text-anchor='middle' font-size='12'")
+      << p.xlabel << " [" << std::setprecision(3) << p.xmin << ", " << p.xmax << "]";
+  svg.end_text();
+  svg.vertical_text(ox + 14, m + w / 2, "text-anchor='middle' font-size='12'")
+      << p.ylabel << " [" << p.ymin << ", " << p.ymax << "]";
+  svg.end_text();
+  svg.stream() << std::setprecision(6);
   for (const auto& [c, l] : p.lines) {
     if (l.size() < 2) continue;
-    out << "<polyline fill='none' stroke-width='1.6' stroke='" << kColors[c % 8] << "' points='";
-    for (const Vec2& q : l) out << X(q.x()) << "," << Y(q.y()) << " ";
-    out << "'/>\n";
+    std::vector<Vec2> pixels;
+    pixels.reserve(l.size());
+    for (const Vec2& q : l) pixels.emplace_back(box.px(q.x()), box.py(q.y()));
+    svg.polyline(pixels, std::string("fill='none' stroke-width='1.6' stroke='") + kColors[c % 8] + "'");
   }
   for (const auto& [c, q] : p.ends)
-    out << "<circle cx='" << X(q.x()) << "' cy='" << Y(q.y()) << "' r='3.5' fill='none' stroke='" << kColors[c % 8] << "'/>\n";
+    svg.circle(box.px(q.x()), box.py(q.y()), 3.5, std::string("fill='none' stroke='") + kColors[c % 8] + "'");
 }
 
 }  // namespace
@@ -166,21 +170,24 @@ void write_svg(std::ostream& out, const IntersectionRun& run, const SvgOptions& 
 
   const int S = o.panel_size;
   const int width = S * static_cast<int>(panels.size()), height = S + 60 + 18 * static_cast<int>(std::min<std::size_t>(curves.size(), 8));
-  out << "<?xml version='1.0' encoding='UTF-8'?>\n<svg xmlns='http://www.w3.org/2000/svg' width='" << width << "' height='"
-      << height << "' font-family='sans-serif'>\n<rect width='100%' height='100%' fill='#fafafa'/>\n";
-  for (std::size_t i = 0; i < panels.size(); ++i) draw(out, panels[i], static_cast<double>(i * static_cast<std::size_t>(S)), S);
+  SvgCanvas svg(out, width, height, "font-family='sans-serif'", "#fafafa");
+  for (std::size_t i = 0; i < panels.size(); ++i) draw(svg, panels[i], static_cast<double>(i * static_cast<std::size_t>(S)), S);
   double y = S + 20;
-  out << "<text x='12' y='" << y << "' font-size='13' font-weight='bold'>" << run.spec.name << ": " << run.spec.surfaces[0] << " \u2229 "
-      << run.spec.surfaces[1] << " (" << to_string(P.kind()) << ", " << run.result.stats.points << " points, "
-      << std::setprecision(4) << run.result.stats.time_ms << " ms)</text>\n";
+  svg.text(12, y, "font-size='13' font-weight='bold'")
+      << xml_escape(run.spec.name) << ": " << xml_escape(run.spec.surfaces[0]) << " \u2229 "
+      << xml_escape(run.spec.surfaces[1]) << " (" << to_string(P.kind()) << ", " << run.result.stats.points
+      << " points, " << std::setprecision(4) << run.result.stats.time_ms << " ms)";
+  svg.end_text();
   for (std::size_t ci = 0; ci < std::min<std::size_t>(curves.size(), 8); ++ci) {
     y += 18;
     const auto& c = curves[ci];
-    out << "<text x='24' y='" << y << "' font-size='12' fill='" << kColors[ci % 8] << "'>curve " << ci << ": "
+    svg.text(24, y, std::string("font-size='12' fill='") + kColors[ci % 8] + "'")
+        << "curve " << ci << ": "
         << (c.closed ? "closed" : "open (" + std::string(to_string(c.start_end)) + " / " + std::string(to_string(c.end_end)) + ")")
-        << ", length " << std::setprecision(10) << c.length << ", " << c.points.size() << " points</text>\n";
+        << ", length " << std::setprecision(10) << c.length << ", " << c.points.size() << " points";
+    svg.end_text();
   }
-  out << "</svg>\n";
+  svg.finish();
 }
 
 }  // namespace ssimarch

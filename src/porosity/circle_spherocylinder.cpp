@@ -1,4 +1,5 @@
-// Seed 001 kernel; see the header for the method. Source: spec/circle-spherocylinder.md sections 2-7.
+// Seed 001 kernel; see the header for the method. Source: seed 001 (thesis
+// Appendix A §A.2-A.6, Fig. A.9); docs/math/circle_spherocylinder.md §1.
 #include "ssimarch/porosity/circle_spherocylinder.hpp"
 
 #include <algorithm>
@@ -7,23 +8,23 @@
 
 #include "ssimarch/porosity/polynomial_roots.hpp"
 
-namespace ssimarch::porosity {
+namespace ssimarch {
 
 const char* to_string(ArcCase c) {
   switch (c) {
-    case ArcCase::outside: return "outside";
-    case ArcCase::inside: return "inside";
-    case ArcCase::arcs: return "arcs";
-    case ArcCase::coaxial_on_surface: return "coaxial_on_surface";
-    case ArcCase::cap_section: return "cap_section";
-    case ArcCase::fallback: return "fallback";
+    case ArcCase::kOutside: return "outside";
+    case ArcCase::kInside: return "inside";
+    case ArcCase::kArcs: return "arcs";
+    case ArcCase::kCoaxialOnSurface: return "coaxial_on_surface";
+    case ArcCase::kCapSection: return "cap_section";
+    case ArcCase::kFallback: return "fallback";
   }
   return "?";
 }
 
 template <class T>
-T inside_margin(const SpherocylinderT<T>& s, const Vec3<T>& p) {
-  const Vec3<T> w = p - s.centre;
+T inside_margin(const SpherocylinderT<T>& s, const typename SpherocylinderT<T>::Point& p) {
+  const typename SpherocylinderT<T>::Point w = p - s.centre;
   const T h = s.half_length();
   const T lam = std::clamp(s.axis.dot(w), -h, h);
   return s.radius() - (w - lam * s.axis).norm();
@@ -34,9 +35,9 @@ namespace {
 template <class T>
 struct Crossings {
   std::array<T, 8> theta{};
-  std::array<Piece, 8> piece{};
+  std::array<SpherocylinderPart, 8> piece{};
   int n = 0;
-  void add(T t, Piece p) {
+  void add(T t, SpherocylinderPart p) {
     if (n < 8) {
       theta[n] = t;
       piece[n++] = p;
@@ -46,6 +47,7 @@ struct Crossings {
 
 template <class T>
 struct Kernel {
+  using Point = typename SpherocylinderT<T>::Point;
   const SpherocylinderT<T>& s;
   T z, r;
   const KernelTolerances& tol;
@@ -78,19 +80,19 @@ struct Kernel {
 
   // Region function (A.61/A.65): f, f+ or f- by the axial coordinate of the circle point.
   T region_value(T th) const {
-    const Vec3<T> p(r * std::cos(th), r * std::sin(th), z);
-    const Vec3<T> w = p - s.centre;
+    const Point p(r * std::cos(th), r * std::sin(th), z);
+    const Point w = p - s.centre;
     const T lam = s.axis.dot(w);
     const T q = s.diameter * s.diameter / T(4);
     switch (piece_of(lam, h, T(0))) {
-      case Piece::plus_cap: return q - (p - s.plus_cap()).squaredNorm();
-      case Piece::minus_cap: return q - (p - s.minus_cap()).squaredNorm();
-      case Piece::cylinder: break;
+      case SpherocylinderPart::kPlusCap: return q - (p - s.plus_cap()).squaredNorm();
+      case SpherocylinderPart::kMinusCap: return q - (p - s.minus_cap()).squaredNorm();
+      case SpherocylinderPart::kCylinder: break;
     }
     return q - w.squaredNorm() + lam * lam;
   }
 
-  // Cylindrical part (section 2): appends valid crossings; `all` receives every root (fallback).
+  // Cylindrical part (§A.2): appends valid crossings; `all` receives every root (fallback).
   void cylinder(Crossings<T>& valid, Crossings<T>& all) const {
     const T ux = s.axis.x(), uy = s.axis.y();
     const T rx = s.centre.x(), ry = s.centre.y();
@@ -122,21 +124,21 @@ struct Kernel {
     }
     const T lam_pi = B - ux * r;  // A.26
     for (int k = 0; k < n_pi; ++k) {
-      all.add(pi, Piece::cylinder);
-      if (piece_of(lam_pi, h, band) == Piece::cylinder) valid.add(pi, Piece::cylinder);  // flowchart fix
+      all.add(pi, SpherocylinderPart::kCylinder);
+      if (piece_of(lam_pi, h, band) == SpherocylinderPart::kCylinder) valid.add(pi, SpherocylinderPart::kCylinder);  // flowchart fix
     }
     for (int k = 0; k < phis.count; ++k) {
       const T th = theta_of(phis.x[k]);
-      all.add(th, Piece::cylinder);
-      if (piece_of(lambda_phi(phis.x[k]), h, band) == Piece::cylinder) valid.add(th, Piece::cylinder);
+      all.add(th, SpherocylinderPart::kCylinder);
+      if (piece_of(lambda_phi(phis.x[k]), h, band) == SpherocylinderPart::kCylinder) valid.add(th, SpherocylinderPart::kCylinder);
     }
   }
 
-  // One hemispherical cap (sections 3-4). Returns true with `full` set when the circle lies on the
+  // One hemispherical cap (§A.3-A.4). Returns true with `full` set when the circle lies on the
   // cap sphere (A.38 / A.52).
   bool cap(int sgn, Crossings<T>& valid, Crossings<T>& all, bool& full) const {
-    const Vec3<T> rc = sgn > 0 ? s.plus_cap() : s.minus_cap();  // A.29 / A.47
-    const Piece want = sgn > 0 ? Piece::plus_cap : Piece::minus_cap;
+    const Point rc = sgn > 0 ? s.plus_cap() : s.minus_cap();  // A.29 / A.47
+    const SpherocylinderPart want = sgn > 0 ? SpherocylinderPart::kPlusCap : SpherocylinderPart::kMinusCap;
     const T stol = T(tol.special) * scale;
     const T q = s.diameter * s.diameter / T(4);
     const T dz = z - rc.z();
@@ -176,13 +178,13 @@ struct Kernel {
   // Arcs between all candidate roots, each classified by the exact point-in-solid test.
   CircleSpherocylinderResult<T> classify_all(const Crossings<T>& all) const {
     CircleSpherocylinderResult<T> res;
-    res.which = ArcCase::fallback;
+    res.which = ArcCase::kFallback;
     std::array<T, 9> t{};
     const int n = all.n;
     for (int k = 0; k < n; ++k) t[k] = all.theta[k];
-    detail::small_sort(t.data(), n);
+    internal::small_sort(t.data(), n);
     auto inside_at = [&](T th) {
-      return inside_margin(s, Vec3<T>(r * std::cos(th), r * std::sin(th), z)) > T(0);
+      return inside_margin(s, Point(r * std::cos(th), r * std::sin(th), z)) > T(0);
     };
     if (n == 0) {
       res.inside_length = inside_at(T(0)) ? T(2) * pi * r : T(0);
@@ -209,7 +211,7 @@ struct Kernel {
     if (std::abs(s.centre.x()) <= stol && std::abs(s.centre.y()) <= stol && std::abs(s.axis.x()) <= T(tol.special) &&
         std::abs(s.axis.y()) <= T(tol.special) && std::abs(r - s.radius()) <= stol) {
       if (std::abs(z - s.centre.z()) <= h) {
-        res.which = ArcCase::coaxial_on_surface;
+        res.which = ArcCase::kCoaxialOnSurface;
         res.inside_length = T(2) * pi * r;
         return res;
       }
@@ -218,9 +220,9 @@ struct Kernel {
     cylinder(valid, all);
     bool full = false;
     for (int sgn : {+1, -1}) {
-      if (valid.n >= 4) break;  // at most four crossings (section 2, oracle s001.max_crossings)
+      if (valid.n >= 4) break;  // at most four crossings (§A.2, oracle s001.max_crossings)
       if (cap(sgn, valid, all, full) && full) {
-        res.which = ArcCase::cap_section;
+        res.which = ArcCase::kCapSection;
         res.inside_length = T(2) * pi * r;
         return res;
       }
@@ -228,7 +230,7 @@ struct Kernel {
     if (!consistent_count(valid.n)) return classify_all(all);
     // Sort crossings with their pieces.
     std::array<int, 4> idx{0, 1, 2, 3};
-    detail::small_sort(idx.data(), valid.n, [&](int i, int j) { return valid.theta[i] < valid.theta[j]; });
+    internal::small_sort(idx.data(), valid.n, [&](int i, int j) { return valid.theta[i] < valid.theta[j]; });
     res.count = valid.n;
     for (int k = 0; k < valid.n; ++k) {
       res.crossing_angles[k] = valid.theta[idx[k]];
@@ -244,7 +246,7 @@ struct Kernel {
       f = region_value(pi);  // A.61
       if (negligible(f, ctol)) pi_in = true;  // theta = pi (numerically) on the surface: use theta_m
       else {
-        res.which = res.count == 0 ? (region_inside(f) ? ArcCase::inside : ArcCase::outside) : ArcCase::arcs;
+        res.which = res.count == 0 ? (region_inside(f) ? ArcCase::kInside : ArcCase::kOutside) : ArcCase::kArcs;
         res.inside_length = region_inside(f) ? (T(2) * pi - bar) * r : bar * r;  // A.62
         return res;
       }
@@ -252,7 +254,7 @@ struct Kernel {
     const T thm = res.count > 0 ? (th[0] - pi) / T(2) : T(0);  // A.63
     f = region_value(thm);                                   // A.64-A.65
     res.theta_m_test = true;
-    res.which = res.count == 0 ? (region_inside(f) ? ArcCase::inside : ArcCase::outside) : ArcCase::arcs;
+    res.which = res.count == 0 ? (region_inside(f) ? ArcCase::kInside : ArcCase::kOutside) : ArcCase::kArcs;
     res.inside_length = region_inside(f) ? (T(2) * pi - bar) * r : bar * r;  // A.66
     return res;
   }
@@ -271,7 +273,7 @@ template CircleSpherocylinderResult<double> circle_spherocylinder(const Spherocy
 template CircleSpherocylinderResult<long double> circle_spherocylinder(const SpherocylinderT<long double>&,
                                                                        long double, long double,
                                                                        const KernelTolerances&);
-template double inside_margin(const SpherocylinderT<double>&, const Vec3<double>&);
-template long double inside_margin(const SpherocylinderT<long double>&, const Vec3<long double>&);
+template double inside_margin(const SpherocylinderT<double>&, const Vec3&);
+template long double inside_margin(const SpherocylinderT<long double>&, const SpherocylinderT<long double>::Point&);
 
-}  // namespace ssimarch::porosity
+}  // namespace ssimarch

@@ -8,15 +8,18 @@
 #include <cmath>
 #include <numbers>
 #include <random>
-#include <stdexcept>
+#include <sstream>
+#include <string>
+
+#include "ssimarch/core/error.hpp"
 
 #include "spatial_grid.hpp"
 
-namespace ssimarch::porosity {
+namespace ssimarch {
 
-double segment_distance(const Vec3<double>& p0, const Vec3<double>& p1, const Vec3<double>& q0,
-                        const Vec3<double>& q1) {
-  const Vec3<double> d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
+double segment_distance(const Vec3& p0, const Vec3& p1, const Vec3& q0,
+                        const Vec3& q1) {
+  const Vec3 d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
   const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
   const double tiny = 1e-300;
   double s = 0, t = 0;
@@ -47,14 +50,31 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
+std::string number(double v) {
+  std::ostringstream o;
+  o << v;
+  return o.str();
+}
+
+// Checks shared by both generators; errors are located by the option's field name.
+void check_bed(double container_radius, double diameter, long count) {
+  if (!(container_radius > 0) || !std::isfinite(container_radius))
+    throw InputError("container_radius", "must be a finite number > 0 (got " + number(container_radius) + ")");
+  if (!(diameter > 0) || !std::isfinite(diameter))
+    throw InputError("diameter", "must be a finite number > 0 (got " + number(diameter) + ")");
+  if (count < 0) throw InputError("count", "must be >= 0 (got " + std::to_string(count) + ")");
+  if (diameter >= 2 * container_radius)
+    throw InputError("diameter", "the particle diameter " + number(diameter) +
+                                     " must be smaller than the container diameter " + number(2 * container_radius));
+}
+
 class Deposition {
  public:
   explicit Deposition(const SphereBedOptions& o)
       : o_(o), dmax_(std::max(o.diameter, o.diameter_max)), grid_(std::max(o.diameter, o.diameter_max)), rng_(o.seed) {
-    if (!(o.container_radius > 0) || !(o.diameter > 0) || o.count < 0)
-      throw std::invalid_argument("drop_and_roll_spheres: need container radius > 0, diameter > 0, count >= 0");
-    if (o.diameter >= 2 * o.container_radius)
-      throw std::invalid_argument("drop_and_roll_spheres: the sphere diameter must be smaller than the container diameter");
+    check_bed(o.container_radius, o.diameter, o.count);
+    if (o.diameter_max != 0 && !(o.diameter_max >= o.diameter && std::isfinite(o.diameter_max)))
+      throw InputError("diameter_max", "must be 0 or a finite number >= diameter (got " + number(o.diameter_max) + ")");
     tol_ = o.contact_tolerance * o.diameter;
   }
 
@@ -64,7 +84,7 @@ class Deposition {
       const double d = o_.diameter_max > o_.diameter ? o_.diameter + (o_.diameter_max - o_.diameter) * U(rng_) : o_.diameter;
       const double a = d / 2, Rw = o_.container_radius - a;
       const double rr = Rw * std::sqrt(U(rng_)), ph = 2 * kPi * U(rng_);
-      Vec3<double> p(rr * std::cos(ph), rr * std::sin(ph), top_ + 2 * dmax_);
+      Vec3 p(rr * std::cos(ph), rr * std::sin(ph), top_ + 2 * dmax_);
       p.z() = fall(p, a, p.z());
       settle(p, a);
       placed_.push_back(make_sphere(p, d));
@@ -83,12 +103,12 @@ class Deposition {
 
  private:
   struct Constraint {
-    Vec3<double> n;
+    Vec3 n;
     int kind;  // 0 sphere, 1 wall
     int id;
   };
 
-  double fall(const Vec3<double>& p, double a, double z_start) const {
+  double fall(const Vec3& p, double a, double z_start) const {
     double best = a;  // floor
     const double amax = dmax_ / 2;
     for (long k = grid_.index(z_start + a + amax); k >= grid_.index(0.0) - 1; --k) {
@@ -105,28 +125,28 @@ class Deposition {
     return std::min(best, z_start);
   }
 
-  void gather(const Vec3<double>& p, double a) {
+  void gather(const Vec3& p, double a) {
     nb_.clear();
     nb_centre_ = p;
     grid_.visit(p, a + dmax_ / 2 + dmax_, [&](int j) { nb_.push_back(j); });
   }
 
-  double gap_sphere(const Vec3<double>& p, double a, int j) const {
+  double gap_sphere(const Vec3& p, double a, int j) const {
     return (p - placed_[j].centre).norm() - (a + placed_[j].radius());
   }
-  double gap_wall(const Vec3<double>& p, double a) const {
+  double gap_wall(const Vec3& p, double a) const {
     return (o_.container_radius - a) - std::hypot(p.x(), p.y());
   }
 
   // Pushes p out of the constraints in S that it violates (few sweeps of one-sided projections; a
   // tangential step that lifts the sphere off a contact is left to the next fall).
-  void project(Vec3<double>& p, double a, const std::vector<Constraint>& S) const {
+  void project(Vec3& p, double a, const std::vector<Constraint>& S) const {
     for (int sweep = 0; sweep < 4; ++sweep)
       for (const auto& c : S) {
         if (c.kind == 0) {
-          const Vec3<double>& cc = placed_[c.id].centre;
+          const Vec3& cc = placed_[c.id].centre;
           const double D = a + placed_[c.id].radius();
-          const Vec3<double> w = p - cc;
+          const Vec3 w = p - cc;
           const double nw = w.norm();
           if (nw > 0 && nw < D) p = cc + w * (D / nw);
         } else {
@@ -139,7 +159,7 @@ class Deposition {
       }
   }
 
-  double min_gap(const Vec3<double>& p, double a) const {
+  double min_gap(const Vec3& p, double a) const {
     double g = std::min(gap_wall(p, a), p.z() - a);
     for (int j : nb_) g = std::min(g, gap_sphere(p, a, j));
     return g;
@@ -147,10 +167,10 @@ class Deposition {
 
   // Steepest feasible descent: minimise |d - g|^2 subject to n_k . d >= 0 (KKT by active-set
   // enumeration over at most three constraints). Returns the equality set used.
-  Vec3<double> descent(const std::vector<Constraint>& act, std::vector<Constraint>& S) const {
-    const Vec3<double> g(0, 0, -1);
+  Vec3 descent(const std::vector<Constraint>& act, std::vector<Constraint>& S) const {
+    const Vec3 g(0, 0, -1);
     const int m = std::min<int>(static_cast<int>(act.size()), 6);
-    auto valid = [&](const std::vector<int>& idx, Vec3<double>& d) {
+    auto valid = [&](const std::vector<int>& idx, Vec3& d) {
       const int k = static_cast<int>(idx.size());
       d = g;
       if (k > 0) {
@@ -168,7 +188,7 @@ class Deposition {
         if (std::find(idx.begin(), idx.end(), j) == idx.end() && act[j].n.dot(d) < -1e-12) return false;
       return true;
     };
-    Vec3<double> d;
+    Vec3 d;
     std::vector<int> idx;
     if (valid(idx, d)) return d;
     for (int i = 0; i < m; ++i)
@@ -180,20 +200,20 @@ class Deposition {
       for (int j = i + 1; j < m; ++j)
         for (int k = j + 1; k < m; ++k)
           if (valid({i, j, k}, d)) return S = {act[i], act[j], act[k]}, d;
-    return Vec3<double>::Zero();  // over-constrained: treat as stable
+    return Vec3::Zero();  // over-constrained: treat as stable
   }
 
-  void settle(Vec3<double>& p, double a) {
+  void settle(Vec3& p, double a) {
     gather(p, a);
     double h = 0.05 * o_.diameter;
-    Vec3<double> prev_dir = Vec3<double>::Zero();
+    Vec3 prev_dir = Vec3::Zero();
     for (int it = 0; it < 20000; ++it) {
       if (p.z() - a <= tol_) return;  // resting on the floor
       if ((p - nb_centre_).norm() > dmax_ / 2) gather(p, a);
       std::vector<Constraint> act;
       for (int j : nb_)
         if (gap_sphere(p, a, j) <= tol_) act.push_back({(p - placed_[j].centre).normalized(), 0, j});
-      if (gap_wall(p, a) <= tol_) act.push_back({Vec3<double>(-p.x(), -p.y(), 0).normalized(), 1, -1});
+      if (gap_wall(p, a) <= tol_) act.push_back({Vec3(-p.x(), -p.y(), 0).normalized(), 1, -1});
       if (act.empty()) {
         const double z = fall(p, a, p.z());
         if (z < p.z()) {
@@ -202,19 +222,19 @@ class Deposition {
         }
       }
       std::vector<Constraint> S;
-      const Vec3<double> d = descent(act, S);
+      const Vec3 d = descent(act, S);
       const double nd = d.norm();
       if (nd < 1e-10) return;  // gravity balanced by the contacts: stable
-      const Vec3<double> dir = d / nd;
+      const Vec3 dir = d / nd;
       if (dir.dot(prev_dir) < 0) h *= 0.5;  // overshot the bottom of a groove
       if (h < 1e-9 * o_.diameter) return;
       prev_dir = dir;
       auto trial = [&](double s) {
-        Vec3<double> q = p + s * dir;
+        Vec3 q = p + s * dir;
         project(q, a, S);
         return q;
       };
-      Vec3<double> q = trial(h);
+      Vec3 q = trial(h);
       if (min_gap(q, a) < -tol_) {
         // First new contact along the step, by bisection on the step length.
         double lo = 0, hi = h;
@@ -250,11 +270,11 @@ class Deposition {
 
   SphereBedOptions o_;
   double dmax_, tol_ = 0, top_ = 0;
-  detail::SpatialGrid grid_;
+  internal::SpatialGrid grid_;
   std::mt19937_64 rng_;
   std::vector<Particle> placed_;
   std::vector<int> nb_;
-  Vec3<double> nb_centre_ = Vec3<double>::Zero();
+  Vec3 nb_centre_ = Vec3::Zero();
   long unstable_ = 0;
 };
 
@@ -265,17 +285,18 @@ std::vector<Particle> drop_and_roll_spheres(const SphereBedOptions& opt, Generat
 }
 
 std::vector<Particle> rsa_spherocylinders(const SpherocylinderRsaOptions& o, GeneratorReport* report) {
-  if (!(o.container_radius > 0) || !(o.diameter > 0) || !(o.length >= 0) || o.count < 0)
-    throw std::invalid_argument("rsa_spherocylinders: need container radius > 0, diameter > 0, length >= 0, count >= 0");
-  if (o.diameter >= 2 * o.container_radius)
-    throw std::invalid_argument("rsa_spherocylinders: the particle diameter must be smaller than the container diameter");
+  check_bed(o.container_radius, o.diameter, o.count);
+  if (!(o.length >= 0) || !std::isfinite(o.length))
+    throw InputError("length", "must be a finite number >= 0 (got " + number(o.length) + ")");
+  if (!(o.height >= 0) || !std::isfinite(o.height))
+    throw InputError("height", "must be a finite number >= 0 (got " + number(o.height) + ")");
+  if (!(o.target_solid_fraction > 0 && o.target_solid_fraction < 1))
+    throw InputError("target_solid_fraction", "must be in (0, 1) (got " + number(o.target_solid_fraction) + ")");
   Particle proto;
   proto.diameter = o.diameter;
   proto.length = o.length;
   double H = o.height;
   if (H <= 0) {
-    if (!(o.target_solid_fraction > 0 && o.target_solid_fraction < 1))
-      throw std::invalid_argument("rsa_spherocylinders: target solid fraction must be in (0, 1)");
     H = o.count * proto.volume() / (o.target_solid_fraction * kPi * o.container_radius * o.container_radius);
     H = std::max(H, o.diameter + o.length);
   }
@@ -283,18 +304,18 @@ std::vector<Particle> rsa_spherocylinders(const SpherocylinderRsaOptions& o, Gen
   std::mt19937_64 rng(o.seed);
   std::uniform_real_distribution<double> U(0, 1);
   std::normal_distribution<double> N;
-  detail::SpatialGrid grid(o.diameter + o.length);
+  internal::SpatialGrid grid(o.diameter + o.length);
   std::vector<Particle> out;
   long attempts = 0;
   const long max_attempts = o.max_attempts_per_particle * std::max(1L, o.count);
   while (static_cast<long>(out.size()) < o.count && attempts < max_attempts) {
     ++attempts;
-    Vec3<double> u(N(rng), N(rng), N(rng));
+    Vec3 u(N(rng), N(rng), N(rng));
     if (!(u.norm() > 0)) continue;
     u.normalize();
     const double rr = Rw * std::sqrt(U(rng)), ph = 2 * kPi * U(rng);
-    const Vec3<double> c(rr * std::cos(ph), rr * std::sin(ph), H * U(rng));
-    const Vec3<double> e0 = c - h * u, e1 = c + h * u;
+    const Vec3 c(rr * std::cos(ph), rr * std::sin(ph), H * U(rng));
+    const Vec3 e0 = c - h * u, e1 = c + h * u;
     bool ok = std::hypot(e0.x(), e0.y()) <= Rw && std::hypot(e1.x(), e1.y()) <= Rw;
     ok = ok && std::min(e0.z(), e1.z()) >= a && std::max(e0.z(), e1.z()) <= H - a;
     if (!ok) continue;
@@ -319,4 +340,4 @@ std::vector<Particle> rsa_spherocylinders(const SpherocylinderRsaOptions& o, Gen
   return out;
 }
 
-}  // namespace ssimarch::porosity
+}  // namespace ssimarch

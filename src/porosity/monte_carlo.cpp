@@ -10,20 +10,20 @@
 #include "spatial_grid.hpp"
 #include "ssimarch/porosity/circle_spherocylinder.hpp"
 
-namespace ssimarch::porosity {
+namespace ssimarch {
 
 MonteCarloProfile monte_carlo_radial(std::span<const Particle> particles, const Container& c,
                                      std::span<const double> radii, const MonteCarloOptions& opt) {
   double reach = 0;
   for (const Particle& p : particles) reach = std::max(reach, p.radius() + p.half_length());
-  detail::SpatialGrid grid(std::max(2 * reach, 1e-12));
+  internal::SpatialGrid grid(std::max(2 * reach, 1e-12));
   for (std::size_t i = 0; i < particles.size(); ++i) grid.insert(particles[i].centre, static_cast<int>(i));
   MonteCarloProfile out;
   out.x.assign(radii.begin(), radii.end());
   out.porosity.assign(radii.size(), 0.0);
   out.std_error.assign(radii.size(), 0.0);
   const double pi = std::numbers::pi;
-  detail::parallel_chunks(
+  internal::parallel_chunks(
       static_cast<int>(radii.size()), opt.threads,
       [&](int j) {
         std::mt19937_64 rng(opt.seed * 1000003ULL + static_cast<std::uint64_t>(j));
@@ -32,7 +32,7 @@ MonteCarloProfile monte_carlo_radial(std::span<const Particle> particles, const 
         const double r = radii[j];
         for (long k = 0; k < opt.samples_per_radius; ++k) {
           const double th = 2 * pi * U(rng);
-          const Vec3<double> q(r * std::cos(th), r * std::sin(th), c.slab.z_min + (c.slab.z_max - c.slab.z_min) * U(rng));
+          const Vec3 q(r * std::cos(th), r * std::sin(th), c.slab.z_min + (c.slab.z_max - c.slab.z_min) * U(rng));
           bool hit = false;
           grid.visit(q, reach, [&](int i) {
             if (!hit && inside_margin(particles[i], q) >= 0) hit = true;
@@ -48,4 +48,4 @@ MonteCarloProfile monte_carlo_radial(std::span<const Particle> particles, const 
   return out;
 }
 
-}  // namespace ssimarch::porosity
+}  // namespace ssimarch

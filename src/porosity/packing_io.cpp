@@ -8,9 +8,11 @@
 #include <optional>
 #include <sstream>
 
+#include "ssimarch/core/error.hpp"
+
 #include "ssimarch/porosity/packing.hpp"
 
-namespace ssimarch::porosity {
+namespace ssimarch {
 
 namespace {
 
@@ -45,6 +47,25 @@ std::vector<std::string> split(const std::string& line, char sep) {
   return out;
 }
 
+// 1-based column of the first character of field k of `line` (fields as split() makes them).
+std::size_t field_column(const std::string& line, char sep, std::size_t k) {
+  std::size_t pos = 0;
+  auto skip_space = [&] {
+    while (pos < line.size() && std::isspace(static_cast<unsigned char>(line[pos]))) ++pos;
+  };
+  for (std::size_t i = 0; i < k && pos < line.size(); ++i) {
+    if (sep == ' ') {
+      skip_space();
+      while (pos < line.size() && !std::isspace(static_cast<unsigned char>(line[pos]))) ++pos;
+    } else {
+      pos = line.find(sep, pos);
+      pos = pos == std::string::npos ? line.size() : pos + 1;
+    }
+  }
+  skip_space();
+  return pos + 1;
+}
+
 std::optional<double> parse_number(const std::string& t) {
   double v = 0;
   const char* b = t.data();
@@ -59,17 +80,24 @@ std::optional<double> parse_number(const std::string& t) {
 class Errors {
  public:
   explicit Errors(std::string name) : name_(std::move(name)) {}
-  void add(long line, const std::string& what) {
-    if (count_++ < kMaxReported) msg_ += "\n  " + name_ + ":" + std::to_string(line) + ": " + what;
+  void add(long line, const std::string& what) { add_at(location(line), what); }
+  void add(long line, std::size_t column, const std::string& what) { add_at(location(line, column), what); }
+  void add_at(const std::string& where, const std::string& what) {
+    if (count_++ < kMaxReported) msg_ += "\n  " + where + ": " + what;
   }
   void raise_if_any() const {
     if (count_ == 0) return;
-    std::string m = std::to_string(count_) + " bad row" + (count_ > 1 ? "s" : "") + " in " + name_ + ":" + msg_;
+    std::string m = std::to_string(count_) + " bad row" + (count_ > 1 ? "s" : "") + ":" + msg_;
     if (count_ > kMaxReported) m += "\n  ... and " + std::to_string(count_ - kMaxReported) + " more";
-    throw PackingError(m);
+    throw InputError(name_, m);
   }
-  [[noreturn]] void fatal(long line, const std::string& what) const {
-    throw PackingError(name_ + ":" + std::to_string(line) + ": " + what);
+  [[noreturn]] void fatal(long line, const std::string& what) const { throw InputError(location(line), what); }
+  /// "file:line" or "file:line:column" (column 1-based, in characters of the line as read).
+  std::string location(long line, std::size_t column = 0) const {
+    std::string where = name_;
+    where.append(":").append(std::to_string(line));
+    if (column) where.append(":").append(std::to_string(column));
+    return where;
   }
 
  private:
@@ -139,7 +167,8 @@ Packing read_packing_csv(std::istream& in, const std::string& name) {
     auto get = [&](const char* c, double& v) {
       const auto x = parse_number(f[col.at(c)]);
       if (!x) {
-        err.add(ln, std::string("column '") + c + "': not a number: '" + f[col.at(c)] + "'");
+        err.add(ln, field_column(line, ',', col.at(c)), std::string("column '") + c + "': not a number: '" +
+                                                             f[col.at(c)] + "'");
         return false;
       }
       v = *x;
@@ -219,13 +248,21 @@ Packing read_lammps_dump(std::istream& in, const std::string& name) {
         bool ok = true;
         for (int k = 0; k < 3 && ok; ++k) {
           const auto v = parse_number(f[col[cx[k]]]);
-          if (!v) { err.add(ln, "column '" + cx[k] + "': not a number: '" + f[col[cx[k]]] + "'"); ok = false; break; }
+          if (!v) {
+            err.add(ln, field_column(line, ' ', col[cx[k]]),
+                    "column '" + cx[k] + "': not a number: '" + f[col[cx[k]]] + "'");
+            ok = false;
+            break;
+          }
           p.centre[k] = scaled ? lo[k] + *v * (hi[k] - lo[k]) : *v;
         }
         if (!ok) continue;
         const std::string rc = has_r ? "radius" : "diameter";
         const auto v = parse_number(f[col[rc]]);
-        if (!v) { err.add(ln, "column '" + rc + "': not a number: '" + f[col[rc]] + "'"); continue; }
+        if (!v) {
+          err.add(ln, field_column(line, ' ', col[rc]), "column '" + rc + "': not a number: '" + f[col[rc]] + "'");
+          continue;
+        }
         p.diameter = has_r ? 2 * *v : *v;
         if (const std::string w = validate(p, false); !w.empty()) { err.add(ln, w); continue; }
         snap.particles.push_back(p);
@@ -235,13 +272,13 @@ Packing read_lammps_dump(std::istream& in, const std::string& name) {
     }
   }
   err.raise_if_any();
-  if (!have) throw PackingError(name + ": no 'ITEM: ATOMS' section found (not a LAMMPS dump?)");
+  if (!have) throw InputError(name, "no 'ITEM: ATOMS' section found (not a LAMMPS dump?)");
   return last;
 }
 
 Packing read_packing(const std::filesystem::path& path) {
   std::ifstream in(path);
-  if (!in) throw PackingError(path.string() + ": cannot open file");
+  if (!in) throw InputError(path.string(), "cannot open file");
   std::string first;
   while (std::getline(in, first) && trim(first).empty()) {
   }
@@ -268,4 +305,4 @@ void write_packing_csv(std::ostream& out, std::span<const Particle> ps) {
   }
 }
 
-}  // namespace ssimarch::porosity
+}  // namespace ssimarch

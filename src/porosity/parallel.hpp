@@ -10,7 +10,7 @@
 #include <thread>
 #include <vector>
 
-namespace ssimarch::porosity::detail {
+namespace ssimarch::internal {
 
 inline unsigned worker_count(unsigned requested) {
   if (requested > 0) return requested;
@@ -50,4 +50,4 @@ inline void parallel_chunks(int chunks, unsigned threads, const std::function<vo
   if (error) std::rethrow_exception(error);
 }
 
-}  // namespace ssimarch::porosity::detail
+}  // namespace ssimarch::internal

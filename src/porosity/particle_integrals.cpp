@@ -10,7 +10,7 @@
 #include "ssimarch/porosity/polynomial_roots.hpp"
 #include "ssimarch/porosity/sphere_arc.hpp"
 
-namespace ssimarch::porosity {
+namespace ssimarch {
 
 namespace {
 constexpr double kPi = std::numbers::pi;
@@ -34,13 +34,13 @@ long kernel_signature(const Particle& p, double z, double r, const KernelToleran
   return static_cast<long>(res.which) * 125 + n[0] * 25 + n[1] * 5 + n[2];
 }
 
-QuadResult lateral_area(const ParticleShape& s, double r, const Slab& slab, double abs_tol, Method method,
+QuadResult lateral_area(const ParticleShape& s, double r, const Slab& slab, double abs_tol, ProfileMethod method,
                         const KernelTolerances& tol) {
   QuadResult out;
   if (!(r > 0) || r < s.rho_min() || r > s.rho_max()) return out;
   const double z0 = std::max(slab.z_min, s.z_min()), z1 = std::min(slab.z_max, s.z_max());
   if (!(z1 > z0)) return out;
-  if (method == Method::kernel) {
+  if (method == ProfileMethod::kKernel) {
     const Particle& p = s.particle();
     return integrate_piecewise([&](double z) { return arc_length(p, z, r, tol, false); },
                                [&](double z) { return kernel_signature(p, z, r, tol); }, z0, z1, abs_tol,
@@ -82,7 +82,7 @@ QuadResult lateral_area(const ParticleShape& s, double r, const Slab& slab, doub
       while (t > arcs[k].end) t -= 2 * kPi;
       if (t > arcs[k].begin && t < arcs[k].end) br[nb++] = t;
     }
-    detail::small_sort(br.data() + 1, nb - 1);
+    internal::small_sort(br.data() + 1, nb - 1);
     br[nb++] = arcs[k].end;
     for (int j = 0; j + 1 < nb; ++j) {
       const double w = br[j + 1] - br[j];
@@ -98,7 +98,7 @@ QuadResult lateral_area(const ParticleShape& s, double r, const Slab& slab, doub
 }
 
 QuadResult shell_volume(const ParticleShape& s, double r0, double r1, const Slab& slab, double abs_tol,
-                        Method method, const KernelTolerances& tol) {
+                        ProfileMethod method, const KernelTolerances& tol) {
   QuadResult out;
   r0 = std::max(r0, s.rho_min());
   r1 = std::min(r1, s.rho_max());
@@ -117,13 +117,13 @@ QuadResult shell_volume(const ParticleShape& s, double r0, double r1, const Slab
   auto L = [&](double r) {
     const QuadResult q = lateral_area(s, r, slab, inner, method, tol);
     inner_stats.evaluations += q.evaluations;
-    if (q.status != QuadStatus::converged) inner_stats.status = q.status;
+    if (q.status != QuadStatus::kConverged) inner_stats.status = q.status;
     return q.value;
   };
   for (std::size_t k = 0; k + 1 < br.size(); ++k)
     out += integrate_sqrt_ends(L, br[k], br[k + 1], 0.9 * abs_tol * (br[k + 1] - br[k]) / (r1 - r0));
   out.evaluations += inner_stats.evaluations;
-  if (inner_stats.status != QuadStatus::converged) out.status = inner_stats.status;
+  if (inner_stats.status != QuadStatus::kConverged) out.status = inner_stats.status;
   return out;
 }
 
@@ -184,7 +184,7 @@ double slice_area_unclipped(const Particle& p, double z) {
 }
 
 QuadResult slice_area(const ParticleShape& s, double z, double R, double abs_tol, const KernelTolerances& tol,
-                      Method method) {
+                      ProfileMethod method) {
   QuadResult out;
   const Particle& p = s.particle();
   if (z <= s.z_min() || z >= s.z_max()) return out;
@@ -194,7 +194,7 @@ QuadResult slice_area(const ParticleShape& s, double z, double R, double abs_tol
     out.evaluations = 1;
     return out;
   }
-  if (method == Method::chord && s.rho_max() <= R) {
+  if (method == ProfileMethod::kChord && s.rho_max() <= R) {
     out.value = slice_area_unclipped(p, z);
     out.evaluations = 1;
     return out;
@@ -206,4 +206,4 @@ QuadResult slice_area(const ParticleShape& s, double z, double R, double abs_tol
                              abs_tol, kKernelSamples);
 }
 
-}  // namespace ssimarch::porosity
+}  // namespace ssimarch

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace ssimarch::porosity {
+namespace ssimarch {
 
 namespace {
 
@@ -58,7 +58,7 @@ ParticleShape::ParticleShape(const Particle& p) : p_(p) {
 
 Interval ParticleShape::vertical_chord(double x, double y) const {
   Interval out;
-  for (const Vec3<double>* c : {&cp_, &cm_}) {
+  for (const Vec3* c : {&cp_, &cm_}) {
     const double dx = x - c->x(), dy = y - c->y();
     const double q = a2_ - dx * dx - dy * dy;
     if (q >= 0) {
@@ -70,7 +70,7 @@ Interval ParticleShape::vertical_chord(double x, double y) const {
   if (h_ == 0) return out;
   // Finite cylinder: dist^2 to the axis <= a^2 is alpha tau^2 + beta tau + gamma <= 0 with
   // tau = t - c_z; the slab |lambda| <= h is linear in tau.
-  const Vec3<double>& c = p_.centre;
+  const Vec3& c = p_.centre;
   const double ux = p_.axis.x(), uy = p_.axis.y(), uz = p_.axis.z();
   const double wx = x - c.x(), wy = y - c.y();
   const double lam0 = ux * wx + uy * wy;
@@ -118,7 +118,7 @@ int ParticleShape::shadow_arcs(double r, std::array<Arc, 4>& arcs, bool& full) c
     if (n < 8) cand[n++] = std::remainder(t, 2 * kPi);
   };
   // Outline arcs: circles of radius a around the projected cap centres.
-  for (const Vec3<double>* c : {&cp_, &cm_}) {
+  for (const Vec3* c : {&cp_, &cm_}) {
     const double rho = std::hypot(c->x(), c->y());
     if (rho > 0) {
       const double cs = (r * r + rho * rho - a2_) / (2 * r * rho);
@@ -148,7 +148,7 @@ int ParticleShape::shadow_arcs(double r, std::array<Arc, 4>& arcs, bool& full) c
     full = inside(0.0);
     return 0;
   }
-  detail::small_sort(cand.data(), n);
+  internal::small_sort(cand.data(), n);
   // Classify each arc between consecutive candidates by its midpoint; merge neighbouring inside arcs.
   std::array<Arc, 8> raw{};
   int m = 0;
@@ -178,11 +178,11 @@ int ParticleShape::shadow_arcs(double r, std::array<Arc, 4>& arcs, bool& full) c
 int ParticleShape::junction_angles(double r, std::array<double, 8>& out) const {
   if (h_ == 0) return 0;
   // Orthonormal v1, v2 perpendicular to the axis: junction circle C + a (cos psi v1 + sin psi v2).
-  const Vec3<double>& u = p_.axis;
-  const Vec3<double> helper = std::abs(u.z()) < 0.9 ? Vec3<double>(0, 0, 1) : Vec3<double>(1, 0, 0);
-  const Vec3<double> v1 = u.cross(helper).normalized(), v2 = u.cross(v1);
+  const Vec3& u = p_.axis;
+  const Vec3 helper = std::abs(u.z()) < 0.9 ? Vec3(0, 0, 1) : Vec3(1, 0, 0);
+  const Vec3 v1 = u.cross(helper).normalized(), v2 = u.cross(v1);
   int n = 0;
-  for (const Vec3<double>* c : {&cp_, &cm_}) {
+  for (const Vec3* c : {&cp_, &cm_}) {
     const double cx = c->x(), cy = c->y();
     const double K0 = cx * cx + cy * cy - r * r;
     const double A1 = 2 * a_ * (cx * v1.x() + cy * v1.y()), B1 = 2 * a_ * (cx * v2.x() + cy * v2.y());
@@ -201,7 +201,7 @@ int ParticleShape::junction_angles(double r, std::array<double, 8>& out) const {
       for (int k = 0; k < t.count && np < 5; ++k) psis[np++] = 2 * std::atan(t.x[k]);
     }
     for (int k = 0; k < np && n < 8; ++k) {
-      const Vec3<double> e = *c + a_ * (std::cos(psis[k]) * v1 + std::sin(psis[k]) * v2);
+      const Vec3 e = *c + a_ * (std::cos(psis[k]) * v1 + std::sin(psis[k]) * v2);
       out[n++] = std::atan2(e.y(), e.x());
     }
   }
@@ -209,7 +209,7 @@ int ParticleShape::junction_angles(double r, std::array<double, 8>& out) const {
 }
 
 int ParticleShape::clip_angles(double r, double z_cut, std::array<double, 8>& out, int n) const {
-  for (const Vec3<double>* c : {&cp_, &cm_}) {
+  for (const Vec3* c : {&cp_, &cm_}) {
     const double dz = z_cut - c->z(), s2 = a2_ - dz * dz;
     const double rho = std::hypot(c->x(), c->y());
     if (s2 > 0 && rho > 0) {
@@ -226,7 +226,7 @@ int ParticleShape::clip_angles(double r, double z_cut, std::array<double, 8>& ou
 }
 
 void ParticleShape::clip_radii(double z_cut, std::vector<double>& out) const {
-  for (const Vec3<double>* c : {&cp_, &cm_}) {
+  for (const Vec3* c : {&cp_, &cm_}) {
     const double dz = z_cut - c->z(), s2 = a2_ - dz * dz;
     if (s2 > 0) {
       const double rho = std::hypot(c->x(), c->y()), sr = std::sqrt(s2);
@@ -241,7 +241,7 @@ std::vector<double> ParticleShape::critical_radii() const {
   std::vector<double> out;
   out.push_back(rho_min_);
   out.push_back(rho_max_);
-  for (const Vec3<double>* c : {&cp_, &cm_}) {
+  for (const Vec3* c : {&cp_, &cm_}) {
     const double rho = std::hypot(c->x(), c->y());
     out.push_back(rho + a_);
     if (rho > a_) out.push_back(rho - a_);
@@ -266,4 +266,4 @@ std::vector<double> ParticleShape::critical_radii() const {
   return clipped;
 }
 
-}  // namespace ssimarch::porosity
+}  // namespace ssimarch

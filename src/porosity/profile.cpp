@@ -5,21 +5,32 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <stdexcept>
+#include <sstream>
+#include <string>
+
+#include "ssimarch/core/error.hpp"
 
 #include "parallel.hpp"
 
-namespace ssimarch::porosity {
+namespace ssimarch {
 
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 constexpr int kMaxChunks = 256;
 
+std::string number(double v) {
+  std::ostringstream o;
+  o << v;
+  return o.str();
+}
+
 void check_container(const Container& c) {
-  if (!(c.radius > 0) || !std::isfinite(c.radius)) throw std::invalid_argument("container radius must be > 0");
+  if (!(c.radius > 0) || !std::isfinite(c.radius))
+    throw InputError("container.radius", "must be a finite number > 0 (got " + number(c.radius) + ")");
   if (!(c.slab.z_max > c.slab.z_min) || !std::isfinite(c.slab.z_min) || !std::isfinite(c.slab.z_max))
-    throw std::invalid_argument("height range must satisfy z_min < z_max");
+    throw InputError("container.slab", "the height range [z_min, z_max] needs finite z_min < z_max (got [" +
+                                           number(c.slab.z_min) + ", " + number(c.slab.z_max) + "])");
 }
 
 struct Prepared {
@@ -54,7 +65,7 @@ std::vector<ChunkResult> run_chunks(const std::vector<ParticleShape>& shapes, st
   const int mem_cap = static_cast<int>(std::max<std::size_t>(8, 2'000'000 / std::max<std::size_t>(1, nvalues)));
   const int chunks = std::max(1, std::min({kMaxChunks, n, mem_cap}));
   std::vector<ChunkResult> res(chunks);
-  detail::parallel_chunks(
+  internal::parallel_chunks(
       chunks, opt.threads,
       [&](int k) {
         ChunkResult& cr = res[k];
@@ -84,7 +95,7 @@ void account(ChunkResult& cr, std::size_t j, const QuadResult& q) {
   cr.sum[j] += q.value;
   cr.err[j] += q.error;
   cr.evals += q.evaluations;
-  if (q.status != QuadStatus::converged) ++cr.unconverged;
+  if (q.status != QuadStatus::kConverged) ++cr.unconverged;
 }
 
 // Index range of sorted values v with v in [lo, hi].
@@ -96,8 +107,11 @@ std::pair<std::size_t, std::size_t> index_range(std::span<const double> v, doubl
 
 void require_sorted(std::span<const double> v, const char* what) {
   for (std::size_t k = 0; k < v.size(); ++k) {
-    if (!std::isfinite(v[k])) throw std::invalid_argument(std::string(what) + " must be finite");
-    if (k > 0 && !(v[k] > v[k - 1])) throw std::invalid_argument(std::string(what) + " must be strictly increasing");
+    if (!std::isfinite(v[k]))
+      throw InputError(what, "must be finite (value " + std::to_string(k) + " is " + number(v[k]) + ")");
+    if (k > 0 && !(v[k] > v[k - 1]))
+      throw InputError(what, "must be strictly increasing (value " + std::to_string(k) + " is " + number(v[k]) +
+                                 " after " + number(v[k - 1]) + ")");
   }
 }
 
@@ -131,12 +145,13 @@ std::vector<double> slice_centres(double z0, double z1, int n) {
   return v;
 }
 
-Profile radial_profile(std::span<const Particle> particles, const Container& c, std::span<const double> radii,
+PorosityProfile radial_profile(std::span<const Particle> particles, const Container& c, std::span<const double> radii,
                        const ProfileOptions& opt) {
   check_container(c);
   require_sorted(radii, "radii");
   for (double r : radii)
-    if (!(r > 0) || r > c.radius) throw std::invalid_argument("radii must lie in (0, R]");
+    if (!(r > 0) || r > c.radius)
+      throw InputError("radii", "must lie in (0, R] = (0, " + number(c.radius) + "] (got " + number(r) + ")");
   const Prepared prep = prepare(particles, c);
   const std::size_t m = radii.size();
   // Particles touching each radius, to split the accuracy budget.
@@ -153,7 +168,7 @@ Profile radial_profile(std::span<const Particle> particles, const Container& c, 
     for (std::size_t j = b; j < e; ++j)
       account(cr, j, lateral_area(s, radii[j], c.slab, budget[j], opt.method, opt.kernel));
   });
-  Profile out;
+  PorosityProfile out;
   out.x.assign(radii.begin(), radii.end());
   std::vector<double> sum(m, 0.0), err(m, 0.0);
   reduce(res, sum, err, out.stats);
@@ -168,12 +183,12 @@ Profile radial_profile(std::span<const Particle> particles, const Container& c, 
   return out;
 }
 
-Profile bin_profile(std::span<const Particle> particles, const Container& c, std::span<const double> edges,
+PorosityProfile bin_profile(std::span<const Particle> particles, const Container& c, std::span<const double> edges,
                     const ProfileOptions& opt) {
   check_container(c);
   require_sorted(edges, "bin edges");
   if (edges.size() < 2 || edges.front() < 0 || edges.back() > c.radius)
-    throw std::invalid_argument("bin edges must be at least two values within [0, R]");
+    throw InputError("bin edges", "need at least two values within [0, R] = [0, " + number(c.radius) + "]");
   const Prepared prep = prepare(particles, c);
   const std::size_t m = edges.size() - 1;
   std::vector<long> count(m, 0);
@@ -210,7 +225,7 @@ Profile bin_profile(std::span<const Particle> particles, const Container& c, std
       account(cr, k, shell_volume(s, edges[k], edges[k + 1], c.slab, budget[k], opt.method, opt.kernel));
     }
   });
-  Profile out;
+  PorosityProfile out;
   out.x.assign(edges.begin(), edges.end() - 1);
   out.x_upper.assign(edges.begin() + 1, edges.end());
   std::vector<double> sum(m, 0.0), err(m, 0.0);
@@ -225,17 +240,17 @@ Profile bin_profile(std::span<const Particle> particles, const Container& c, std
   return out;
 }
 
-Bulk bulk_porosity(std::span<const Particle> particles, const Container& c, const ProfileOptions& opt) {
+BulkPorosity bulk_porosity(std::span<const Particle> particles, const Container& c, const ProfileOptions& opt) {
   const std::vector<double> edges{0.0, c.radius};
-  const Profile p = bin_profile(particles, c, edges, opt);
-  Bulk b;
+  const PorosityProfile p = bin_profile(particles, c, edges, opt);
+  BulkPorosity b;
   b.porosity = p.porosity[0];
   b.solid_volume = (1 - p.porosity[0]) * c.volume();
   b.stats = p.stats;
   return b;
 }
 
-Profile axial_profile(std::span<const Particle> particles, const Container& c, std::span<const double> heights,
+PorosityProfile axial_profile(std::span<const Particle> particles, const Container& c, std::span<const double> heights,
                       const ProfileOptions& opt) {
   check_container(c);
   require_sorted(heights, "heights");
@@ -253,7 +268,7 @@ Profile axial_profile(std::span<const Particle> particles, const Container& c, s
     const auto [b, e] = index_range(heights, s.z_min(), s.z_max());
     for (std::size_t j = b; j < e; ++j) account(cr, j, slice_area(s, heights[j], c.radius, budget[j], opt.kernel, opt.method));
   });
-  Profile out;
+  PorosityProfile out;
   out.x.assign(heights.begin(), heights.end());
   std::vector<double> sum(m, 0.0), err(m, 0.0);
   reduce(res, sum, err, out.stats);
@@ -273,7 +288,7 @@ PorosityMap porosity_map(std::span<const Particle> particles, const Container& c
   require_sorted(radii, "radii");
   require_sorted(heights, "heights");
   for (double r : radii)
-    if (!(r > 0)) throw std::invalid_argument("map radii must be > 0");
+    if (!(r > 0)) throw InputError("map radii", "must be > 0 (got " + number(r) + ")");
   const Prepared prep = prepare(particles, c);
   const std::size_t nr = radii.size(), nz = heights.size();
   PorosityMap out;
@@ -299,4 +314,4 @@ PorosityMap porosity_map(std::span<const Particle> particles, const Container& c
   return out;
 }
 
-}  // namespace ssimarch::porosity
+}  // namespace ssimarch

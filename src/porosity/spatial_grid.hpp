@@ -9,7 +9,7 @@
 
 #include "ssimarch/porosity/particle.hpp"
 
-namespace ssimarch::porosity::detail {
+namespace ssimarch::internal {
 
 class SpatialGrid {
  public:
@@ -20,10 +20,10 @@ class SpatialGrid {
     return (static_cast<std::int64_t>(i & 0x1FFFFF) << 42) | (static_cast<std::int64_t>(j & 0x1FFFFF) << 21) |
            static_cast<std::int64_t>(k & 0x1FFFFF);
   }
-  void insert(const Vec3<double>& p, int id) { cells_[key(index(p.x()), index(p.y()), index(p.z()))].push_back(id); }
+  void insert(const Vec3& p, int id) { cells_[key(index(p.x()), index(p.y()), index(p.z()))].push_back(id); }
   /// Calls f(id) for every id stored in cells overlapping the box [p - reach, p + reach].
   template <class F>
-  void visit(const Vec3<double>& p, double reach, F&& f) const {
+  void visit(const Vec3& p, double reach, F&& f) const {
     const long i0 = index(p.x() - reach), i1 = index(p.x() + reach);
     const long j0 = index(p.y() - reach), j1 = index(p.y() + reach);
     const long k0 = index(p.z() - reach), k1 = index(p.z() + reach);
@@ -51,4 +51,4 @@ class SpatialGrid {
   std::unordered_map<std::int64_t, std::vector<int>> cells_;
 };
 
-}  // namespace ssimarch::porosity::detail
+}  // namespace ssimarch::internal

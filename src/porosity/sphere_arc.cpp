@@ -1,13 +1,13 @@
-// Closed forms for spheres. Source: spec/circle-spherocylinder.md section 3 (l = 0).
+// Closed forms for spheres. Source: seed 001 (thesis Appendix A §A.3, l = 0).
 #include "ssimarch/porosity/sphere_arc.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-namespace ssimarch::porosity {
+namespace ssimarch {
 
-double circle_sphere_arc(const Vec3<double>& c, double diameter, double z, double r) {
+double circle_sphere_arc(const Vec3& c, double diameter, double z, double r) {
   const double a = diameter / 2;
   const double dz = z - c.z();
   const double s2 = a * a - dz * dz;
@@ -36,4 +36,4 @@ double disk_disk_area(double r1, double r2, double d) {
   return r1 * r1 * (a1 - std::sin(2 * a1) / 2) + r2 * r2 * (a2 - std::sin(2 * a2) / 2);
 }
 
-}  // namespace ssimarch::porosity
+}  // namespace ssimarch

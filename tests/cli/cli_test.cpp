@@ -13,38 +13,18 @@
 #include <string>
 #include <unistd.h>
 
+#include "testing/cli_run.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
-struct CliRun {
-  int status;
-  std::string out, err;
-};
+using ssimarch::testing::CliRun;
 
-fs::path scratch() {
-  fs::path d = fs::temp_directory_path() / ("ssimarch_cli_test_" + std::to_string(::getpid()));
-  fs::create_directories(d);
-  return d;
-}
+fs::path scratch() { return ssimarch::testing::cli_scratch_dir(); }
 
-CliRun run(const std::string& args) {
-  fs::path err = scratch() / "stderr.txt";
-  std::string cmd = std::string(SSIMARCH_CLI) + " " + args + " 2>" + err.string();
-  CliRun r;
-  FILE* p = popen(cmd.c_str(), "r");
-  char buf[4096];
-  std::size_t n;
-  while ((n = fread(buf, 1, sizeof buf, p)) > 0) r.out.append(buf, n);
-  int st = pclose(p);
-  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-  std::ifstream in(err);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  r.err = ss.str();
-  return r;
-}
+CliRun run(const std::string& args) { return ssimarch::testing::run_cli(args); }
 
 std::string write_file(const std::string& name, const std::string& text) {
   fs::path p = scratch() / name;

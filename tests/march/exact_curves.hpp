@@ -15,14 +15,14 @@ using T3 = Taylor<3>;
 using CurveFn = std::function<Vec3T<T3>(const T3&)>;
 
 template <class T>
-Vec3T<T> torus_curve_t(const T& s) {  // C1 of the thesis (cases.hpp c1)
+Vec3T<T> torus_curve_t(const T& s) {  // C1 of the thesis (testing/surface_pairs.hpp c1)
   using std::cos;
   using std::sin;
   T r = 4.0 + cos(4.0 * s);
   return {r * cos(s), r * sin(s), sin(4.0 * s)};
 }
 template <class T>
-Vec3T<T> viviani_t(const T& s) {  // cases.hpp viviani
+Vec3T<T> viviani_t(const T& s) {  // testing/surface_pairs.hpp viviani
   using std::cos;
   using std::sin;
   return {sin(s), -1.0 - cos(s), 2.0 * sin(0.5 * s)};

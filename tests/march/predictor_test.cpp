@@ -8,7 +8,7 @@
 #include <cmath>
 #include <string>
 
-#include "cases.hpp"
+#include "testing/surface_pairs.hpp"
 #include "exact_curves.hpp"
 #include "ssimarch/march/closest_point.hpp"
 #include "ssimarch/surface/sphere.hpp"

@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "cases.hpp"
+#include "testing/surface_pairs.hpp"
 #include "ssimarch/surface/sphere.hpp"
 
 namespace ssimarch {

@@ -2,7 +2,7 @@
 // Viviani's figure eight completely: closed, length to 1e-6, no branch jump.
 #include <gtest/gtest.h>
 
-#include "cases.hpp"
+#include "testing/surface_pairs.hpp"
 #include "ssimarch/march/tracer.hpp"
 #include "ssimarch/surface/sphere.hpp"
 #include "ssimarch/surface/torus.hpp"

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "cases.hpp"
+#include "testing/surface_pairs.hpp"
 #include "ssimarch/surface/sphere.hpp"
 #include "ssimarch/surface/torus.hpp"
 

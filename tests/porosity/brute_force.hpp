@@ -9,7 +9,7 @@
 
 #include "ssimarch/porosity/circle_spherocylinder.hpp"
 
-namespace ssimarch::porosity::testing {
+namespace ssimarch::testing {
 
 /// Length of the circle (r, z) inside the particle: the margin g(theta) = sigma/2 - dist is sampled
 /// at n points; every sign change is refined by bisection to double resolution, every sampled local
@@ -17,7 +17,7 @@ namespace ssimarch::porosity::testing {
 /// samples are not missed), and the arcs between all crossings are classified at their midpoints.
 inline double brute_arc_length(const SpherocylinderT<double>& s, double z, double r, int n = 4096) {
   const double pi = std::numbers::pi;
-  auto g = [&](double t) { return inside_margin(s, Vec3<double>(r * std::cos(t), r * std::sin(t), z)); };
+  auto g = [&](double t) { return inside_margin(s, Vec3(r * std::cos(t), r * std::sin(t), z)); };
   auto bisect = [&](double lo, double hi) {
     double glo = g(lo);
     for (int it = 0; it < 200 && hi - lo > 1e-16 * std::max(1.0, std::abs(lo)); ++it) {
@@ -71,4 +71,4 @@ inline double brute_arc_length(const SpherocylinderT<double>& s, double z, doubl
   return total * r;
 }
 
-}  // namespace ssimarch::porosity::testing
+}  // namespace ssimarch::testing

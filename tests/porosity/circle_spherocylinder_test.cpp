@@ -13,13 +13,13 @@
 #include "porosity/brute_force.hpp"
 #include "ssimarch/porosity/sphere_arc.hpp"
 
-namespace ssimarch::porosity {
+namespace ssimarch {
 namespace {
 
 using testing::brute_arc_length;
 constexpr double kPi = std::numbers::pi;
 
-SpherocylinderT<double> make(Vec3<double> c, Vec3<double> u, double sigma, double l) {
+SpherocylinderT<double> make(Vec3 c, Vec3 u, double sigma, double l) {
   SpherocylinderT<double> s;
   s.centre = c;
   s.axis = u.normalized();
@@ -39,11 +39,11 @@ double tangency_tol(double r) { return 4 * std::sqrt(2.220446049250313e-16) * r;
 
 struct OracleCase {
   const char* id;
-  Vec3<double> c, u;
+  Vec3 c, u;
   double sigma, l, z, r, value, tol;
 };
 
-// shared/oracle/oracle.json, keys s001.config.* and s001.edge_pi.* (values printed to 12 digits).
+// tests/reference/oracle.json, keys s001.config.* and s001.edge_pi.* (values printed to 12 digits).
 const OracleCase kOracle[] = {
     {"s001.config.1", {0, 0, 0}, {0, 0, 1}, 2.0, 3.0, 0.5, 0.7, 4.39822971503, 1e-10},
     {"s001.config.2", {0, 0, 0}, {1, 0, 0}, 1.0, 2.0, 0.2, 1.0, 1.90413527225, 1e-10},
@@ -67,7 +67,7 @@ TEST(porosity_CircleSpherocylinder, OracleValues) {
     const auto s = make(c.c, c.u, c.sigma, c.l);
     const auto res = circle_spherocylinder(s, c.z, c.r);
     EXPECT_NEAR(res.inside_length, c.value, c.tol) << c.id << " case " << to_string(res.which);
-    EXPECT_NE(res.which, ArcCase::fallback) << c.id;
+    EXPECT_NE(res.which, ArcCase::kFallback) << c.id;
   }
 }
 
@@ -89,7 +89,7 @@ TEST(porosity_CircleSpherocylinder, FlowchartOmissionCaseGivesZero) {
                       {0.00303393130666, 0.736797110261, -0.676107102146}, 0.8, 1.2);
   const auto res = circle_spherocylinder(s, 0.2, 1.3);
   EXPECT_NEAR(res.inside_length, 0.0, 1e-9);
-  EXPECT_NE(res.which, ArcCase::fallback);
+  EXPECT_NE(res.which, ArcCase::kFallback);
 }
 
 TEST(porosity_CircleSpherocylinder, RandomSweepMatchesBruteForce) {
@@ -99,14 +99,14 @@ TEST(porosity_CircleSpherocylinder, RandomSweepMatchesBruteForce) {
   std::normal_distribution<double> N;
   int fallbacks = 0, crossings4 = 0;
   for (int k = 0; k < 1500; ++k) {
-    const Vec3<double> u(N(rng), N(rng), N(rng));
-    const Vec3<double> c(-1.5 + 3 * U(rng), -1.5 + 3 * U(rng), -1.5 + 3 * U(rng));
+    const Vec3 u(N(rng), N(rng), N(rng));
+    const Vec3 c(-1.5 + 3 * U(rng), -1.5 + 3 * U(rng), -1.5 + 3 * U(rng));
     const double sigma = 0.2 + 1.8 * U(rng), l = 3 * U(rng), z = -1 + 2 * U(rng), r = 0.2 + 2.3 * U(rng);
     const auto s = make(c, u, sigma, l);
     const auto res = circle_spherocylinder(s, z, r);
     const double ref = brute_arc_length(s, z, r);
     ASSERT_NEAR(res.inside_length, ref, tol_for(ref, r)) << "k=" << k << " case " << to_string(res.which);
-    fallbacks += res.which == ArcCase::fallback;
+    fallbacks += res.which == ArcCase::kFallback;
     crossings4 += res.count == 4;
   }
   EXPECT_EQ(fallbacks, 0);
@@ -116,8 +116,8 @@ TEST(porosity_CircleSpherocylinder, RandomSweepMatchesBruteForce) {
 TEST(porosity_CircleSpherocylinder, AxisVerticalAndHorizontal) {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> U(-1, 1);
-  for (const Vec3<double>& u : {Vec3<double>(0, 0, 1), Vec3<double>(0, 0, -1), Vec3<double>(1, 0, 0),
-                               Vec3<double>(0, 1, 0), Vec3<double>(1, 1, 0), Vec3<double>(-1, 0, 0)}) {
+  for (const Vec3& u : {Vec3(0, 0, 1), Vec3(0, 0, -1), Vec3(1, 0, 0),
+                               Vec3(0, 1, 0), Vec3(1, 1, 0), Vec3(-1, 0, 0)}) {
     for (int k = 0; k < 200; ++k) {
       const auto s = make({U(rng), U(rng), U(rng)}, u, 0.5 + 0.5 * (U(rng) + 1), 1.5 * (U(rng) + 1));
       const double z = U(rng), r = 0.1 + 1.5 * (U(rng) + 1);
@@ -131,11 +131,11 @@ TEST(porosity_CircleSpherocylinder, CoaxialSpecialCases) {
   // A.14: circle on the cylindrical surface; A.38: circle on a cap sphere.
   const auto s = make({0, 0, 1}, {0, 0, 1}, 2.0, 3.0);
   const auto on = circle_spherocylinder(s, 1.5, 1.0);
-  EXPECT_EQ(on.which, ArcCase::coaxial_on_surface);
+  EXPECT_EQ(on.which, ArcCase::kCoaxialOnSurface);
   EXPECT_NEAR(on.inside_length, 2 * kPi, 1e-14);
   // Plus cap centre (0,0,2.5), radius 1: at z = 3 the section has radius sqrt(0.75).
   const auto cap = circle_spherocylinder(s, 3.0, std::sqrt(0.75));
-  EXPECT_EQ(cap.which, ArcCase::cap_section);
+  EXPECT_EQ(cap.which, ArcCase::kCapSection);
   EXPECT_NEAR(cap.inside_length, 2 * kPi * std::sqrt(0.75), 1e-14);
   EXPECT_NEAR(circle_spherocylinder(s, 3.0, 0.9).inside_length, 0.0, 1e-14);
   EXPECT_NEAR(circle_spherocylinder(s, 3.0, 0.8).inside_length, 2 * kPi * 0.8, 1e-14);
@@ -171,7 +171,7 @@ TEST(porosity_CircleSpherocylinder, CapTouchingCircle) {
   // The top point of the plus cap on the circle, and the cap sphere tangent to the circle sideways.
   const double r = 0.9, sigma = 0.5, l = 1.0;
   for (double phi : {0.3, kPi, -2.0}) {
-    const Vec3<double> c(r * std::cos(phi), r * std::sin(phi), 0.0);
+    const Vec3 c(r * std::cos(phi), r * std::sin(phi), 0.0);
     const auto s = make(c, {0, 0, 1}, sigma, l);
     for (double dz : {0.0, 1e-12, 1e-8, 1e-4}) {
       const double z = l / 2 + sigma / 2 - dz;
@@ -180,10 +180,10 @@ TEST(porosity_CircleSpherocylinder, CapTouchingCircle) {
           << phi << " " << dz;
     }
     // Tilted axis; circle at the height of the plus cap centre, sphere externally tangent.
-    const Vec3<double> u = Vec3<double>(0.3, -0.4, 0.866).normalized();
+    const Vec3 u = Vec3(0.3, -0.4, 0.866).normalized();
     for (double off : {0.0, 1e-9, 1e-5}) {
       const double rho = r + sigma / 2 - off;
-      const Vec3<double> cap(rho * std::cos(phi), rho * std::sin(phi), 0.2);
+      const Vec3 cap(rho * std::cos(phi), rho * std::sin(phi), 0.2);
       const auto t = make(cap - l / 2 * u, u, sigma, l);
       const double ref = brute_arc_length(t, 0.2, r);
       EXPECT_NEAR(circle_spherocylinder(t, 0.2, r).inside_length, ref, off == 0 ? tangency_tol(r) : tol_for(ref, r))
@@ -200,8 +200,8 @@ TEST(porosity_CircleSpherocylinder, ThetaNearPi) {
   std::normal_distribution<double> N;
   int tested = 0;
   for (int k = 0; k < 400; ++k) {
-    const Vec3<double> u(N(rng), N(rng), N(rng));
-    const Vec3<double> c(-1.5 + 3 * U(rng), -1.5 + 3 * U(rng), -1.5 + 3 * U(rng));
+    const Vec3 u(N(rng), N(rng), N(rng));
+    const Vec3 c(-1.5 + 3 * U(rng), -1.5 + 3 * U(rng), -1.5 + 3 * U(rng));
     const auto s = make(c, u, 0.2 + 1.8 * U(rng), 3 * U(rng));
     const double z = -1 + 2 * U(rng), r = 0.2 + 2.3 * U(rng);
     const auto base = circle_spherocylinder(s, z, r);
@@ -224,7 +224,7 @@ TEST(porosity_CircleSpherocylinder, ZeroLengthMatchesSphereClosedForm) {
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> U(-1, 1);
   for (int k = 0; k < 2000; ++k) {
-    const Vec3<double> c(2 * U(rng), 2 * U(rng), U(rng));
+    const Vec3 c(2 * U(rng), 2 * U(rng), U(rng));
     const double d = 0.2 + 1.5 * (U(rng) + 1), z = U(rng), r = 0.05 + 1.5 * (U(rng) + 1);
     const auto s = make(c, {U(rng), U(rng), U(rng) + 0.01}, d, 0.0);
     const double closed = circle_sphere_arc(c, d, z, r);
@@ -237,8 +237,8 @@ TEST(porosity_CircleSpherocylinder, LongDoubleChoosesTheSameCase) {
   std::uniform_real_distribution<double> U(0, 1);
   std::normal_distribution<double> N;
   for (int k = 0; k < 1000; ++k) {
-    const Vec3<double> u = Vec3<double>(N(rng), N(rng), N(rng)).normalized();
-    const Vec3<double> c(-1.5 + 3 * U(rng), -1.5 + 3 * U(rng), -1.5 + 3 * U(rng));
+    const Vec3 u = Vec3(N(rng), N(rng), N(rng)).normalized();
+    const Vec3 c(-1.5 + 3 * U(rng), -1.5 + 3 * U(rng), -1.5 + 3 * U(rng));
     const double sigma = 0.2 + 1.8 * U(rng), l = 3 * U(rng), z = -1 + 2 * U(rng), r = 0.2 + 2.3 * U(rng);
     const auto d = circle_spherocylinder(make(c, u, sigma, l), z, r);
     SpherocylinderT<long double> sl;
@@ -255,4 +255,4 @@ TEST(porosity_CircleSpherocylinder, LongDoubleChoosesTheSameCase) {
 }
 
 }  // namespace
-}  // namespace ssimarch::porosity
+}  // namespace ssimarch

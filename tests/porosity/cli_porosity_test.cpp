@@ -1,37 +1,28 @@
 // `ssimarch porosity` and `ssimarch packing` end to end: column names, summary JSON, errors and exit
-// codes. Skipped when the CLI has not been built in this build directory.
+// codes. Fails when the CLI is not built (tests/testing/cli_run.hpp).
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <string>
+#include <vector>
+
+#include "testing/cli_run.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kBin = fs::path(SSIMARCH_BINARY_DIR) / "bin" / "ssimarch";
-
+// stdout and stderr together: the checks below look for messages on either.
 struct CliRun {
   int status;
-  std::string out;  // stdout and stderr together
+  std::string out;
 };
 
 CliRun run(const std::string& args) {
-  const std::string cmd = kBin.string() + " " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  CliRun r{-1, {}};
-  if (!p) return r;
-  std::array<char, 4096> buf{};
-  while (std::fgets(buf.data(), buf.size(), p)) r.out += buf.data();
-  const int st = pclose(p);
-  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-  return r;
+  const ssimarch::testing::CliRun r = ssimarch::testing::run_cli(args);
+  return {r.status, r.all()};
 }
 
 std::vector<std::string> lines(const fs::path& f) {
@@ -44,8 +35,7 @@ std::vector<std::string> lines(const fs::path& f) {
 class porosity_Cli : public ::testing::Test {
  protected:
   void SetUp() override {
-    if (!fs::exists(kBin)) GTEST_SKIP() << "ssimarch CLI not built in " << kBin;
-    dir_ = fs::temp_directory_path() / ("ssimarch_porosity_cli_" + std::to_string(::getpid()));
+    dir_ = ssimarch::testing::cli_scratch_dir() / "porosity";
     fs::create_directories(dir_);
   }
   void TearDown() override {
@@ -72,7 +62,12 @@ TEST_F(porosity_Cli, GenerateThenProfilesWithDocumentedColumns) {
   EXPECT_GT(j["bulk_porosity"].get<double>(), 0.2);
   EXPECT_LT(j["bulk_porosity"].get<double>(), 0.8);
   EXPECT_EQ(j["outputs"]["radial"]["columns"], "r,porosity");
-  EXPECT_TRUE(fs::exists(p("r.svg")));
+  std::ifstream svg(p("r.svg"));
+  const std::string picture((std::istreambuf_iterator<char>(svg)), std::istreambuf_iterator<char>());
+  EXPECT_NE(picture.find("exact radial porosity"), std::string::npos);  // the profile's legend
+  EXPECT_NE(picture.find("Porosity profile of bed.csv"), std::string::npos);
+  EXPECT_NE(picture.find("<polyline"), std::string::npos);
+  EXPECT_EQ(picture.substr(picture.size() - 7), "</svg>\n");
 
   CliRun b = run("porosity " + p("bed.csv") + " --container-radius 3 --bins 6 --axial 5 --map 4,3 -o " + p("b.csv"));
   ASSERT_EQ(b.status, 0) << b.out;
@@ -104,12 +99,20 @@ TEST_F(porosity_Cli, BadInputGivesFileLineAndStatus2) {
   EXPECT_EQ(run("porosity " + p("missing.csv") + " --container-radius 3").status, 2);
   std::ofstream(p("ok.csv")) << "x,y,z,d\n0,0,0.5,1\n";
   EXPECT_EQ(run("porosity " + p("ok.csv") + " --container-radius 3 --radii 5 --bins 5").status, 2);
-  EXPECT_EQ(run("porosity " + p("ok.csv") + " --container-radius -1").status, 2);
+  const CliRun neg = run("porosity " + p("ok.csv") + " --container-radius -1");
+  EXPECT_EQ(neg.status, 2);
+  EXPECT_NE(neg.out.find("--container-radius: must be a finite number > 0 (got -1)"), std::string::npos) << neg.out;
   EXPECT_EQ(run("porosity " + p("ok.csv") + " --container-radius nan").status, 2);
   EXPECT_EQ(run("porosity " + p("ok.csv") + " --container-radius 3 --z-range 2,1").status, 2);
   EXPECT_EQ(run("porosity " + p("ok.csv") + " --container-radius 3 --plot out.pdf").status, 2);
+  EXPECT_EQ(run("porosity " + p("ok.csv") + " --container-radius 3 --plot out.png").status, 2);  // SVG only
   EXPECT_EQ(run("porosity " + p("ok.csv") + " --container-radius 3 --map 0,3").status, 2);
-  EXPECT_EQ(run("packing spheres --container-radius 1 --diameter 5 --count 3").status, 2);
+  const CliRun big = run("packing spheres --container-radius 1 --diameter 5 --count 3");
+  EXPECT_EQ(big.status, 2);
+  EXPECT_NE(big.out.find("--diameter: the particle diameter 5 must be smaller than the container diameter 2"),
+            std::string::npos)
+      << big.out;
+  EXPECT_EQ(run("packing spherocylinders --container-radius 3 --solid-fraction 1.5").status, 2);
 }
 
 }  // namespace

@@ -5,23 +5,24 @@
 
 #include <random>
 
+#include "ssimarch/core/error.hpp"
 #include "ssimarch/porosity/profile.hpp"
 
-namespace ssimarch::porosity {
+namespace ssimarch {
 namespace {
 
 TEST(porosity_SegmentDistance, MatchesSampling) {
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> U(-1, 1);
   for (int k = 0; k < 300; ++k) {
-    const Vec3<double> p0(U(rng), U(rng), U(rng)), p1(U(rng), U(rng), U(rng));
-    const Vec3<double> q0(U(rng), U(rng), U(rng));
-    const Vec3<double> q1 = k % 3 == 0 ? q0 + 0.7 * (p1 - p0) : Vec3<double>(U(rng), U(rng), U(rng));  // parallel
+    const Vec3 p0(U(rng), U(rng), U(rng)), p1(U(rng), U(rng), U(rng));
+    const Vec3 q0(U(rng), U(rng), U(rng));
+    const Vec3 q1 = k % 3 == 0 ? q0 + 0.7 * (p1 - p0) : Vec3(U(rng), U(rng), U(rng));  // parallel
     double best = 1e9;
     for (int i = 0; i <= 400; ++i) {
-      const Vec3<double> a = p0 + (p1 - p0) * (i / 400.0);
+      const Vec3 a = p0 + (p1 - p0) * (i / 400.0);
       // exact distance from a point to the segment q
-      const Vec3<double> d = q1 - q0;
+      const Vec3 d = q1 - q0;
       const double t = std::clamp((a - q0).dot(d) / d.squaredNorm(), 0.0, 1.0);
       best = std::min(best, (a - q0 - t * d).norm());
     }
@@ -85,7 +86,7 @@ TEST(porosity_Rsa, NonOverlappingAndInside) {
   const auto ps = rsa_spherocylinders(o, &rep);
   ASSERT_EQ(ps.size(), 300u);
   for (std::size_t i = 0; i < ps.size(); ++i) {
-    for (const Vec3<double>& e : {ps[i].plus_cap(), ps[i].minus_cap()}) {
+    for (const Vec3& e : {ps[i].plus_cap(), ps[i].minus_cap()}) {
       EXPECT_LE(std::hypot(e.x(), e.y()) + 0.25, 3.0 + 1e-12);
       EXPECT_GE(e.z(), 0.25 - 1e-12);
       EXPECT_LE(e.z(), rep.height - 0.25 + 1e-12);
@@ -100,13 +101,18 @@ TEST(porosity_Rsa, NonOverlappingAndInside) {
 TEST(porosity_Generators, RejectImpossibleOptions) {
   SphereBedOptions s;
   s.diameter = -1;
-  EXPECT_THROW(drop_and_roll_spheres(s), std::invalid_argument);
+  EXPECT_THROW(drop_and_roll_spheres(s), InputError);
   s.diameter = 20;
-  EXPECT_THROW(drop_and_roll_spheres(s), std::invalid_argument);
+  EXPECT_THROW(drop_and_roll_spheres(s), InputError);
   SpherocylinderRsaOptions r;
   r.length = -1;
-  EXPECT_THROW(rsa_spherocylinders(r), std::invalid_argument);
+  try {
+    rsa_spherocylinders(r);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where(), "length");
+  }
 }
 
 }  // namespace
-}  // namespace ssimarch::porosity
+}  // namespace ssimarch

@@ -5,7 +5,7 @@
 
 #include <sstream>
 
-namespace ssimarch::porosity {
+namespace ssimarch {
 namespace {
 
 Packing csv(const std::string& text) {
@@ -16,7 +16,7 @@ Packing csv(const std::string& text) {
 std::string csv_error(const std::string& text) {
   try {
     csv(text);
-  } catch (const PackingError& e) {
+  } catch (const InputError& e) {
     return e.what();
   }
   return "no error";
@@ -42,7 +42,7 @@ TEST(porosity_PackingCsv, BadRowsNameFileAndLine) {
   EXPECT_NE(csv_error("x,y,z,d\n0,0,0,1\n0,0,0\n").find("bed.csv:3: expected 4 fields"), std::string::npos);
   EXPECT_NE(csv_error("x,y,z,d\n0,0,nan,1\n").find("bed.csv:2: centre coordinate is not finite"), std::string::npos);
   EXPECT_NE(csv_error("x,y,z,d\n0,0,0,-1\n").find("bed.csv:2: diameter must be > 0"), std::string::npos);
-  EXPECT_NE(csv_error("x,y,z,d\n0,0,0,abc\n").find("bed.csv:2: column 'd': not a number"), std::string::npos);
+  EXPECT_NE(csv_error("x,y,z,d\n0,0,0,abc\n").find("bed.csv:2:7: column 'd': not a number"), std::string::npos);
   EXPECT_NE(csv_error("x,y,z,ux,uy,uz,d,l\n0,0,0,0,0,0,1,1\n").find("bed.csv:2: axis (ux, uy, uz) must not be zero"),
             std::string::npos);
   EXPECT_NE(csv_error("x,y,z,ux,uy,uz,d,l\n0,0,0,0,0,1,1,-2\n").find("bed.csv:2: length must be >= 0"), std::string::npos);
@@ -76,12 +76,24 @@ TEST(porosity_PackingLammps, ScaledCoordinatesAndErrors) {
   std::istringstream bad("ITEM: NUMBER OF ATOMS\n2\nITEM: ATOMS id x y z radius\n1 0 0 0 -1\n");
   try {
     read_lammps_dump(bad, "dump.txt");
-    FAIL() << "expected PackingError";
-  } catch (const PackingError& e) {
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("dump.txt:4"), std::string::npos) << e.what();
   }
   std::istringstream norad("ITEM: NUMBER OF ATOMS\n1\nITEM: ATOMS id x y z\n1 0 0 0\n");
-  EXPECT_THROW(read_lammps_dump(norad, "d"), PackingError);
+  EXPECT_THROW(read_lammps_dump(norad, "d"), InputError);
+}
+
+TEST(porosity_PackingFiles, FieldThatIsNotANumberIsLocatedByLineAndColumn) {
+  EXPECT_NE(csv_error("x,y,z,d\n0, 1e,0,1\n").find("bed.csv:2:4: column 'y': not a number: '1e'"), std::string::npos);
+  std::istringstream dump("ITEM: NUMBER OF ATOMS\n1\nITEM: ATOMS id x y z radius\n1 0  q 0 0.5\n");
+  try {
+    read_lammps_dump(dump, "dump.txt");
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where(), "dump.txt");
+    EXPECT_NE(std::string(e.what()).find("dump.txt:4:6: column 'y': not a number: 'q'"), std::string::npos) << e.what();
+  }
 }
 
 TEST(porosity_PackingCsv, WriteReadRoundTrip) {
@@ -90,7 +102,7 @@ TEST(porosity_PackingCsv, WriteReadRoundTrip) {
   ps[0].diameter = 0.7;
   ps[0].length = 1.25;
   ps[1].centre = {-1.0 / 3, 2.0 / 7, 5.0};
-  ps[1].axis = Vec3<double>(1, 2, 3).normalized();
+  ps[1].axis = Vec3(1, 2, 3).normalized();
   ps[1].diameter = 0.5;
   ps[1].length = 0.0;
   std::ostringstream out;
@@ -103,8 +115,8 @@ TEST(porosity_PackingCsv, WriteReadRoundTrip) {
 }
 
 TEST(porosity_PackingFile, MissingFileIsAnError) {
-  EXPECT_THROW(read_packing("/nonexistent/bed.csv"), PackingError);
+  EXPECT_THROW(read_packing("/nonexistent/bed.csv"), InputError);
 }
 
 }  // namespace
-}  // namespace ssimarch::porosity
+}  // namespace ssimarch

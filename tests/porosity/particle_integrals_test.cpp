@@ -10,12 +10,12 @@
 
 #include "ssimarch/porosity/piecewise_quadrature.hpp"
 
-namespace ssimarch::porosity {
+namespace ssimarch {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-Particle make(Vec3<double> c, Vec3<double> u, double d, double l) {
+Particle make(Vec3 c, Vec3 u, double d, double l) {
   Particle p;
   p.centre = c;
   p.axis = u.normalized();
@@ -63,10 +63,10 @@ TEST(porosity_ParticleIntegrals, VolumeFromSeedKernelOverRAndZ) {
     QuadResult total;
     for (std::size_t k = 0; k + 1 < br.size(); ++k)
       total += integrate_sqrt_ends(
-          [&](double z) { return slice_area(s, z, 1e3, 1e-13, {}, Method::kernel).value; }, br[k], br[k + 1],
+          [&](double z) { return slice_area(s, z, 1e3, 1e-13, {}, ProfileMethod::kKernel).value; }, br[k], br[k + 1],
           1e-11 * p.volume());
     EXPECT_NEAR(total.value, p.volume(), 1e-9 * p.volume()) << p.centre.transpose();
-    const auto vk = shell_volume(s, 0, 1e3, Slab{-1e3, 1e3}, 1e-11 * p.volume(), Method::kernel);
+    const auto vk = shell_volume(s, 0, 1e3, Slab{-1e3, 1e3}, 1e-11 * p.volume(), ProfileMethod::kKernel);
     EXPECT_NEAR(vk.value, p.volume(), 1e-9 * p.volume()) << "kernel over z then r: " << p.centre.transpose();
   }
 }
@@ -89,7 +89,7 @@ TEST(porosity_ParticleIntegrals, ClosedFormSliceAreaMatchesKernelAndVolume) {
     EXPECT_NEAR(v.value, p.volume(), 1e-12 * p.volume());
     for (int k = 1; k < 10; ++k) {
       const double z = s.z_min() + (s.z_max() - s.z_min()) * k / 10;
-      EXPECT_NEAR(slice_area_unclipped(p, z), slice_area(s, z, 1e3, 1e-12, {}, Method::kernel).value, 1e-7) << z;
+      EXPECT_NEAR(slice_area_unclipped(p, z), slice_area(s, z, 1e3, 1e-12, {}, ProfileMethod::kKernel).value, 1e-7) << z;
     }
   }
 }
@@ -103,8 +103,8 @@ TEST(porosity_ParticleIntegrals, ChordAndKernelLateralAreasAgree) {
       const double r = s.rho_min() + (s.rho_max() - s.rho_min()) * U(rng);
       if (!(r > 0)) continue;
       const Slab slab{-1e3, 1e3};
-      const auto c = lateral_area(s, r, slab, 1e-13, Method::chord);
-      const auto q = lateral_area(s, r, slab, 1e-13, Method::kernel);
+      const auto c = lateral_area(s, r, slab, 1e-13, ProfileMethod::kChord);
+      const auto q = lateral_area(s, r, slab, 1e-13, ProfileMethod::kKernel);
       EXPECT_NEAR(c.value, q.value, 1e-10 * std::max(1.0, c.value)) << "r=" << r << " " << p.axis.transpose();
     }
   }
@@ -122,9 +122,9 @@ TEST(porosity_ParticleIntegrals, VerticalChordMatchesBisection) {
       EXPECT_EQ(!c.empty(), s.shadow_contains(x, y)) << x << " " << y;
       if (c.empty() || c.length() < 1e-9) continue;
       // Both ends lie on the surface and the midpoint inside.
-      EXPECT_NEAR(inside_margin(p, Vec3<double>(x, y, c.lo)), 0.0, 1e-12);
-      EXPECT_NEAR(inside_margin(p, Vec3<double>(x, y, c.hi)), 0.0, 1e-12);
-      EXPECT_GT(inside_margin(p, Vec3<double>(x, y, (c.lo + c.hi) / 2)), -1e-12);
+      EXPECT_NEAR(inside_margin(p, Vec3(x, y, c.lo)), 0.0, 1e-12);
+      EXPECT_NEAR(inside_margin(p, Vec3(x, y, c.hi)), 0.0, 1e-12);
+      EXPECT_GT(inside_margin(p, Vec3(x, y, (c.lo + c.hi) / 2)), -1e-12);
     }
   }
 }
@@ -137,7 +137,7 @@ TEST(porosity_ParticleIntegrals, SlabClippedSphereMatchesCapFormula) {
   auto F = [](double t) { return kPi * (0.25 * t - t * t * t / 3); };
   const double exact = F(0.3) - F(-0.2);
   EXPECT_NEAR(shell_volume(s, 0, 10, slab, 1e-13).value, exact, 1e-11);
-  EXPECT_NEAR(shell_volume(s, 0, 10, slab, 1e-12, Method::kernel).value, exact, 1e-10);
+  EXPECT_NEAR(shell_volume(s, 0, 10, slab, 1e-12, ProfileMethod::kKernel).value, exact, 1e-10);
 }
 
 TEST(porosity_Quadrature, GaussKronrodIsExactForDegree22) {
@@ -152,7 +152,7 @@ TEST(porosity_Quadrature, SqrtEndpointsConvergeFast) {
   // Integral of sqrt(1 - x^2) over [-1, 1] = pi/2 (square-root behaviour at both ends).
   const auto q = integrate_sqrt_ends([](double x) { return std::sqrt(std::max(0.0, 1 - x * x)); }, -1.0, 1.0, 1e-14);
   EXPECT_NEAR(q.value, kPi / 2, 1e-14);
-  EXPECT_EQ(q.status, QuadStatus::converged);
+  EXPECT_EQ(q.status, QuadStatus::kConverged);
   EXPECT_LE(q.evaluations, 100);
 }
 
@@ -166,4 +166,4 @@ TEST(porosity_Quadrature, PiecewiseFindsHiddenBreakpoints) {
 }
 
 }  // namespace
-}  // namespace ssimarch::porosity
+}  // namespace ssimarch

@@ -4,7 +4,7 @@
 
 #include <random>
 
-namespace ssimarch::porosity {
+namespace ssimarch {
 namespace {
 
 // Expand (x - r0)(x - r1)... into ascending coefficients.
@@ -68,4 +68,4 @@ TEST(porosity_PolynomialRoots, LongDouble) {
 }
 
 }  // namespace
-}  // namespace ssimarch::porosity
+}  // namespace ssimarch

@@ -8,9 +8,9 @@
 // (as commonly cited; the two branches do not meet exactly at x = 0.637).
 #pragma once
 
-namespace ssimarch::porosity {
+namespace ssimarch {
 
 /// de Klerk (2003) porosity at distance `x_wall` = (R - r)/d from the wall, bulk porosity eps_b.
 double de_klerk_porosity(double x_wall, double eps_bulk);
 
-}  // namespace ssimarch::porosity
+}  // namespace ssimarch

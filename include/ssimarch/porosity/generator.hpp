@@ -17,7 +17,7 @@
 
 #include "ssimarch/porosity/particle.hpp"
 
-namespace ssimarch::porosity {
+namespace ssimarch {
 
 struct SphereBedOptions {
   double container_radius = 5.0;  ///< R, model length
@@ -48,11 +48,12 @@ struct GeneratorReport {
   long unstable = 0;         ///< spheres that hit the iteration limit while rolling (left where they were)
 };
 
+/// Both throw InputError, located by the option's field name (e.g. "diameter"), for impossible options.
 std::vector<Particle> drop_and_roll_spheres(const SphereBedOptions& opt, GeneratorReport* report = nullptr);
 std::vector<Particle> rsa_spherocylinders(const SpherocylinderRsaOptions& opt, GeneratorReport* report = nullptr);
 
 /// Distance between the segments [p0, p1] and [q0, q1] (Ericson, Real-Time Collision Detection, 5.1.9).
-double segment_distance(const Vec3<double>& p0, const Vec3<double>& p1, const Vec3<double>& q0,
-                        const Vec3<double>& q1);
+double segment_distance(const Vec3& p0, const Vec3& p1, const Vec3& q0,
+                        const Vec3& q1);
 
-}  // namespace ssimarch::porosity
+}  // namespace ssimarch

@@ -11,7 +11,7 @@
 
 #include "ssimarch/porosity/profile.hpp"
 
-namespace ssimarch::porosity {
+namespace ssimarch {
 
 struct MonteCarloOptions {
   long samples_per_radius = 10000;
@@ -26,4 +26,4 @@ struct MonteCarloProfile {
 MonteCarloProfile monte_carlo_radial(std::span<const Particle> particles, const Container& c,
                                      std::span<const double> radii, const MonteCarloOptions& opt = {});
 
-}  // namespace ssimarch::porosity
+}  // namespace ssimarch

@@ -1,25 +1,21 @@
 // Packing files: CSV with a header (spheres: x,y,z,d; spherocylinders: x,y,z,ux,uy,uz,d,l; the axis
 // need not be unit length; units are the file's) and LAMMPS/LIGGGHTS text dumps of spheres
 // (ITEM: ATOMS with x y z (or xu yu zu, or scaled xs ys zs) and radius or diameter columns; the last
-// snapshot in the file is used). Bad rows are reported as "file:line: what".
+// snapshot in the file is used). Invalid input throws ssimarch::InputError (core/error.hpp) whose location
+// is "file:line" (or "file:line:column" for a field that is not a number); bad rows are collected (up to
+// ten reported) and thrown together with the file as location.
 #pragma once
 
 #include <filesystem>
 #include <iosfwd>
 #include <span>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "ssimarch/core/error.hpp"
 #include "ssimarch/porosity/particle.hpp"
 
-namespace ssimarch::porosity {
-
-/// Invalid packing input (malformed file, bad values); the message names file and line.
-class PackingError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
+namespace ssimarch {
 
 struct Packing {
   std::vector<Particle> particles;
@@ -34,4 +30,4 @@ Packing read_lammps_dump(std::istream& in, const std::string& name);
 /// Writes the CSV format (sphere columns when every particle has length 0).
 void write_packing_csv(std::ostream& out, std::span<const Particle> particles);
 
-}  // namespace ssimarch::porosity
+}  // namespace ssimarch

@@ -6,23 +6,26 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <numbers>
+#include <type_traits>
 
-namespace ssimarch::porosity {
+#include "ssimarch/core/vec3.hpp"
 
-template <class T>
-using Vec3 = Eigen::Matrix<T, 3, 1>;
+namespace ssimarch {
 
+/// Templated on the scalar so that tests can rerun the kernel in long double; for double, Point is
+/// the library's Vec3.
 template <class T>
 struct SpherocylinderT {
-  Vec3<T> centre = Vec3<T>::Zero();
-  Vec3<T> axis = Vec3<T>(T(0), T(0), T(1));  ///< unit vector (callers normalise; see normalised())
+  using Point = Eigen::Matrix<T, 3, 1>;
+  Point centre = Point::Zero();
+  Point axis = Point(T(0), T(0), T(1));  ///< unit vector (callers normalise; see normalised())
   T diameter = T(1);                           ///< sigma > 0
   T length = T(0);                             ///< l >= 0, distance between the two cap centres
 
   T radius() const { return diameter / T(2); }
   T half_length() const { return length / T(2); }
-  Vec3<T> plus_cap() const { return centre + half_length() * axis; }
-  Vec3<T> minus_cap() const { return centre - half_length() * axis; }
+  Point plus_cap() const { return centre + half_length() * axis; }
+  Point minus_cap() const { return centre - half_length() * axis; }
   /// Volume pi d^2 l / 4 + pi d^3 / 6.
   T volume() const {
     const T pi = std::numbers::pi_v<T>;
@@ -36,9 +39,10 @@ struct SpherocylinderT {
 };
 
 using Particle = SpherocylinderT<double>;
+static_assert(std::is_same_v<Particle::Point, Vec3>);
 
 /// A sphere as a zero-length spherocylinder.
-inline Particle make_sphere(const Vec3<double>& centre, double diameter) {
+inline Particle make_sphere(const Vec3& centre, double diameter) {
   Particle p;
   p.centre = centre;
   p.diameter = diameter;
@@ -46,4 +50,4 @@ inline Particle make_sphere(const Vec3<double>& centre, double diameter) {
   return p;
 }
 
-}  // namespace ssimarch::porosity
+}  // namespace ssimarch

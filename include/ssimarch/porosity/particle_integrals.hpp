@@ -11,10 +11,10 @@
 #include "ssimarch/porosity/particle_shape.hpp"
 #include "ssimarch/porosity/quadrature.hpp"
 
-namespace ssimarch::porosity {
+namespace ssimarch {
 
 /// Which formulation integrates the kernel (see the file comment).
-enum class Method { chord, kernel };
+enum class ProfileMethod { kChord, kKernel };
 
 /// Height range of the profiles: z in [z_min, z_max].
 struct Slab {
@@ -30,22 +30,22 @@ long kernel_signature(const Particle& p, double z, double r, const KernelToleran
 
 /// L_i(r) to absolute tolerance abs_tol (units length^2).
 QuadResult lateral_area(const ParticleShape& s, double r, const Slab& slab, double abs_tol,
-                        Method method = Method::chord, const KernelTolerances& tol = {});
+                        ProfileMethod method = ProfileMethod::kChord, const KernelTolerances& tol = {});
 
 /// V_i(r0, r1) to absolute tolerance abs_tol (units length^3).
 QuadResult shell_volume(const ParticleShape& s, double r0, double r1, const Slab& slab, double abs_tol,
-                        Method method = Method::chord, const KernelTolerances& tol = {});
+                        ProfileMethod method = ProfileMethod::kChord, const KernelTolerances& tol = {});
 
 /// S_i(z) inside the disk of radius R to absolute tolerance abs_tol (units length^2). Spheres use the
 /// closed-form disk-disk lens area. Spherocylinders inside the disk use the closed-form slice area
-/// (Method::chord); those crossing the circle r = R, or all with Method::kernel, integrate the seed
+/// (ProfileMethod::kChord); those crossing the circle r = R, or all with ProfileMethod::kKernel, integrate the seed
 /// kernel over r.
 QuadResult slice_area(const ParticleShape& s, double z, double R, double abs_tol, const KernelTolerances& tol = {},
-                      Method method = Method::chord);
+                      ProfileMethod method = ProfileMethod::kChord);
 
 /// Area of the horizontal section of a particle at height z: an ellipse (section of the cylinder)
 /// between the two chords lambda = -+l/2, plus the sections of the two cap spheres beyond them
 /// (closed form through the area of a unit-disk band). Units length^2.
 double slice_area_unclipped(const Particle& p, double z);
 
-}  // namespace ssimarch::porosity
+}  // namespace ssimarch

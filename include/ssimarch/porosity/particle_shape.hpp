@@ -17,7 +17,7 @@
 
 #include "ssimarch/porosity/particle.hpp"
 
-namespace ssimarch::porosity {
+namespace ssimarch {
 
 struct Interval {
   double lo = 0.0, hi = -1.0;
@@ -64,11 +64,11 @@ class ParticleShape {
  private:
   Particle p_;
   double a_, a2_, h_;
-  Vec3<double> cp_, cm_;
+  Vec3 cp_, cm_;
   double alpha_;            // 1 - u_z^2 = u_x^2 + u_y^2
   bool has_lines_ = false;  // shadow has straight edges (projected axis not degenerate)
   double ex_ = 0, ey_ = 0, plen_ = 0;
   double rho_min_, rho_max_, z_min_, z_max_;
 };
 
-}  // namespace ssimarch::porosity
+}  // namespace ssimarch

@@ -13,7 +13,7 @@
 
 #include "ssimarch/porosity/quadrature.hpp"
 
-namespace ssimarch::porosity {
+namespace ssimarch {
 
 /// Default number of coarse signature samples over the integration range.
 inline constexpr int kPiecewiseCoarseSamples = 32;
@@ -74,7 +74,7 @@ QuadResult integrate_piecewise(V&& value, S&& sig, double a, double b, double ab
     if (!(hi > lo)) continue;
     const double tol = abs_tol * (hi - lo) / total;
     QuadResult q = integrate_sqrt_ends(value, lo, hi, tol);
-    if (q.status != QuadStatus::converged) {
+    if (q.status != QuadStatus::kConverged) {
       breaks.assign({lo});
       find_breaks(lo, hi, 4 * coarse);
       const std::vector<double> sub = [&] {
@@ -99,4 +99,4 @@ QuadResult integrate_piecewise(V&& value, S&& sig, double a, double b, double ab
   return out;
 }
 
-}  // namespace ssimarch::porosity
+}  // namespace ssimarch

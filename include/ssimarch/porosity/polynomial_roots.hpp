@@ -3,7 +3,7 @@
 // found by safeguarded Newton-bisection. A critical point where |p| is within the rounding bound is a
 // (near-)double root and is reported twice (a tangency), which keeps crossing counts even where a
 // closed-form solver would return a complex pair with a tiny imaginary part
-// (spec/circle-spherocylinder.md section 7).
+// (seed 001, thesis Appendix A §A.6).
 #pragma once
 
 #include <algorithm>
@@ -11,7 +11,7 @@
 #include <cmath>
 #include <limits>
 
-namespace ssimarch::porosity {
+namespace ssimarch {
 
 template <class T>
 struct RealRoots {
@@ -22,7 +22,7 @@ struct RealRoots {
   }
 };
 
-namespace detail {
+namespace internal {
 
 // Insertion sort for the few (<= 9) entries of these fixed arrays (std::sort trips -Warray-bounds
 // false positives on them in GCC 12).
@@ -89,7 +89,7 @@ inline T bracketed_root(const T* c, int n, T lo, T hi, T plo) {
   return x;
 }
 
-}  // namespace detail
+}  // namespace internal
 
 /// Real roots of c[0] + c[1] x + ... + c[n] x^n (1 <= n <= 4, c[n] != 0).
 /// @param rel_tol a critical point x_c with |p(x_c)| <= rel_tol * sum |c_i| |x_c|^i is a double root.
@@ -123,13 +123,13 @@ RealRoots<T> real_roots(const T* c, int n, T rel_tol) {
   is_crit[m++] = false;
   for (int k = 0; k < m; ++k) {
     T mag;
-    val[k] = detail::poly_eval(c, n, pts[k], &mag);
+    val[k] = internal::poly_eval(c, n, pts[k], &mag);
     if (is_crit[k] && std::abs(val[k]) <= rel_tol * mag) val[k] = T(0);
   }
   for (int k = 0; k < m; ++k) {
     if (k > 0) {
       const bool change = (val[k - 1] < T(0) && val[k] > T(0)) || (val[k - 1] > T(0) && val[k] < T(0));
-      if (change) out.push(detail::bracketed_root(c, n, pts[k - 1], pts[k], val[k - 1]));
+      if (change) out.push(internal::bracketed_root(c, n, pts[k - 1], pts[k], val[k - 1]));
     }
     if (is_crit[k] && val[k] == T(0)) {
       // A flat zero: even multiplicity if p keeps its sign across it (tangency), odd otherwise.
@@ -139,8 +139,8 @@ RealRoots<T> real_roots(const T* c, int n, T rel_tol) {
       if ((left > T(0)) == (right > T(0)) || left == T(0) || right == T(0)) out.push(pts[k]);
     }
   }
-  detail::small_sort(out.x.data(), out.count);
+  internal::small_sort(out.x.data(), out.count);
   return out;
 }
 
-}  // namespace ssimarch::porosity
+}  // namespace ssimarch

@@ -1,25 +1,25 @@
 // Case decisions of the circle-spherocylinder kernel, separated from the length construction and
 // templated on the scalar so tests can rerun them in long double and check that the same case is
-// chosen (style.md 3.8). Source: spec/circle-spherocylinder.md sections 2-5.
+// chosen (style.md 3.8). Source: seed 001 (thesis Appendix A §A.2-A.5).
 #pragma once
 
 #include <cmath>
 
-namespace ssimarch::porosity {
+namespace ssimarch {
 
 /// Part of the spherocylinder surface a point or crossing belongs to, by its axial coordinate lambda.
-enum class Piece { minus_cap, cylinder, plus_cap };
+enum class SpherocylinderPart { kMinusCap, kCylinder, kPlusCap };
 
 /// Region rule of A.61/A.65 with the junction band of KernelTolerances::junction: lambda within
 /// l/2 + band counts as cylinder (A.27), beyond it as the caps (A.45, A.57).
 template <class T>
-inline Piece piece_of(T lambda, T half_length, T band) {
-  if (lambda > half_length + band) return Piece::plus_cap;
-  if (lambda < -half_length - band) return Piece::minus_cap;
-  return Piece::cylinder;
+inline SpherocylinderPart piece_of(T lambda, T half_length, T band) {
+  if (lambda > half_length + band) return SpherocylinderPart::kPlusCap;
+  if (lambda < -half_length - band) return SpherocylinderPart::kMinusCap;
+  return SpherocylinderPart::kCylinder;
 }
 
-/// The seed's nullity test for a polynomial coefficient (section 7): |c| <= tol.
+/// The seed's nullity test for a polynomial coefficient (§A.6): |c| <= tol.
 template <class T>
 inline bool negligible(T c, T tol) {
   return std::abs(c) <= tol;
@@ -41,4 +41,4 @@ inline bool pi_in_crossings(T theta_last, T pi, T tol) {
   return std::abs(theta_last - pi) <= tol;
 }
 
-}  // namespace ssimarch::porosity
+}  // namespace ssimarch

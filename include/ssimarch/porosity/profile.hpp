@@ -7,7 +7,8 @@
 // with H = z_max - z_min and the per-particle integrals of particle_integrals.hpp. Only the parts of
 // particles inside the container count (particles sticking out are clipped, not moved or dropped).
 // Work is split over std::thread workers in fixed chunks and reduced in chunk order, so results do not
-// depend on the thread count. Source: spec/circle-spherocylinder.md (kernel), docs/porosity.md.
+// depend on the thread count. Source: seed 001 (thesis Appendix A, the kernel),
+// docs/math/circle_spherocylinder.md §2, docs/porosity.md.
 #pragma once
 
 #include <functional>
@@ -16,7 +17,7 @@
 
 #include "ssimarch/porosity/particle_integrals.hpp"
 
-namespace ssimarch::porosity {
+namespace ssimarch {
 
 struct Container {
   double radius = 1.0;  ///< R > 0, model length
@@ -31,7 +32,7 @@ struct ProfileOptions {
   double tolerance = 1e-8;
   /// Worker threads; 0 = std::thread::hardware_concurrency().
   unsigned threads = 0;
-  Method method = Method::chord;
+  ProfileMethod method = ProfileMethod::kChord;
   KernelTolerances kernel;
   /// Called on the calling thread with the fraction done (0..1), about every 0.1 s, if set.
   std::function<void(double)> progress;
@@ -45,7 +46,7 @@ struct ProfileStats {
   long particles_clipped = 0;  ///< of those, particles sticking out of the container (counted partially)
 };
 
-struct Profile {
+struct PorosityProfile {
   std::vector<double> x;         ///< radii, inner bin edges or heights
   std::vector<double> x_upper;   ///< outer bin edges (bins only)
   std::vector<double> porosity;
@@ -58,26 +59,29 @@ struct PorosityMap {
   ProfileStats stats;
 };
 
-struct Bulk {
+struct BulkPorosity {
   double porosity = 1.0;
   double solid_volume = 0.0;  ///< particle volume inside the container, model length^3
   ProfileStats stats;
 };
 
+/// Every function below throws InputError for an invalid container ("container.radius",
+/// "container.slab") or abscissae ("radii", "bin edges", "heights", "map radii"): not finite, not
+/// increasing, or out of range.
 /// eps(r) at the given radii (each in (0, R]).
-Profile radial_profile(std::span<const Particle> particles, const Container& c, std::span<const double> radii,
+PorosityProfile radial_profile(std::span<const Particle> particles, const Container& c, std::span<const double> radii,
                        const ProfileOptions& opt = {});
 /// Annular bins between consecutive `edges` (increasing, within [0, R]).
-Profile bin_profile(std::span<const Particle> particles, const Container& c, std::span<const double> edges,
+PorosityProfile bin_profile(std::span<const Particle> particles, const Container& c, std::span<const double> edges,
                     const ProfileOptions& opt = {});
 /// eps(z) at the given heights.
-Profile axial_profile(std::span<const Particle> particles, const Container& c, std::span<const double> heights,
+PorosityProfile axial_profile(std::span<const Particle> particles, const Container& c, std::span<const double> heights,
                       const ProfileOptions& opt = {});
 /// eps(r, z) on the grid r x z (point values of the azimuthal average; radii > 0).
 PorosityMap porosity_map(std::span<const Particle> particles, const Container& c, std::span<const double> radii,
                          std::span<const double> heights, const ProfileOptions& opt = {});
 /// Bulk porosity of the container.
-Bulk bulk_porosity(std::span<const Particle> particles, const Container& c, const ProfileOptions& opt = {});
+BulkPorosity bulk_porosity(std::span<const Particle> particles, const Container& c, const ProfileOptions& opt = {});
 
 /// N radii evenly on (0, R]: R k / N, k = 1..N.
 std::vector<double> even_radii(double R, int n);
@@ -86,4 +90,4 @@ std::vector<double> even_edges(double R, int n);
 /// N heights at the centres of N equal slices of [z_min, z_max].
 std::vector<double> slice_centres(double z_min, double z_max, int n);
 
-}  // namespace ssimarch::porosity
+}  // namespace ssimarch

@@ -10,25 +10,25 @@
 #include <cmath>
 #include <numbers>
 
-namespace ssimarch::porosity {
+namespace ssimarch {
 
 enum class QuadStatus {
-  converged,  ///< estimated |error| <= abs_tol (or at the rounding floor of the rule)
-  max_depth,  ///< bisection depth or rule-call budget exhausted; `error` is the remaining estimate
+  kConverged,  ///< estimated |error| <= abs_tol (or at the rounding floor of the rule)
+  kMaxDepth,   ///< bisection depth or rule-call budget exhausted; `error` is the remaining estimate
 };
 
 struct QuadResult {
   double value = 0.0;
   double error = 0.0;     ///< estimated absolute error (sum over accepted subintervals)
   long evaluations = 0;
-  QuadStatus status = QuadStatus::converged;
+  QuadStatus status = QuadStatus::kConverged;
   bool roundoff_limited = false;  ///< the error estimate is the rounding floor of the rule itself
 
   QuadResult& operator+=(const QuadResult& o) {
     value += o.value;
     error += o.error;
     evaluations += o.evaluations;
-    if (o.status != QuadStatus::converged) status = o.status;
+    if (o.status != QuadStatus::kConverged) status = o.status;
     return *this;
   }
 };
@@ -39,7 +39,7 @@ inline constexpr int kQuadMaxDepth = 40;
 /// a few ulps more than the rule's rounding floor) must not split into 2^depth pieces.
 inline constexpr int kQuadMaxRules = 2000;
 
-namespace detail {
+namespace internal {
 
 // QUADPACK qk15 abscissae (Kronrod) and weights; odd indices are the 7-point Gauss nodes.
 inline constexpr double kXgk[8] = {0.991455371120812639206854697526329, 0.949107912342758524526189684047851,
@@ -92,7 +92,7 @@ QuadResult adapt(F& f, double a, double b, double tol, int depth, const QuadResu
   if (whole.error <= tol || whole.roundoff_limited) return whole;
   if (depth <= 0 || budget < 2 || !(b - a > 4 * 2.220446049250313e-16 * std::max(std::abs(a), std::abs(b)))) {
     QuadResult r = whole;
-    r.status = QuadStatus::max_depth;
+    r.status = QuadStatus::kMaxDepth;
     return r;
   }
   const double m = (a + b) / 2;
@@ -104,16 +104,16 @@ QuadResult adapt(F& f, double a, double b, double tol, int depth, const QuadResu
   return out;
 }
 
-}  // namespace detail
+}  // namespace internal
 
 /// Integral of f over [a, b] to absolute tolerance abs_tol (model units of the integral).
 template <class F>
 QuadResult integrate(F&& f, double a, double b, double abs_tol, int max_depth = kQuadMaxDepth,
                      int max_rules = kQuadMaxRules) {
   if (!(b > a)) return {};
-  const QuadResult whole = detail::gk15(f, a, b);
+  const QuadResult whole = internal::gk15(f, a, b);
   int budget = max_rules - 1;
-  return detail::adapt(f, a, b, abs_tol, max_depth, whole, budget);
+  return internal::adapt(f, a, b, abs_tol, max_depth, whole, budget);
 }
 
 /// Integral of f over [a, b] where f may behave like sqrt(x - a) and sqrt(b - x) at the ends
@@ -130,4 +130,4 @@ QuadResult integrate_sqrt_ends(F&& f, double a, double b, double abs_tol, int ma
   return integrate(g, 0.0, 1.0, abs_tol, max_depth);
 }
 
-}  // namespace ssimarch::porosity
+}  // namespace ssimarch

@@ -2,18 +2,18 @@
 // (centre c, radius a) in a disk of radius s = sqrt(a^2 - (z - c_z)^2) centred at horizontal
 // distance rho = |c_xy| from the axis; the circle of radius r meets that disk in the arc of
 // half-angle alpha with cos alpha = (r^2 + rho^2 - s^2) / (2 r rho) (law of cosines).
-// Source: spec/circle-spherocylinder.md section 3 (the cap sphere of A.30-A.44 with l = 0).
+// Source: seed 001 (thesis Appendix A §A.3: the cap sphere of A.30-A.44 with l = 0).
 #pragma once
 
 #include "ssimarch/porosity/particle.hpp"
 
-namespace ssimarch::porosity {
+namespace ssimarch {
 
 /// Length of the circle (radius r > 0, height z, centred on the z axis) inside the closed ball of
 /// the given centre and diameter. Model length.
-double circle_sphere_arc(const Vec3<double>& centre, double diameter, double z, double r);
+double circle_sphere_arc(const Vec3& centre, double diameter, double z, double r);
 
 /// Area of the intersection of two disks (radii r1, r2, centre distance d), the "lens" area.
 double disk_disk_area(double r1, double r2, double d);
 
-}  // namespace ssimarch::porosity
+}  // namespace ssimarch

@@ -2,9 +2,10 @@
 // unit; the defaults are the documented ones (docs/porosity.md, "Tolerances").
 #pragma once
 
-namespace ssimarch::porosity {
+namespace ssimarch {
 
-/// Tolerances of the circle-spherocylinder kernel (spec/circle-spherocylinder.md section 7).
+/// Tolerances of the circle-spherocylinder kernel (seed 001, thesis Appendix A §A.6;
+/// docs/math/circle_spherocylinder.md §1).
 /// The kernel's length scale s is sqrt(r^2 + z^2 + |r_i|^2 + sigma^2/4 + l^2) (model length): all
 /// polynomial coefficients are sums of products of two such lengths, so their rounding error is
 /// about eps * s^2.
@@ -30,4 +31,4 @@ struct KernelTolerances {
   double special = 1e-12;
 };
 
-}  // namespace ssimarch::porosity
+}  // namespace ssimarch

@@ -5,11 +5,11 @@
 #include <filesystem>
 #include <ostream>
 
-namespace ssimarch::porosity {
+namespace ssimarch {
 
 /// Writes into out_dir: packing.csv, radial_profile.csv (r,porosity), bins.csv
 /// (r_inner,r_outer,porosity), radial_profile.svg and summary.json; logs progress lines to `log`.
-/// Takes about 10 s on 2 cores. Throws std::runtime_error on I/O failure.
+/// Takes about 10 s on 2 cores. Throws InputError (located by the path) when a file cannot be written.
 void run_porosity_demo(const std::filesystem::path& out_dir, std::ostream& log);
 
-}  // namespace ssimarch::porosity
+}  // namespace ssimarch

@@ -1,0 +1,69 @@
+// A whole porosity run as one typed job: a packing (a file or particles in memory), a cylindrical
+// container, the profiles wanted with their resolutions, and the accuracy; the result holds every
+// profile and summary the CLI prints or writes. The library's own entry point for `ssimarch
+// porosity`, the Python module and batch/MPI drivers (issue 9); formulas in
+// include/ssimarch/porosity/profile.hpp and docs/porosity.md.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "ssimarch/porosity/packing.hpp"
+#include "ssimarch/porosity/profile.hpp"
+
+namespace ssimarch {
+
+/// What to compute. Counts of 0 mean "not wanted"; at least one profile or only the bulk value.
+struct PorosityJob {
+  /// The packing: read from `packing_file` (CSV or LAMMPS dump, read_packing) when `packing` is empty.
+  std::filesystem::path packing_file;
+  std::vector<Particle> packing;
+  double container_radius = 0.0;      ///< R > 0, packing units
+  std::optional<Slab> height_range;   ///< default: the packing's vertical extent
+  int radial_points = 0;              ///< eps(r) at N radii evenly on (0, R]
+  int bins = 0;                       ///< N equal annular bins on [0, R]
+  int axial_slices = 0;               ///< eps(z) at the centres of N equal slices of the height range
+  int map_radii = 0, map_heights = 0; ///< eps(r, z) at NR x NZ cell centres (both > 0 or both 0)
+  /// Accuracy, threads and integral formulation; its `progress` is replaced by the one below.
+  ProfileOptions options;
+  /// Called with the stage ("bulk", "radial", "axial", "map") and the fraction of it done.
+  std::function<void(std::string_view stage, double fraction)> progress;
+};
+
+/// Wall-clock seconds per stage ("radial" covers points and bins); a stage that did not run stays unset.
+struct PorosityTimings {
+  std::optional<double> bulk, radial, axial, map;
+};
+
+struct PorosityJobResult {
+  long particles = 0;             ///< particles in the packing
+  bool spherocylinders = false;   ///< the packing had axis and length columns
+  Container container;            ///< with the height range actually used
+  BulkPorosity bulk;
+  std::optional<PorosityProfile> radial;  ///< radial_points > 0
+  std::optional<PorosityProfile> bins;    ///< bins > 0
+  std::optional<PorosityProfile> axial;   ///< axial_slices > 0
+  std::optional<PorosityMap> map;         ///< map_radii > 0
+  /// Per-particle integrals that missed the tolerance, over the bulk value and every profile.
+  long unconverged = 0;
+  PorosityTimings timings;
+};
+
+/// Throws InputError, located by the job field's name (e.g. "container_radius"), for an impossible
+/// job. Called by run_porosity_job; exposed so that front ends can check before reading the packing.
+void validate(const PorosityJob& job);
+
+/// Runs the job. Throws InputError for an invalid job or packing (the packing file's errors are
+/// located by file:line[:column]) and when the packing has no particles.
+PorosityJobResult run_porosity_job(const PorosityJob& job);
+
+/// Vertical extent of the particles: the default height range.
+Slab vertical_extent(std::span<const Particle> particles);
+
+/// Radii of the map's cell centres: R (k + 1/2) / N, k = 0..N-1.
+std::vector<double> cell_centres(double R, int n);
+
+}  // namespace ssimarch

@@ -1,0 +1,140 @@
+// The porosity job (see porosity_job.hpp): validation, the packing, the container, then the bulk
+// value and each requested profile in turn, timed per stage.
+#include "ssimarch/pipeline/porosity_job.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <string>
+
+#include "ssimarch/core/error.hpp"
+
+namespace ssimarch {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+std::string number(double v) {
+  std::ostringstream o;
+  o << v;
+  return o.str();
+}
+
+void require_positive_finite(double v, const char* key) {
+  if (!(v > 0) || !std::isfinite(v)) throw InputError(key, "must be a finite number > 0 (got " + number(v) + ")");
+}
+
+void require_count(int n, const char* key) {
+  if (n < 0) throw InputError(key, "must be a count >= 0 (got " + std::to_string(n) + ")");
+}
+
+// The profile options of one stage: the job's, reporting progress under the stage's name.
+ProfileOptions stage_options(const PorosityJob& job, std::string_view stage) {
+  ProfileOptions opt = job.options;
+  opt.progress = nullptr;
+  if (job.progress) opt.progress = [&job, stage](double f) { job.progress(stage, f); };
+  return opt;
+}
+
+std::vector<Particle> load_packing(const PorosityJob& job, bool* spherocylinders) {
+  if (!job.packing.empty()) {
+    *spherocylinders = false;
+    for (const Particle& p : job.packing) *spherocylinders = *spherocylinders || p.length != 0;
+    return job.packing;
+  }
+  if (job.packing_file.empty()) throw InputError("packing", "no packing given (neither particles nor a file)");
+  Packing pk = read_packing(job.packing_file);
+  if (pk.particles.empty()) throw InputError(job.packing_file.string(), "no particles");
+  *spherocylinders = pk.spherocylinders;
+  return std::move(pk.particles);
+}
+
+void run_radial_stages(const PorosityJob& job, std::span<const Particle> ps, PorosityJobResult& out) {
+  const Container& c = out.container;
+  if (job.radial_points > 0 || job.bins > 0) {
+    const auto t0 = Clock::now();
+    const ProfileOptions opt = stage_options(job, "radial");
+    if (job.radial_points > 0) {
+      out.radial = radial_profile(ps, c, even_radii(c.radius, job.radial_points), opt);
+      out.unconverged += out.radial->stats.unconverged;
+    }
+    if (job.bins > 0) {
+      out.bins = bin_profile(ps, c, even_edges(c.radius, job.bins), opt);
+      out.unconverged += out.bins->stats.unconverged;
+    }
+    out.timings.radial = seconds_since(t0);
+  }
+  if (job.axial_slices > 0) {
+    const auto t0 = Clock::now();
+    out.axial = axial_profile(ps, c, slice_centres(c.slab.z_min, c.slab.z_max, job.axial_slices),
+                              stage_options(job, "axial"));
+    out.unconverged += out.axial->stats.unconverged;
+    out.timings.axial = seconds_since(t0);
+  }
+  if (job.map_radii > 0) {
+    const auto t0 = Clock::now();
+    out.map = porosity_map(ps, c, cell_centres(c.radius, job.map_radii),
+                           slice_centres(c.slab.z_min, c.slab.z_max, job.map_heights), stage_options(job, "map"));
+    out.unconverged += out.map->stats.unconverged;
+    out.timings.map = seconds_since(t0);
+  }
+}
+
+}  // namespace
+
+void validate(const PorosityJob& job) {
+  require_positive_finite(job.container_radius, "container_radius");
+  require_positive_finite(job.options.tolerance, "options.tolerance");
+  require_count(job.radial_points, "radial_points");
+  require_count(job.bins, "bins");
+  require_count(job.axial_slices, "axial_slices");
+  require_count(job.map_radii, "map_radii");
+  require_count(job.map_heights, "map_heights");
+  if ((job.map_radii > 0) != (job.map_heights > 0))
+    throw InputError("map_radii", "a map needs both counts > 0 (got " + std::to_string(job.map_radii) + " x " +
+                                      std::to_string(job.map_heights) + ")");
+  if (job.height_range) {
+    const Slab& s = *job.height_range;
+    if (!(s.z_max > s.z_min) || !std::isfinite(s.z_min) || !std::isfinite(s.z_max))
+      throw InputError("height_range", "needs finite z_min < z_max (got [" + number(s.z_min) + ", " +
+                                           number(s.z_max) + "])");
+  }
+}
+
+PorosityJobResult run_porosity_job(const PorosityJob& job) {
+  validate(job);
+  PorosityJobResult out;
+  const std::vector<Particle> ps = load_packing(job, &out.spherocylinders);
+  out.particles = static_cast<long>(ps.size());
+  out.container.radius = job.container_radius;
+  out.container.slab = job.height_range ? *job.height_range : vertical_extent(ps);
+
+  const auto t0 = Clock::now();
+  out.bulk = bulk_porosity(ps, out.container, stage_options(job, "bulk"));
+  out.unconverged = out.bulk.stats.unconverged;
+  out.timings.bulk = seconds_since(t0);
+  run_radial_stages(job, ps, out);
+  return out;
+}
+
+Slab vertical_extent(std::span<const Particle> particles) {
+  double z0 = std::numeric_limits<double>::infinity(), z1 = -z0;
+  for (const auto& p : particles) {
+    const double ext = std::abs(p.axis.z()) * p.half_length() + p.radius();
+    z0 = std::min(z0, p.centre.z() - ext);
+    z1 = std::max(z1, p.centre.z() + ext);
+  }
+  return {z0, z1};
+}
+
+std::vector<double> cell_centres(double R, int n) {
+  std::vector<double> rs(static_cast<std::size_t>(std::max(n, 0)));
+  for (int k = 0; k < n; ++k) rs[static_cast<std::size_t>(k)] = R * (k + 0.5) / n;
+  return rs;
+}
+
+}  // namespace ssimarch
