@@ -6,6 +6,7 @@
 #include <map>
 
 #include "commands.hpp"
+#include "flag_error.hpp"
 #include "ssimarch/pipeline/packing_job.hpp"
 #include "ssimarch/porosity/packing.hpp"
 
@@ -50,9 +51,7 @@ PackingJobResult run_job(const PackingJob& job) {
   try {
     return run_packing_job(job);
   } catch (const InputError& e) {
-    const auto flag = kFlagOfOption.find(e.where());
-    if (flag != kFlagOfOption.end()) throw CliError(flag->second + ": " + e.message());
-    throw CliError(e.what());
+    throw flag_error(e, kFlagOfOption);
   }
 }
 

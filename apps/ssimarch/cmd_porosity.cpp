@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "commands.hpp"
+#include "flag_error.hpp"
 #include "ssimarch/io/profile_plot.hpp"
 #include "ssimarch/pipeline/porosity_job.hpp"
 
@@ -100,9 +101,7 @@ PorosityJobResult run_job(const PorosityJob& job) {
   try {
     return run_porosity_job(job);
   } catch (const InputError& e) {
-    const auto flag = kFlagOfJobField.find(e.where());
-    if (flag != kFlagOfJobField.end()) throw CliError(flag->second + ": " + e.message());
-    throw CliError(e.what());
+    throw flag_error(e, kFlagOfJobField);
   }
 }
 
