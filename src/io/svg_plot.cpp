@@ -1,13 +1,13 @@
 #include "ssimarch/io/svg_plot.hpp"
 
-#include "ssimarch/io/svg_canvas.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <iomanip>
 #include <sstream>
 #include <vector>
+
+#include "ssimarch/io/svg_canvas.hpp"
 
 namespace ssimarch {
 

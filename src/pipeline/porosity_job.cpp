@@ -2,6 +2,7 @@
 // value and each requested profile in turn, timed per stage.
 #include "ssimarch/pipeline/porosity_job.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -40,17 +41,17 @@ ProfileOptions stage_options(const PorosityJob& job, std::string_view stage) {
   return opt;
 }
 
-std::vector<Particle> load_packing(const PorosityJob& job, bool* spherocylinders) {
+// The job's particles: its own, or those of its packing file (read into `storage`).
+std::span<const Particle> packing_of(const PorosityJob& job, Packing& storage, bool* spherocylinders) {
   if (!job.packing.empty()) {
-    *spherocylinders = false;
-    for (const Particle& p : job.packing) *spherocylinders = *spherocylinders || p.length != 0;
+    *spherocylinders = std::any_of(job.packing.begin(), job.packing.end(), [](const Particle& p) { return p.length != 0; });
     return job.packing;
   }
   if (job.packing_file.empty()) throw InputError("packing", "no packing given (neither particles nor a file)");
-  Packing pk = read_packing(job.packing_file);
-  if (pk.particles.empty()) throw InputError(job.packing_file.string(), "no particles");
-  *spherocylinders = pk.spherocylinders;
-  return std::move(pk.particles);
+  storage = read_packing(job.packing_file);
+  if (storage.particles.empty()) throw InputError(job.packing_file.string(), "no particles");
+  *spherocylinders = storage.spherocylinders;
+  return storage.particles;
 }
 
 void run_radial_stages(const PorosityJob& job, std::span<const Particle> ps, PorosityJobResult& out) {
@@ -108,7 +109,8 @@ void validate(const PorosityJob& job) {
 PorosityJobResult run_porosity_job(const PorosityJob& job) {
   validate(job);
   PorosityJobResult out;
-  const std::vector<Particle> ps = load_packing(job, &out.spherocylinders);
+  Packing read;
+  const std::span<const Particle> ps = packing_of(job, read, &out.spherocylinders);
   out.particles = static_cast<long>(ps.size());
   out.container.radius = job.container_radius;
   out.container.slab = job.height_range ? *job.height_range : vertical_extent(ps);

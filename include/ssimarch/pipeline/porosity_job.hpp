@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <functional>
 #include <optional>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -40,7 +41,7 @@ struct PorosityTimings {
 
 struct PorosityJobResult {
   long particles = 0;             ///< particles in the packing
-  bool spherocylinders = false;   ///< the packing had axis and length columns
+  bool spherocylinders = false;   ///< the file had axis and length columns (particles given: any l > 0)
   Container container;            ///< with the height range actually used
   BulkPorosity bulk;
   std::optional<PorosityProfile> radial;  ///< radial_points > 0
