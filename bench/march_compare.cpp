@@ -41,9 +41,9 @@ namespace {
 Surface parametric(const std::string& x, const std::string& y, const std::string& z, Interval u, Interval v,
                    bool periodic_u = false, bool periodic_v = false) {
   std::vector<std::string> vars = {"u", "v"};
-  expr::Constants c;
-  std::array<expr::Program, 3> p = {expr::Program::compile_or_throw(x, vars, c), expr::Program::compile_or_throw(y, vars, c),
-                                    expr::Program::compile_or_throw(z, vars, c)};
+  Constants c;
+  std::array<Program, 3> p = {Program::compile_or_throw(x, vars, c), Program::compile_or_throw(y, vars, c),
+                                    Program::compile_or_throw(z, vars, c)};
   return ExprParametric(p, ParamDomain{u, v, periodic_u, periodic_v});
 }
 

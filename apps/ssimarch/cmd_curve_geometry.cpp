@@ -18,13 +18,13 @@ struct CurveGeometryArgs {
   double step = 0.01;
 };
 
-Vec3 parse_xyz(const std::string& text, const expr::Constants& constants, const std::string& option) {
+Vec3 parse_xyz(const std::string& text, const Constants& constants, const std::string& option) {
   std::vector<double> v;
   std::size_t start = 0;
   while (true) {
     std::size_t comma = text.find(',', start);
     std::string part = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    v.push_back(number_from_json(nlohmann::json(part), constants, option + " component " + std::to_string(v.size() + 1)));
+    v.push_back(evaluate_constant(part, constants, option + " component " + std::to_string(v.size() + 1)));
     if (comma == std::string::npos) break;
     start = comma + 1;
   }
@@ -40,21 +40,16 @@ nlohmann::json num_json(double x) { return std::isfinite(x) ? nlohmann::json(x) 
 void run_curve_geometry(const CurveGeometryArgs& a) {
   if (!(a.step > 0) || !std::isfinite(a.step)) throw CliError("--step must be a positive length, got " + std::to_string(a.step));
   Scene scene = load_scene(a.scene);
-  const IntersectionSpec* spec = nullptr;
-  std::string known;
-  for (const auto& s : scene.intersections) {
-    if (s.name == a.intersection) spec = &s;
-    known += (known.empty() ? "" : ", ") + s.name;
-  }
-  if (!spec)
+  const IntersectionSpec* spec = scene.intersection(a.intersection);
+  if (!spec) {
+    const std::string known = scene.intersection_names();
     throw CliError("--intersection: the scene has no intersection \"" + a.intersection + "\" (it has: " +
                    (known.empty() ? std::string("none") : known) + ")");
-  std::string method_name = a.method;
-  if (method_name.empty())
-    method_name = spec->extra_options.contains("geometry") ? spec->extra_options["geometry"].get<std::string>() : "exact";
-  geometry::GeometryMethod method;
-  if (!geometry::parse(method_name, &method))
-    throw CliError("--method: unknown method \"" + method_name + "\" (known: " + geometry::method_names() + ")");
+  }
+  geometry::GeometryMethod method = spec->options.geometry.value_or(geometry::GeometryMethod::kExact);
+  if (!a.method.empty() && !geometry::parse(a.method, &method))
+    throw CliError("--method: unknown method \"" + a.method + "\" (known: " + geometry::method_names() + ")");
+  const std::string method_name(geometry::to_string(method));
   const Vec3 at = parse_xyz(a.at, scene.constants, "--at");
   std::optional<Vec3> toward;
   if (!a.toward.empty()) toward = parse_xyz(a.toward, scene.constants, "--toward");

@@ -7,9 +7,9 @@
 
 #include "commands.hpp"
 #include "demo_scenes.hpp"
-#include "ssimarch/io/run.hpp"
 #include "ssimarch/io/scene.hpp"
 #include "ssimarch/io/svg_plot.hpp"
+#include "ssimarch/pipeline/trace_job.hpp"
 #include "ssimarch/porosity/demo.hpp"
 #include "trace_output.hpp"
 
