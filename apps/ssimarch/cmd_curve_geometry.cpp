@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "ssimarch/geometry/intersection_geometry.hpp"
 #include "ssimarch/io/scene.hpp"
+#include "ssimarch/pipeline/point_geometry.hpp"
 
 namespace ssimarch::cli {
 
@@ -54,26 +55,20 @@ void run_curve_geometry(const CurveGeometryArgs& a) {
   std::optional<Vec3> toward;
   if (!a.toward.empty()) toward = parse_xyz(a.toward, scene.constants, "--toward");
 
-  Problem problem = scene.problem(*spec);
+  const Problem problem = scene.problem(*spec);
   nlohmann::json out{{"intersection", spec->name}, {"method", method_name}, {"at", vec_json(at)}};
-  auto x = geometry::project_to_curve(problem, at);
-  if (!x) {
+  const PointGeometry r = geometry_at_point(problem, {at, method, a.step, toward});
+  if (!r.x) {
     out["status"] = "not-on-curve";
     out["message"] = "Newton from the nearest surface points did not converge onto the curve";
     std::cout << out.dump(2) << "\n";
     g_exit_status = 1;
     return;
   }
-  geometry::GeometryContext ctx;
-  const Vec3* o = toward ? &*toward : nullptr;
-  const bool sampled = method == geometry::GeometryMethod::kEstimate ||
-                       method == geometry::GeometryMethod::kBarnhillKersey || method == geometry::GeometryMethod::kMixed;
-  if (sampled) ctx = geometry::sample_context(problem, *x, a.step, o, 2);
-  if (o) ctx.orientation = *o;
-  geometry::CurveGeometry g = geometry::evaluate_geometry(problem, *x, method, ctx);
-  out["point"] = vec_json(problem.point(*x));
-  out["distance"] = num_json((problem.point(*x) - at).norm());
-  out["unknowns"] = std::vector<double>(x->data(), x->data() + x->size());
+  const geometry::CurveGeometry& g = r.geometry;
+  out["point"] = vec_json(r.point);
+  out["distance"] = num_json(r.distance);
+  out["unknowns"] = std::vector<double>(r.x->data(), r.x->data() + r.x->size());
   out["t"] = vec_json(g.t);
   out["n"] = vec_json(g.n);
   out["b"] = vec_json(g.b);
@@ -83,9 +78,9 @@ void run_curve_geometry(const CurveGeometryArgs& a) {
   out["theta"] = num_json(g.theta);
   out["status"] = std::string(geometry::to_string(g.status));
   out["tau_convention"] = "standard: (c' x c'').c''' / |c' x c''|^2 (the thesis prints -tau)";
-  if (sampled) {
+  if (r.sampled) {
     out["step"] = a.step;
-    out["samples"] = ctx.previous.size() + 1 + ctx.next.size();
+    out["samples"] = r.samples;
   }
   std::cout << out.dump(2) << "\n";
 }

@@ -28,6 +28,7 @@ struct Range {
   bool lo_open = false, hi_open = false;
   bool zero_is_automatic = false;
   std::string_view why;  // appended to the rule, e.g. why a bound exists
+  bool infinity_is_unbounded = false;  // the default +inf means "no bound" (a file cannot write inf)
 
   bool admits(double x) const {
     if (zero_is_automatic && x == 0) return true;
@@ -71,6 +72,7 @@ struct Row {
   Setter set_number;
   ChoiceSetter set_choice;
   Getter get;
+  std::function<double(const TraceJobOptions&)> number;  // kReal, kInteger: the value as a double
 };
 
 template <class T>
@@ -80,7 +82,8 @@ Row number_row(TraceOptionSpec spec, Range range, T TraceOptions::*field) {
   spec.rule = range_rule(range, integer);
   return Row{std::move(spec), range,
              [field](TraceJobOptions* o, double x) { o->trace.*field = static_cast<T>(x); }, {},
-             [field](const TraceJobOptions& o) { return shortest(static_cast<double>(o.trace.*field)); }};
+             [field](const TraceJobOptions& o) { return shortest(static_cast<double>(o.trace.*field)); },
+             [field](const TraceJobOptions& o) { return static_cast<double>(o.trace.*field); }};
 }
 
 template <class E>
@@ -90,7 +93,7 @@ Row choice_row(TraceOptionSpec spec, std::initializer_list<E> values, E TraceOpt
   spec.rule = "one of " + join(spec.choices);
   return Row{std::move(spec), {}, {},
              [field](TraceJobOptions* o, std::string_view s) { return parse(s, &(o->trace.*field)); },
-             [field](const TraceJobOptions& o) { return std::string(to_string(o.trace.*field)); }};
+             [field](const TraceJobOptions& o) { return std::string(to_string(o.trace.*field)); }, {}};
 }
 
 Row geometry_row() {
@@ -111,7 +114,8 @@ Row geometry_row() {
                o->geometry = m;
                return true;
              },
-             [](const TraceJobOptions& o) { return o.geometry ? std::string(geometry::to_string(*o.geometry)) : "none"; }};
+             [](const TraceJobOptions& o) { return o.geometry ? std::string(geometry::to_string(*o.geometry)) : "none"; },
+             {}};
 }
 
 std::vector<Row> make_rows() {
@@ -153,7 +157,7 @@ std::vector<Row> make_rows() {
   rows.push_back(number_row(describe("max_points", "", "200000", "per curve"),
                             Range{2, 1e15, false, false, false, {}}, &TraceOptions::max_points));
   rows.push_back(number_row(describe("max_length", "model length", "unbounded", "per curve"),
-                            Range{0, kInf, true, false, false, {}}, &TraceOptions::max_length));
+                            Range{0, kInf, true, false, false, {}, true}, &TraceOptions::max_length));
   rows.push_back(number_row(describe("start_samples", "", "24", "samples per parameter direction (per axis, at most 16, for implicit pairs) when searching "
                               "start points"),
                             Range{2, 1000, false, false, false, {}}, &TraceOptions::start_samples));
@@ -177,15 +181,15 @@ double number_of(const OptionValue& value, const Constants& constants, const std
   return evaluate_constant(std::get<std::string>(value), constants, where);
 }
 
-void apply_number(const Row& row, double x, const std::string& where, TraceJobOptions* options) {
+void check_number(const Row& row, double x, const std::string& where) {
   const bool integer = row.spec.type == TraceOptionSpec::Type::kInteger;
+  if (row.range.infinity_is_unbounded && x == kInf) return;
   if (!std::isfinite(x)) throw InputError(where, "must be " + row.spec.rule + ", got a value that is not finite");
   if (x != 0 && std::fabs(x) < std::numeric_limits<double>::min())
     throw InputError(where, "must be " + row.spec.rule + ", got the subnormal " + shortest(x) +
                                 " (below 2.2e-308 double precision loses digits)");
   if (integer && x != std::floor(x)) throw InputError(where, "must be " + row.spec.rule + ", got " + shortest(x));
   if (!row.range.admits(x)) throw InputError(where, "must be " + row.spec.rule + ", got " + shortest(x));
-  row.set_number(options, x);
 }
 
 }  // namespace
@@ -222,7 +226,9 @@ void apply_trace_option(const TraceOptionSpec& spec, const OptionValue& value, c
                         const std::string& where, TraceJobOptions* options) {
   const Row& row = row_of(spec);
   if (spec.type != TraceOptionSpec::Type::kChoice) {
-    apply_number(row, number_of(value, constants, where), where, options);
+    const double x = number_of(value, constants, where);
+    check_number(row, x, where);
+    row.set_number(options, x);
     return;
   }
   const std::string* name = std::get_if<std::string>(&value);
@@ -232,6 +238,10 @@ void apply_trace_option(const TraceOptionSpec& spec, const OptionValue& value, c
 }
 
 void check_trace_options(const TraceJobOptions& options, const std::string& where) {
+  // Every value by its own rule (options built in code have not been through apply_trace_option),
+  // then the rules between values.
+  for (const Row& row : rows())
+    if (row.number) check_number(row, row.number(options), where + "." + std::string(row.spec.key));
   std::string error;
   if (!options.trace.is_valid(&error)) throw InputError(where, error);
 }

@@ -24,7 +24,8 @@ std::vector<IntersectionSpec> select_intersections(const Scene& scene, const Tra
       continue;
     for (const OptionOverride& o : request.overrides)
       apply_trace_option(*o.option, o.value, scene.constants, o.where, &spec.options);
-    if (!request.overrides.empty()) check_trace_options(spec.options, "command-line options");
+    check_trace_options(spec.options, request.overrides.empty() ? scene.source + ": " + spec.name + ".options"
+                                                                : std::string("command-line options"));
     selected.push_back(std::move(spec));
   }
   if (selected.empty()) throw InputError(scene.source, "the scene has no intersections to trace");

@@ -131,7 +131,11 @@ TEST(OptionTable, CommandLineTextIsParsedByTheSameRules) {
   EXPECT_EQ(o.trace.max_points, 1000);
   EXPECT_THROW(apply_trace_option(*find_trace_option("step_length"), std::numeric_limits<double>::quiet_NaN(), c, "x", &o),
                InputError);
-  EXPECT_THROW(apply_trace_option(*find_trace_option("max_length"), std::numeric_limits<double>::infinity(), c, "x", &o),
+  EXPECT_THROW(apply_trace_option(*find_trace_option("step_length"), std::numeric_limits<double>::infinity(), c, "x", &o),
+               InputError);
+  // max_length's default, +inf, means unbounded (no file or flag can write it).
+  EXPECT_NO_THROW(apply_trace_option(*find_trace_option("max_length"), std::numeric_limits<double>::infinity(), c, "x", &o));
+  EXPECT_THROW(apply_trace_option(*find_trace_option("max_length"), -std::numeric_limits<double>::infinity(), c, "x", &o),
                InputError);
 }
 

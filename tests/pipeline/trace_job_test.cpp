@@ -84,3 +84,26 @@ TEST(TraceJob, AnOverrideGivesTheSameCurvesAsTheSceneKey) {
 
 }  // namespace
 }  // namespace ssimarch
+
+namespace ssimarch {
+namespace {
+
+// A scene built in code (as Python or an MPI driver would) is checked by the same rules.
+TEST(TraceJob, OptionsSetInCodeAreCheckedByTheTable) {
+  Scene scene = parse_scene(kScene, "s.json");
+  scene.intersections[1].options.trace.step_length = 1e-320;
+  try {
+    select_intersections(scene, {});
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("s.json: ellipse.options.step_length: must be a finite number >= 0 (0 = automatic), got the subnormal"));
+  }
+  scene.intersections[1].options.trace.step_length = 0.1;
+  scene.intersections[1].options.trace.taylor_order = 9;
+  EXPECT_THROW(select_intersections(scene, {}), InputError);
+  scene.intersections[1].options.trace.taylor_order = 4;
+  EXPECT_EQ(select_intersections(scene, {}).size(), 2u);  // max_length's default +inf means unbounded
+}
+
+}  // namespace
+}  // namespace ssimarch

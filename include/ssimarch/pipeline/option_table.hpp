@@ -56,8 +56,8 @@ std::string trace_option_keys();
 void apply_trace_option(const TraceOptionSpec& spec, const OptionValue& value, const Constants& constants,
                         const std::string& where, TraceJobOptions* options);
 
-/// The rules between options (min_step <= step_length, ...), after every key is applied.
-/// Throws InputError(where, ...).
+/// Every option by its rule (for options set in code), then the rules between options
+/// (min_step <= step_length, ...). Throws InputError(where [+ "." + key], ...).
 void check_trace_options(const TraceJobOptions& options, const std::string& where);
 
 /// The option as text in a scene or on the command line ("taylor", "0.05"), for help texts.
