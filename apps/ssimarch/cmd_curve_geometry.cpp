@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "ssimarch/geometry/intersection_geometry.hpp"
 #include "ssimarch/io/scene.hpp"
+#include "ssimarch/pipeline/point_geometry.hpp"
 
 namespace ssimarch::cli {
 
@@ -18,13 +19,13 @@ struct CurveGeometryArgs {
   double step = 0.01;
 };
 
-Vec3 parse_xyz(const std::string& text, const expr::Constants& constants, const std::string& option) {
+Vec3 parse_xyz(const std::string& text, const Constants& constants, const std::string& option) {
   std::vector<double> v;
   std::size_t start = 0;
   while (true) {
     std::size_t comma = text.find(',', start);
     std::string part = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    v.push_back(number_from_json(nlohmann::json(part), constants, option + " component " + std::to_string(v.size() + 1)));
+    v.push_back(evaluate_constant(part, constants, option + " component " + std::to_string(v.size() + 1)));
     if (comma == std::string::npos) break;
     start = comma + 1;
   }
@@ -40,45 +41,34 @@ nlohmann::json num_json(double x) { return std::isfinite(x) ? nlohmann::json(x) 
 void run_curve_geometry(const CurveGeometryArgs& a) {
   if (!(a.step > 0) || !std::isfinite(a.step)) throw CliError("--step must be a positive length, got " + std::to_string(a.step));
   Scene scene = load_scene(a.scene);
-  const IntersectionSpec* spec = nullptr;
-  std::string known;
-  for (const auto& s : scene.intersections) {
-    if (s.name == a.intersection) spec = &s;
-    known += (known.empty() ? "" : ", ") + s.name;
-  }
-  if (!spec)
+  const IntersectionSpec* spec = scene.intersection(a.intersection);
+  if (!spec) {
+    const std::string known = scene.intersection_names();
     throw CliError("--intersection: the scene has no intersection \"" + a.intersection + "\" (it has: " +
                    (known.empty() ? std::string("none") : known) + ")");
-  std::string method_name = a.method;
-  if (method_name.empty())
-    method_name = spec->extra_options.contains("geometry") ? spec->extra_options["geometry"].get<std::string>() : "exact";
-  geometry::GeometryMethod method;
-  if (!geometry::parse(method_name, &method))
-    throw CliError("--method: unknown method \"" + method_name + "\" (known: " + geometry::method_names() + ")");
+  }
+  geometry::GeometryMethod method = spec->options.geometry.value_or(geometry::GeometryMethod::kExact);
+  if (!a.method.empty() && !geometry::parse(a.method, &method))
+    throw CliError("--method: unknown method \"" + a.method + "\" (known: " + geometry::method_names() + ")");
+  const std::string method_name(geometry::to_string(method));
   const Vec3 at = parse_xyz(a.at, scene.constants, "--at");
   std::optional<Vec3> toward;
   if (!a.toward.empty()) toward = parse_xyz(a.toward, scene.constants, "--toward");
 
-  Problem problem = scene.problem(*spec);
+  const Problem problem = scene.problem(*spec);
   nlohmann::json out{{"intersection", spec->name}, {"method", method_name}, {"at", vec_json(at)}};
-  auto x = geometry::project_to_curve(problem, at);
-  if (!x) {
+  const PointGeometry r = geometry_at_point(problem, {at, method, a.step, toward});
+  if (!r.x) {
     out["status"] = "not-on-curve";
     out["message"] = "Newton from the nearest surface points did not converge onto the curve";
     std::cout << out.dump(2) << "\n";
     g_exit_status = 1;
     return;
   }
-  geometry::GeometryContext ctx;
-  const Vec3* o = toward ? &*toward : nullptr;
-  const bool sampled = method == geometry::GeometryMethod::kEstimate ||
-                       method == geometry::GeometryMethod::kBarnhillKersey || method == geometry::GeometryMethod::kMixed;
-  if (sampled) ctx = geometry::sample_context(problem, *x, a.step, o, 2);
-  if (o) ctx.orientation = *o;
-  geometry::CurveGeometry g = geometry::evaluate_geometry(problem, *x, method, ctx);
-  out["point"] = vec_json(problem.point(*x));
-  out["distance"] = num_json((problem.point(*x) - at).norm());
-  out["unknowns"] = std::vector<double>(x->data(), x->data() + x->size());
+  const geometry::CurveGeometry& g = r.geometry;
+  out["point"] = vec_json(r.point);
+  out["distance"] = num_json(r.distance);
+  out["unknowns"] = std::vector<double>(r.x->data(), r.x->data() + r.x->size());
   out["t"] = vec_json(g.t);
   out["n"] = vec_json(g.n);
   out["b"] = vec_json(g.b);
@@ -88,9 +78,9 @@ void run_curve_geometry(const CurveGeometryArgs& a) {
   out["theta"] = num_json(g.theta);
   out["status"] = std::string(geometry::to_string(g.status));
   out["tau_convention"] = "standard: (c' x c'').c''' / |c' x c''|^2 (the thesis prints -tau)";
-  if (sampled) {
+  if (r.sampled) {
     out["step"] = a.step;
-    out["samples"] = ctx.previous.size() + 1 + ctx.next.size();
+    out["samples"] = r.samples;
   }
   std::cout << out.dump(2) << "\n";
 }

@@ -7,10 +7,10 @@
 
 #include "commands.hpp"
 #include "demo_scenes.hpp"
-#include "ssimarch/io/run.hpp"
 #include "ssimarch/io/scene.hpp"
 #include "ssimarch/io/svg_plot.hpp"
 #include "ssimarch/io/porosity_demo.hpp"
+#include "ssimarch/pipeline/trace_job.hpp"
 #include "trace_output.hpp"
 
 namespace ssimarch::cli {

@@ -20,13 +20,13 @@ struct EvalArgs {
   int order = 2;
 };
 
-std::vector<double> parse_point(const std::string& text, const expr::Constants& constants) {
+std::vector<double> parse_point(const std::string& text, const Constants& constants) {
   std::vector<double> v;
   std::size_t start = 0;
   while (true) {
     std::size_t comma = text.find(',', start);
     std::string part = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    v.push_back(number_from_json(nlohmann::json(part), constants, "--at component " + std::to_string(v.size() + 1)));
+    v.push_back(evaluate_constant(part, constants, "--at component " + std::to_string(v.size() + 1)));
     if (comma == std::string::npos) break;
     start = comma + 1;
   }

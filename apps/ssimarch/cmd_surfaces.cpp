@@ -2,7 +2,7 @@
 #include <iostream>
 
 #include "commands.hpp"
-#include "ssimarch/surface/surface_json.hpp"
+#include "ssimarch/io/surface_json.hpp"
 
 namespace ssimarch::cli {
 

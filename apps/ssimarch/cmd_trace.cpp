@@ -1,11 +1,10 @@
 // ssimarch trace SCENE.json: traces the scene's intersections and writes the curves.
 #include <iostream>
-#include <algorithm>
 #include <memory>
 
 #include "commands.hpp"
-#include "ssimarch/io/run.hpp"
 #include "ssimarch/io/scene.hpp"
+#include "ssimarch/pipeline/trace_job.hpp"
 #include "trace_output.hpp"
 
 namespace ssimarch::cli {
@@ -17,49 +16,47 @@ struct TraceArgs {
   std::string output = "-";
   std::string format;
   std::vector<std::string> only;
-  std::string predictor, corrector, step, geometry;
-  double step_length = -1, deviation = -1, tolerance = -1;
   bool quiet = false;
+  bool list_options = false;
+  // One flag per row of the option table; values stay text until the scene's constants are known.
+  std::vector<std::pair<const TraceOptionSpec*, CLI::Option*>> option_flags;
+  std::vector<std::string> option_values;
 };
 
-// The CLI's option flags as a scene "options" object, so they are validated by the same code.
-nlohmann::json overrides(const TraceArgs& a) {
-  nlohmann::json o = nlohmann::json::object();
-  if (!a.predictor.empty()) o["predictor"] = a.predictor;
-  if (!a.corrector.empty()) o["corrector"] = a.corrector;
-  if (!a.step.empty()) o["step"] = a.step;
-  if (a.step_length >= 0) o["step_length"] = a.step_length;
-  if (a.deviation >= 0) o["deviation"] = a.deviation;
-  if (a.tolerance >= 0) o["tolerance"] = a.tolerance;
-  if (!a.geometry.empty()) o["geometry"] = a.geometry;
-  return o;
+TraceRequest request_of(const TraceArgs& a) {
+  TraceRequest request{a.only, "--intersection", {}};
+  for (std::size_t i = 0; i < a.option_flags.size(); ++i) {
+    const auto& [spec, flag] = a.option_flags[i];
+    if (flag->count() > 0) request.overrides.push_back({spec, a.option_values[i], spec->flag()});
+  }
+  return request;
 }
 
 void run_trace(const TraceArgs& a) {
-  Scene scene = load_scene(a.scene);
-  nlohmann::json o = overrides(a);
-  std::vector<IntersectionRun> runs;
-  for (const std::string& name : a.only) {
-    bool found = false;
-    for (const auto& s : scene.intersections) found = found || s.name == name;
-    if (!found) {
-      std::string known;
-      for (const auto& s : scene.intersections) known += (known.empty() ? "" : ", ") + s.name;
-      throw CliError("--intersection: the scene has no intersection \"" + name + "\" (it has: " + known + ")");
-    }
+  if (a.list_options) {
+    std::cout << trace_options_markdown();
+    return;
   }
-  for (auto spec : scene.intersections) {
-    if (!a.only.empty() && std::find(a.only.begin(), a.only.end(), spec.name) == a.only.end()) continue;
-    apply_trace_options(o, scene.constants, "command-line options", &spec.options, &spec.extra_options);
-    runs.push_back(run_intersection(scene, spec));
-  }
-  if (runs.empty()) throw CliError(a.scene + ": the scene has no intersections to trace");
+  if (a.scene.empty()) throw CliError("trace: a scene file is required (ssimarch trace SCENE.json; --help)");
+  const Scene scene = load_scene(a.scene);
+  const TraceJobResult job = trace_scene(scene, request_of(a));
   OutputFormat f = a.format.empty() ? (a.output == "-" ? OutputFormat::kJson : format_from_path(a.output)) : parse_format(a.format);
-  PointDecorator decorate = make_geometry_decorator(runs);
-  write_runs(runs, f, a.output, decorate);
-  if (!a.quiet) print_summary(runs);
-  for (const auto& r : runs)
-    if (r.result.curves.empty() || r.result.failed_starts > 0) g_exit_status = 1;
+  write_runs(job.runs, f, a.output);
+  if (!a.quiet) print_summary(job.runs);
+  if (!job.complete()) g_exit_status = 1;
+}
+
+// The flags of the option table: --step-length, --taylor-order, ... with the table's help.
+void add_option_flags(CLI::App* cmd, TraceArgs* args) {
+  const auto& table = trace_option_table();
+  args->option_values.resize(table.size());
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    const TraceOptionSpec& o = table[i];
+    std::string help = std::string(o.help) + " (overrides the scene; " + o.rule + "; default " + std::string(o.default_text) + ")";
+    CLI::Option* flag = cmd->add_option(o.flag(), args->option_values[i], help);
+    flag->type_name(o.type == TraceOptionSpec::Type::kChoice ? "NAME" : "VALUE");
+    args->option_flags.emplace_back(&o, flag);
+  }
 }
 
 }  // namespace
@@ -70,22 +67,19 @@ void add_trace_command(CLI::App& app) {
   cmd->footer(
       "Output: JSON {\"intersections\": [...]} (default; schema in docs/output-format.md), CSV (one row per point), "
       "OBJ (polylines) or SVG (pictures). A summary goes to stderr.\n"
+      "Option values may be numbers or expressions of the scene's constants; each option is a key of a scene's "
+      "\"options\" (docs/scene-format.md; --list-options prints the table).\n"
       "Exit status: 0 traced; 1 an intersection found no curve or a start point could not be put on the curve; "
       "2 invalid input.");
-  cmd->add_option("scene", args->scene, "Scene file (JSON, docs/scene-format.md)")->required();
+  cmd->add_option("scene", args->scene, "Scene file (JSON, docs/scene-format.md)");
   cmd->add_option("-o,--output", args->output, "Output file; '-' for standard output (default)");
   cmd->add_option("--format", args->format, "json | csv | obj | svg (default: from the output file's extension, else json)");
   cmd->add_option("--intersection", args->only, "Trace only the intersection(s) with this name (repeatable)");
-  cmd->add_option("--predictor", args->predictor, "Predictor for every intersection (overrides the scene; docs/marching.md)");
-  cmd->add_option("--corrector", args->corrector, "Corrector for every intersection (overrides the scene)");
-  cmd->add_option("--step", args->step, "Step rule for every intersection (overrides the scene)");
-  cmd->add_option("--step-length", args->step_length, "Nominal step length, model units (overrides the scene)");
-  cmd->add_option("--deviation", args->deviation, "Chordal deviation tolerance delta, model units (overrides the scene)");
-  cmd->add_option("--tolerance", args->tolerance, "Corrector tolerance, model units (default 1e-12)");
-  cmd->add_option("--geometry", args->geometry,
-                  "Add the curve's differential geometry (t, n, b, kappa, tau, kappa_prime, theta) to every point, "
-                  "computed by this method (docs/geometry.md)");
+  add_option_flags(cmd, args.get());
   cmd->add_flag("-q,--quiet", args->quiet, "No summary on stderr");
+  cmd->add_flag("--list-options", args->list_options,
+                "Print the trace options (scene keys; the flags are --key-with-dashes) as the Markdown table of "
+                "docs/scene-format.md, and exit");
   cmd->callback([args] { run_trace(*args); });
 }
 

@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "ssimarch/io/svg_plot.hpp"
+#include "ssimarch/io/trace_writers.hpp"
 
 namespace ssimarch::cli {
 
@@ -33,8 +34,7 @@ std::ofstream open_for_writing(const std::filesystem::path& p) {
 }
 }  // namespace
 
-void write_runs(const std::vector<IntersectionRun>& runs, OutputFormat format, const std::string& path,
-                const PointDecorator& decorate) {
+void write_runs(const std::vector<IntersectionRun>& runs, OutputFormat format, const std::string& path) {
   if (format == OutputFormat::kSvg) {
     if (path == "-") {
       if (runs.size() != 1) throw CliError("SVG to standard output needs exactly one intersection (use --intersection NAME or -o FILE.svg)");
@@ -56,7 +56,7 @@ void write_runs(const std::vector<IntersectionRun>& runs, OutputFormat format, c
     out = &file;
   }
   switch (format) {
-    case OutputFormat::kJson: write_json(*out, runs, decorate); break;
+    case OutputFormat::kJson: write_json(*out, runs); break;
     case OutputFormat::kCsv: write_csv(*out, runs); break;
     case OutputFormat::kObj: write_obj(*out, runs); break;
     case OutputFormat::kSvg: break;

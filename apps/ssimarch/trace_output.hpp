@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "ssimarch/io/run.hpp"
+#include "ssimarch/pipeline/trace_job.hpp"
 
 namespace ssimarch::cli {
 
@@ -18,16 +18,9 @@ OutputFormat format_from_path(const std::filesystem::path& p);
 
 /// Writes runs in the format to `path` ("-" = standard output). SVG writes one file per run
 /// (path itself when there is one run, else <stem>_<name>.svg beside it).
-void write_runs(const std::vector<IntersectionRun>& runs, OutputFormat format, const std::string& path,
-                const PointDecorator& decorate = {});
+void write_runs(const std::vector<IntersectionRun>& runs, OutputFormat format, const std::string& path);
 
 /// One line per curve on stderr: closed/open, length, points, time.
 void print_summary(const std::vector<IntersectionRun>& runs);
 
-}  // namespace ssimarch::cli
-
-namespace ssimarch::cli {
-/// The point decorator for the runs' "geometry" option (empty when no run asks for one).
-/// Throws CliError for an unknown method.
-PointDecorator make_geometry_decorator(const std::vector<IntersectionRun>& runs);
 }  // namespace ssimarch::cli

@@ -24,7 +24,7 @@
 #define SSIMARCH_COLD
 #endif
 
-namespace ssimarch::expr {
+namespace ssimarch::internal {
 
 namespace {
 
@@ -549,6 +549,13 @@ class Compiler {
   std::map<Key, int> index_;
 };
 
+}  // namespace ssimarch::internal
+
+namespace ssimarch {
+
+using internal::Compiler;
+using internal::CompileFailure;
+
 bool Program::compile(std::string_view source, std::span<const std::string> variables, const Constants& constants,
                       Program* out, ParseError* error) {
   try {
@@ -566,4 +573,4 @@ bool Program::compile(std::string_view source, std::span<const std::string> vari
   }
 }
 
-}  // namespace ssimarch::expr
+}  // namespace ssimarch

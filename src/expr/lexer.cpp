@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <system_error>
 
-namespace ssimarch::expr {
+namespace ssimarch::internal {
 
 namespace {
 
@@ -191,4 +191,4 @@ Token Lexer::number(std::size_t begin) {
   return t;
 }
 
-}  // namespace ssimarch::expr
+}  // namespace ssimarch::internal

@@ -7,7 +7,7 @@
 
 #include "ssimarch/expr/parse_error.hpp"
 
-namespace ssimarch::expr {
+namespace ssimarch::internal {
 
 /// Thrown inside the compiler only; Program::compile turns it into its ParseError result.
 struct CompileFailure {
@@ -47,4 +47,4 @@ std::string describe_character(std::string_view source, std::size_t offset);
 /// Length in bytes of the well-formed UTF-8 sequence starting at `offset`, 0 if it is not one.
 std::size_t utf8_sequence_length(std::string_view s, std::size_t offset);
 
-}  // namespace ssimarch::expr
+}  // namespace ssimarch::internal

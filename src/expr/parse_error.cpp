@@ -2,7 +2,7 @@
 
 #include "lexer.hpp"
 
-namespace ssimarch::expr {
+namespace ssimarch {
 
 namespace {
 
@@ -11,7 +11,7 @@ template <class F>
 void for_each_unit(std::string_view s, F&& f) {
   std::size_t i = 0;
   while (i < s.size()) {
-    std::size_t len = utf8_sequence_length(s, i);
+    std::size_t len = internal::utf8_sequence_length(s, i);
     bool valid = len > 0;
     if (!valid) len = 1;
     if (!f(i, len, valid)) return;
@@ -54,4 +54,4 @@ std::string ParseError::format(std::string_view source, std::string_view where) 
   return out;
 }
 
-}  // namespace ssimarch::expr
+}  // namespace ssimarch

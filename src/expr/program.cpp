@@ -4,7 +4,7 @@
 
 #include "ssimarch/core/error.hpp"
 
-namespace ssimarch::expr {
+namespace ssimarch {
 
 namespace {
 
@@ -88,4 +88,4 @@ double evaluate_constant(std::string_view source, const Constants& constants, st
   return p.constant_value();
 }
 
-}  // namespace ssimarch::expr
+}  // namespace ssimarch

@@ -17,13 +17,13 @@ void check_interval(const Interval& i, const std::string& where, const char* nam
 
 }  // namespace
 
-ExprParametric::ExprParametric(std::array<expr::Program, 3> xyz, const ParamDomain& domain) : domain_(domain) {
+ExprParametric::ExprParametric(std::array<Program, 3> xyz, const ParamDomain& domain) : domain_(domain) {
   for (const auto& p : xyz)
     if (p.num_variables() != 2)
       throw InputError("parametric", "each coordinate must be compiled in exactly the variables (u, v)");
   check_interval(domain.u, "parametric", "u");
   check_interval(domain.v, "parametric", "v");
-  programs_ = std::make_shared<const std::array<expr::Program, 3>>(std::move(xyz));
+  programs_ = std::make_shared<const std::array<Program, 3>>(std::move(xyz));
   // Sampled box: 65 x 65 values of F (non-finite samples skipped).
   constexpr int kSamples = 65;
   constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -41,30 +41,30 @@ ExprParametric::ExprParametric(std::array<expr::Program, 3> xyz, const ParamDoma
 }
 
 ExprParametric ExprParametric::compile(const std::array<std::string, 3>& sources, const ParamDomain& domain,
-                                       const expr::Constants& constants, const std::string& where) {
+                                       const Constants& constants, const std::string& where) {
   static const std::vector<std::string> kVars = {"u", "v"};
-  std::array<expr::Program, 3> p;
+  std::array<Program, 3> p;
   for (std::size_t i = 0; i < 3; ++i)
-    p[i] = expr::Program::compile_or_throw(sources[i], std::span<const std::string>(kVars), constants,
+    p[i] = Program::compile_or_throw(sources[i], std::span<const std::string>(kVars), constants,
                                            where + "[" + std::to_string(i) + "]");
   check_interval(domain.u, where, "u");
   check_interval(domain.v, where, "v");
   return ExprParametric(std::move(p), domain);
 }
 
-ExprImplicit::ExprImplicit(expr::Program f, const Box& box) : box_(box) {
+ExprImplicit::ExprImplicit(Program f, const Box& box) : box_(box) {
   if (f.num_variables() != 3)
     throw InputError("implicit", "the expression must be compiled in exactly the variables (x, y, z)");
   check_interval(box.x, "implicit", "box x");
   check_interval(box.y, "implicit", "box y");
   check_interval(box.z, "implicit", "box z");
-  program_ = std::make_shared<const expr::Program>(std::move(f));
+  program_ = std::make_shared<const Program>(std::move(f));
 }
 
-ExprImplicit ExprImplicit::compile(const std::string& source, const Box& box, const expr::Constants& constants,
+ExprImplicit ExprImplicit::compile(const std::string& source, const Box& box, const Constants& constants,
                                    const std::string& where) {
   static const std::vector<std::string> kVars = {"x", "y", "z"};
-  auto p = expr::Program::compile_or_throw(source, std::span<const std::string>(kVars), constants, where);
+  auto p = Program::compile_or_throw(source, std::span<const std::string>(kVars), constants, where);
   check_interval(box.x, where, "box x");
   check_interval(box.y, where, "box y");
   check_interval(box.z, where, "box z");

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <unistd.h>
 
 #include "testing/cli_run.hpp"
@@ -168,6 +169,63 @@ TEST(Cli, CurveGeometryAtOnePoint) {
   auto j = nlohmann::json::parse(r.out);
   EXPECT_NEAR(j["kappa"].get<double>(), kVivianiKappa, 1e-7);
   EXPECT_NEAR(j["tau"].get<double>(), kVivianiTau, 1e-7);
+}
+
+}  // namespace
+
+namespace {
+
+// Every trace option is a flag of `ssimarch trace`, checked by the option table's rules before
+// anything is traced: a bad value exits 2 naming the flag and the rule (issue 13: these used to
+// be ignored silently).
+TEST(Cli, TraceOptionFlagsAreValidatedWithTheFlagName) {
+  const std::string scene = kExamples + "viviani.json";
+  struct Bad {
+    const char* args;
+    const char* message;
+  };
+  for (const Bad& b : {Bad{"--step-length -1", "--step-length: must be a finite number >= 0 (0 = automatic), got -1"},
+                       Bad{"--step-length nan", "--step-length: "}, Bad{"--tolerance -1", "--tolerance: must be a finite number >= 1e-15"},
+                       Bad{"--tolerance nan", "--tolerance: "}, Bad{"--deviation nan", "--deviation: "},
+                       Bad{"--taylor-order 4294967297", "--taylor-order: must be an integer in [1, 8]"},
+                       Bad{"--step-length 1e-320", "--step-length: "},
+                       Bad{"--max-points 1.5", "--max-points: must be an integer"},
+                       Bad{"--geometry guesswork", "--geometry: unknown geometry method \"guesswork\""}}) {
+    CliRun r = run("trace " + scene + " -q " + b.args);
+    EXPECT_EQ(r.status, 2) << b.args;
+    EXPECT_THAT(r.err, HasSubstr(b.message)) << b.args;
+    EXPECT_TRUE(r.out.empty()) << b.args;  // rejected before any tracing
+  }
+  // Values may be expressions of the scene's constants, as in the scene.
+  CliRun ok = run("trace " + scene + " -q --step-length R/20 --taylor-order 5 --max-points 5000");
+  EXPECT_EQ(ok.status, 0) << ok.err;
+}
+
+TEST(Cli, ListOptionsPrintsTheDocsTable) {
+  CliRun r = run("trace --list-options");
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ifstream in(std::string(SSIMARCH_SOURCE_DIR) + "/docs/scene-format.md");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  EXPECT_NE(ss.str().find(r.out), std::string::npos) << r.out;
+  EXPECT_THAT(r.out, HasSubstr("| `start_samples` |"));
+  CliRun help = run("trace --help");
+  EXPECT_THAT(help.out, HasSubstr("--max-corrector-iterations"));
+}
+
+TEST(Cli, MalformedScenesAreCleanErrors) {
+  for (const auto& [name, text, message] :
+       {std::tuple<std::string, std::string, std::string>{"dup.json", R"({"surfaces": {"a": {"sphere": {"center": [0,0,0], "radius": 1, "radius": 2}}}})",
+                                                          "dup.json: surfaces.a.sphere.radius: duplicate key \"radius\""},
+        {"big.json", "{\"surfaces\": {\"a\": {\"sphere\": {\"center\": [0,0,0], \"radius\": 1e400}}}}", "big.json:1:61: a number outside the range"},
+        {"type.json", R"({"surfaces": {"a": {"sphere": {"center": [0,0,0], "radius": 1}}}, "intersections": [{"name": 5, "surfaces": ["a", "a"]}]})",
+         "type.json: intersections[0].name: expected a name, got a number"},
+        {"nul.json", std::string("{\"surfaces\": {}}\0", 17), "nul.json:1:17: a NUL byte"}}) {
+    CliRun r = run("trace " + write_file(name, text));
+    EXPECT_EQ(r.status, 2) << name;
+    EXPECT_THAT(r.err, HasSubstr(message)) << name;
+    EXPECT_THAT(r.err, ::testing::Not(HasSubstr("json.exception"))) << name;
+  }
 }
 
 }  // namespace

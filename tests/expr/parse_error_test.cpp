@@ -10,7 +10,7 @@
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/expr/program.hpp"
 
-namespace ssimarch::expr {
+namespace ssimarch {
 namespace {
 
 const std::vector<std::string> kUV = {"u", "v"};
@@ -293,4 +293,4 @@ TEST(ExprErrorFormat, CompileOrThrowCarriesWhereAndCaret) {
 }
 
 }  // namespace
-}  // namespace ssimarch::expr
+}  // namespace ssimarch

@@ -20,7 +20,7 @@
 #include "ssimarch/core/jet.hpp"
 #include "ssimarch/expr/program.hpp"
 
-namespace ssimarch::expr {
+namespace ssimarch {
 namespace {
 
 const std::vector<std::string> kUV = {"u", "v"};
@@ -342,4 +342,4 @@ TEST(ExprFuzz, GeneratedExpressionsEvaluateToTheirTreeValue) {
 }
 
 }  // namespace
-}  // namespace ssimarch::expr
+}  // namespace ssimarch

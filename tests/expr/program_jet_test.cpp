@@ -9,7 +9,7 @@
 #include "ssimarch/core/jet.hpp"
 #include "ssimarch/expr/program.hpp"
 
-namespace ssimarch::expr {
+namespace ssimarch {
 namespace {
 
 using J = Jet<2, 3>;
@@ -165,4 +165,4 @@ TEST(ExprJet, ConstantProgramGivesConstantJet) {
 }
 
 }  // namespace
-}  // namespace ssimarch::expr
+}  // namespace ssimarch

@@ -13,7 +13,7 @@
 
 #include "ssimarch/core/error.hpp"
 
-namespace ssimarch::expr {
+namespace ssimarch {
 namespace {
 
 const std::vector<std::string> kUV = {"u", "v"};
@@ -331,4 +331,4 @@ TEST(ExprProgram, DefaultProgramEvaluatesToZero) {
 }
 
 }  // namespace
-}  // namespace ssimarch::expr
+}  // namespace ssimarch

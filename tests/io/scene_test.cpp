@@ -47,7 +47,7 @@ TEST(Scene, TheIssueExampleParses) {
   EXPECT_TRUE(i.swapped);
   ASSERT_EQ(i.starts.size(), 1u);
   EXPECT_EQ(i.starts[0], Vec3(1, 0, 0));
-  EXPECT_EQ(i.options.step_length, 0.05);
+  EXPECT_EQ(i.options.trace.step_length, 0.05);
   Problem P = s.problem(i);
   EXPECT_EQ(P.dim(), 2);
   EXPECT_EQ(P.first().type_name(), "parametric");
@@ -86,7 +86,7 @@ TEST(Scene, ErrorsSayWhatAndWhere) {
   EXPECT_THAT(error_of("{\n  \"surfaces\": {,}\n}"), HasSubstr("s.json:2:"));
   EXPECT_THAT(error_of("[1, 2]"), HasSubstr("must be a JSON object"));
   EXPECT_THAT(error_of(R"json({"surfaces": {}})json"), HasSubstr("surfaces: must be a non-empty object"));
-  EXPECT_THAT(error_of(R"json({"surfacez": {}})json"), HasSubstr("unknown key \"surfacez\""));
+  EXPECT_THAT(error_of(R"json({"surfacez": {}})json"), HasSubstr("s.json: surfacez: unknown key 'surfacez'"));
   const std::string surfaces = R"json("surfaces": {"a": {"sphere": {"center": [0,0,0], "radius": 1}},
                                                 "b": {"plane": {"point": [0,0,0], "normal": [0,0,1]}}})json";
   auto scene = [&](const std::string& intersection) { return "{" + surfaces + ", \"intersections\": [" + intersection + "]}"; };

@@ -5,7 +5,8 @@
 
 #include <sstream>
 
-#include "ssimarch/io/run.hpp"
+#include "ssimarch/io/scene.hpp"
+#include "ssimarch/io/trace_writers.hpp"
 #include "ssimarch/io/svg_plot.hpp"
 
 namespace ssimarch {

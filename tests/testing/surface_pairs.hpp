@@ -14,15 +14,15 @@ namespace ssimarch::testing {
 inline Surface parametric(const std::string& x, const std::string& y, const std::string& z, Interval u, Interval v,
                           bool periodic_u = false, bool periodic_v = false) {
   std::vector<std::string> vars = {"u", "v"};
-  expr::Constants c;
-  std::array<expr::Program, 3> p = {expr::Program::compile_or_throw(x, vars, c), expr::Program::compile_or_throw(y, vars, c),
-                                    expr::Program::compile_or_throw(z, vars, c)};
+  Constants c;
+  std::array<Program, 3> p = {Program::compile_or_throw(x, vars, c), Program::compile_or_throw(y, vars, c),
+                                    Program::compile_or_throw(z, vars, c)};
   return ExprParametric(p, ParamDomain{u, v, periodic_u, periodic_v});
 }
 
 inline Surface implicit(const std::string& f, const Box& box) {
   std::vector<std::string> vars = {"x", "y", "z"};
-  return ExprImplicit(expr::Program::compile_or_throw(f, vars, expr::Constants{}), box);
+  return ExprImplicit(Program::compile_or_throw(f, vars, Constants{}), box);
 }
 
 // Thesis pair 1 (thesis ch. 3): ruled surface F1 and torus G1; curve C1.

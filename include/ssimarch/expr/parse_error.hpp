@@ -5,7 +5,7 @@
 #include <string>
 #include <string_view>
 
-namespace ssimarch::expr {
+namespace ssimarch {
 
 /// What kind of mistake a ParseError reports (for programs; people read `message`).
 enum class ParseErrorKind {
@@ -39,4 +39,4 @@ struct ParseError {
 /// 1-based display column of byte `offset` in `source` (see ParseError::column).
 int display_column(std::string_view source, std::size_t offset);
 
-}  // namespace ssimarch::expr
+}  // namespace ssimarch

@@ -32,7 +32,11 @@
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/expr/parse_error.hpp"
 
-namespace ssimarch::expr {
+namespace ssimarch {
+
+namespace internal {
+class Compiler;
+}  // namespace internal
 
 /// Named constants supplied by the caller (a scene's "constants"); `pi` and `e` are built in.
 using Constants = std::map<std::string, double, std::less<>>;
@@ -112,7 +116,7 @@ class Program {
   /// std::out_of_range otherwise).
   template <class T>
   T eval(std::span<const T> vars) const {
-    if (vars.size() < variables_.size()) throw std::out_of_range("ssimarch::expr::Program::eval: too few variables");
+    if (vars.size() < variables_.size()) throw std::out_of_range("ssimarch::Program::eval: too few variables");
     return eval(vars.data());
   }
   template <class T>
@@ -137,7 +141,7 @@ class Program {
   /// True when the expression uses no variable at all (then constant_value() is its value).
   bool is_constant() const { return code_.size() == 1 && code_[0].op == OpCode::kConst; }
   double constant_value() const {
-    if (!is_constant()) throw std::logic_error("ssimarch::expr::Program::constant_value: not a constant");
+    if (!is_constant()) throw std::logic_error("ssimarch::Program::constant_value: not a constant");
     return code_[0].imm;
   }
 
@@ -147,7 +151,7 @@ class Program {
   std::string disassemble() const;
 
  private:
-  friend class Compiler;
+  friend class internal::Compiler;
   template <class T>
   void run(T* r, const T* vars) const;
 
@@ -255,6 +259,6 @@ T Program::eval(const T* vars) const {
   return r[static_cast<std::size_t>(result_)];
 }
 
-}  // namespace ssimarch::expr
+}  // namespace ssimarch
 
 #undef SSIMARCH_EXPR_ALWAYS_INLINE

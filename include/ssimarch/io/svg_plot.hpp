@@ -5,7 +5,7 @@
 #include <ostream>
 #include <string>
 
-#include "ssimarch/io/run.hpp"
+#include "ssimarch/pipeline/trace_job.hpp"
 
 namespace ssimarch {
 

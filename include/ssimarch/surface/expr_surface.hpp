@@ -24,14 +24,14 @@ class ExprParametric {
   /// different number of variables, an empty or non-finite domain. `box()` is the box of the
   /// values at a 65 x 65 grid of the domain (inflated by 5 %): a guide for plots and sampling,
   /// not a guaranteed enclosure.
-  ExprParametric(std::array<expr::Program, 3> xyz, const ParamDomain& domain);
+  ExprParametric(std::array<Program, 3> xyz, const ParamDomain& domain);
   /// Compiles the three sources (variables u, v); errors are InputError(where[i], ...).
   static ExprParametric compile(const std::array<std::string, 3>& sources, const ParamDomain& domain,
-                                const expr::Constants& constants, const std::string& where = "parametric");
+                                const Constants& constants, const std::string& where = "parametric");
 
   const ParamDomain& domain() const { return domain_; }
   const Box& box() const { return box_; }
-  const expr::Program& program(int i) const { return (*programs_)[static_cast<std::size_t>(i)]; }
+  const Program& program(int i) const { return (*programs_)[static_cast<std::size_t>(i)]; }
 
   template <class T>
   Vec3T<T> point(const T& u, const T& v) const {
@@ -42,7 +42,7 @@ class ExprParametric {
   }
 
  private:
-  std::shared_ptr<const std::array<expr::Program, 3>> programs_;
+  std::shared_ptr<const std::array<Program, 3>> programs_;
   ParamDomain domain_;
   Box box_;
 };
@@ -51,12 +51,12 @@ class ExprImplicit {
  public:
   /// Program in the variables (x, y, z). Throws InputError for a wrong variable count or an
   /// empty or non-finite box.
-  ExprImplicit(expr::Program f, const Box& box);
-  static ExprImplicit compile(const std::string& source, const Box& box, const expr::Constants& constants,
+  ExprImplicit(Program f, const Box& box);
+  static ExprImplicit compile(const std::string& source, const Box& box, const Constants& constants,
                               const std::string& where = "implicit");
 
   const Box& box() const { return box_; }
-  const expr::Program& program() const { return *program_; }
+  const Program& program() const { return *program_; }
 
   template <class T>
   T value(const Vec3T<T>& p) const {
@@ -65,7 +65,7 @@ class ExprImplicit {
   }
 
  private:
-  std::shared_ptr<const expr::Program> program_;
+  std::shared_ptr<const Program> program_;
   Box box_;
 };
 

@@ -1,5 +1,5 @@
 // Scene-file surfaces: every type, constants and expressions as numbers, errors with JSON paths.
-#include "ssimarch/surface/surface_json.hpp"
+#include "ssimarch/io/surface_json.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,7 +17,7 @@ namespace {
 using nlohmann::json;
 constexpr double kPi = std::numbers::pi;
 
-const expr::Constants kConstants{{"R", 2.0}, {"h", 0.5}};
+const Constants kConstants{{"R", 2.0}, {"h", 0.5}};
 
 Surface parse(const char* text) { return surface_from_json(json::parse(text), kConstants, "surfaces.s"); }
 
@@ -176,7 +176,7 @@ TEST(SurfaceJson, PatchErrorsNameTheirPath) {
   expect_error(R"j({"bezier": {"control_points": [[[0,0,0],[0,1,0]],[[1,0,0]]]}})j", "surfaces.s.bezier.control_points[1]",
                "rectangular");
   expect_error(R"j({"bezier": {"control_points": [[[0,0,0],[0,1]],[[1,0,0],[1,1,0]]]}})j",
-               "surfaces.s.bezier.control_points[0][1]", "3 components");
+               "surfaces.s.bezier.control_points[0][1]", "a list of 3 numbers [x, y, z], got 2 components");
   expect_error(R"j({"bezier": {"control_points": [[[0,0,0],[0,1,0]],[[1,0,0],[1,1,0]]], "weights": [[1,1],[1,0]]}})j",
                "surfaces.s.bezier.weights[1][1]", "> 0");
   expect_error(R"j({"bezier": {"control_points": []}})j", "surfaces.s.bezier.control_points", "non-empty");

@@ -15,7 +15,7 @@ namespace ssimarch {
 /// Every number may be a JSON number or an expression string evaluated with `constants`.
 /// Throws InputError whose where() is the JSON path of the offending value, starting with
 /// `where` (e.g. "surfaces.cyl" -> "surfaces.cyl.cylinder.radius").
-Surface surface_from_json(const nlohmann::json& spec, const expr::Constants& constants, const std::string& where);
+Surface surface_from_json(const nlohmann::json& spec, const Constants& constants, const std::string& where);
 
 /// The type keys surface_from_json understands (aliases included), for messages and docs.
 const std::vector<std::string>& surface_type_names();

@@ -1,20 +1,12 @@
-#include "ssimarch/io/run.hpp"
+#include "ssimarch/io/trace_writers.hpp"
 
 #include <charconv>
+#include <cmath>
 #include <iomanip>
-
-#include "ssimarch/march/tracer.hpp"
 
 namespace ssimarch {
 
 using nlohmann::json;
-
-IntersectionRun run_intersection(const Scene& scene, const IntersectionSpec& spec) {
-  IntersectionRun run{spec, scene.problem(spec), {}};
-  Tracer tracer(run.problem, spec.options);
-  run.result = tracer.trace(spec.starts);
-  return run;
-}
 
 namespace {
 json vec(const Vec3& v) { return json::array({v.x(), v.y(), v.z()}); }
@@ -32,6 +24,19 @@ std::string shortest(double x) {
   auto r = std::to_chars(buf, buf + sizeof buf, x);
   return std::string(buf, r.ptr);
 }
+// The curve's differential geometry at a point; quantities a method cannot determine are null.
+void add_geometry(const geometry::CurveGeometry& g, json* point) {
+  auto v = [](const Vec3& a) { return a.allFinite() ? json::array({a.x(), a.y(), a.z()}) : json(nullptr); };
+  auto s = [](double x) { return std::isfinite(x) ? json(x) : json(nullptr); };
+  (*point)["t"] = v(g.t);
+  (*point)["n"] = v(g.n);
+  (*point)["b"] = v(g.b);
+  (*point)["kappa"] = s(g.kappa);
+  (*point)["tau"] = s(g.tau);
+  (*point)["kappa_prime"] = s(g.kappa_prime);
+  (*point)["theta"] = s(g.theta);
+  (*point)["geometry_status"] = std::string(geometry::to_string(g.status));
+}
 }  // namespace
 
 json stats_to_json(const TraceStats& s) {
@@ -45,13 +50,14 @@ json stats_to_json(const TraceStats& s) {
               {"time_ms", s.time_ms}};
 }
 
-json to_json(const IntersectionRun& run, const PointDecorator& decorate) {
+json to_json(const IntersectionRun& run) {
   json curves = json::array();
-  for (const TracedCurve& c : run.result.curves) {
+  for (std::size_t ci = 0; ci < run.result.curves.size(); ++ci) {
+    const TracedCurve& c = run.result.curves[ci];
     json points = json::array();
     for (std::size_t i = 0; i < c.points.size(); ++i) {
       json p{{"xyz", vec(c.points[i].p)}, {"params", vec(c.points[i].x)}};
-      if (decorate) decorate(run, c, i, &p);
+      if (ci < run.geometry.size()) add_geometry(run.geometry[ci][i], &p);
       points.push_back(std::move(p));
     }
     json ends = c.closed ? json{{"start", end_json(Termination::kClosedLoop, "closed loop")},
@@ -69,19 +75,19 @@ json to_json(const IntersectionRun& run, const PointDecorator& decorate) {
               {"unknowns", names},
               {"parametric_first", run.spec.swapped ? s[1] : s[0]},
               {"options",
-               {{"predictor", std::string(to_string(run.spec.options.predictor))},
-                {"corrector", std::string(to_string(run.spec.options.corrector))},
-                {"step", std::string(to_string(run.spec.options.step))},
-                {"step_length", run.spec.options.step_length},
-                {"tolerance", run.spec.options.tolerance}}},
+               {{"predictor", std::string(to_string(run.spec.options.trace.predictor))},
+                {"corrector", std::string(to_string(run.spec.options.trace.corrector))},
+                {"step", std::string(to_string(run.spec.options.trace.step))},
+                {"step_length", run.spec.options.trace.step_length},
+                {"tolerance", run.spec.options.trace.tolerance}}},
               {"curves", std::move(curves)},
               {"stats", stats_to_json(run.result.stats)},
               {"warnings", run.result.warnings}};
 }
 
-void write_json(std::ostream& out, const std::vector<IntersectionRun>& runs, const PointDecorator& decorate) {
+void write_json(std::ostream& out, const std::vector<IntersectionRun>& runs) {
   json all = json::array();
-  for (const auto& r : runs) all.push_back(to_json(r, decorate));
+  for (const auto& r : runs) all.push_back(to_json(r));
   out << json{{"intersections", std::move(all)}}.dump(1) << "\n";
 }
 

@@ -1,0 +1,61 @@
+// The library's entry point for a whole trace job: every intersection of a scene traced with its
+// options (and the job's overrides), decorated as asked, returned as typed results. The CLI
+// (`ssimarch trace`, `ssimarch demo`), and later Python and MPI drivers, call this; io/ writes
+// the results (io/trace_writers.hpp).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "ssimarch/geometry/curve_geometry.hpp"
+#include "ssimarch/march/result.hpp"
+#include "ssimarch/pipeline/scene.hpp"
+
+namespace ssimarch {
+
+/// One traced intersection.
+struct IntersectionRun {
+  IntersectionSpec spec;  // as traced (overrides applied)
+  Problem problem;        // refers to the scene's surfaces: the Scene must outlive the run
+  TraceResult result;
+  /// With the "geometry" option: geometry[c][i] is the differential geometry at
+  /// result.curves[c].points[i]; empty without it.
+  std::vector<std::vector<geometry::CurveGeometry>> geometry;
+};
+
+/// An option set for the whole job (e.g. a command-line flag) over every intersection's own.
+struct OptionOverride {
+  const TraceOptionSpec* option;  // from trace_option_table()
+  OptionValue value;
+  std::string where;              // names it in messages ("--step-length")
+};
+
+struct TraceRequest {
+  std::vector<std::string> only;           // names of the intersections to trace; empty: all
+  std::string only_where = "intersection"; // names `only` in messages ("--intersection")
+  std::vector<OptionOverride> overrides;
+};
+
+struct TraceJobResult {
+  std::vector<IntersectionRun> runs;
+  /// False when an intersection found no curve or a given start point could not be put on it.
+  bool complete() const;
+};
+
+/// The intersections the request selects, with the overrides applied and every option checked,
+/// before anything is traced. Throws InputError for an unknown name in `only`, a bad override
+/// (where = its `where`), or a scene with nothing to trace.
+std::vector<IntersectionSpec> select_intersections(const Scene& scene, const TraceRequest& request);
+
+/// Traces one intersection and computes its decorations.
+IntersectionRun run_intersection(const Scene& scene, const IntersectionSpec& spec);
+
+/// select_intersections, then run_intersection on each, in scene order.
+TraceJobResult trace_scene(const Scene& scene, const TraceRequest& request = {});
+
+/// The differential geometry at every point of a traced curve by `method`, each point with its
+/// neighbours along the curve as the estimate methods' samples (closed curves wrap).
+std::vector<geometry::CurveGeometry> geometry_along_curve(const Problem& problem, const TracedCurve& curve,
+                                                          geometry::GeometryMethod method);
+
+}  // namespace ssimarch

@@ -1,0 +1,109 @@
+// The trace job: selection, overrides checked before tracing, typed per-point geometry.
+#include "ssimarch/pipeline/trace_job.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "ssimarch/core/error.hpp"
+#include "ssimarch/io/scene.hpp"
+
+namespace ssimarch {
+namespace {
+
+using ::testing::HasSubstr;
+
+const char* kScene = R"json({
+  "constants": {"R": 2},
+  "surfaces": {"sphere": {"sphere": {"center": [0,0,0], "radius": "R"}},
+               "cyl": {"parametric": ["cos(u)", "sin(u)-1", "v"], "u": [0, "2*pi"], "v": [-3, 3], "periodic": ["u"]},
+               "plane": {"implicit": "z - 0.5*y - 1", "box": [[-5,5],[-5,5],[-5,5]]}},
+  "intersections": [
+    {"name": "viviani", "surfaces": ["sphere", "cyl"], "start": [1, -1, 1.4142], "options": {"step_length": 0.1, "geometry": "exact"}},
+    {"name": "ellipse", "surfaces": ["cyl", "plane"], "start": [0, 0, 1], "options": {"step_length": 0.1}}
+  ]})json";
+
+TEST(TraceJob, TracesEveryIntersectionWithItsDecorations) {
+  const Scene scene = parse_scene(kScene, "s.json");
+  const TraceJobResult job = trace_scene(scene);
+  ASSERT_EQ(job.runs.size(), 2u);
+  EXPECT_TRUE(job.complete());
+  const IntersectionRun& v = job.runs[0];
+  ASSERT_EQ(v.result.curves.size(), 1u);
+  EXPECT_NEAR(v.result.curves[0].length, 15.2807911561, 1e-5);
+  ASSERT_EQ(v.geometry.size(), 1u);
+  ASSERT_EQ(v.geometry[0].size(), v.result.curves[0].points.size());
+  // Viviani's curve at its start (1, -1, sqrt 2): kappa = sqrt(13/8) / (3/2)^(3/2).
+  EXPECT_NEAR(v.geometry[0][0].kappa, std::sqrt(13.0 / 8) / std::pow(1.5, 1.5), 1e-3);
+  EXPECT_TRUE(job.runs[1].geometry.empty());
+}
+
+TEST(TraceJob, OverridesAndSelectionAreCheckedBeforeTracing) {
+  const Scene scene = parse_scene(kScene, "s.json");
+  TraceRequest r;
+  r.only = {"ellipse"};
+  r.overrides.push_back({find_trace_option("step_length"), std::string("R/10"), "--step-length"});
+  r.overrides.push_back({find_trace_option("geometry"), std::string("ye-maekawa"), "--geometry"});
+  const std::vector<IntersectionSpec> specs = select_intersections(scene, r);
+  ASSERT_EQ(specs.size(), 1u);
+  EXPECT_EQ(specs[0].name, "ellipse");
+  EXPECT_EQ(specs[0].options.trace.step_length, 0.2);
+  EXPECT_EQ(specs[0].options.geometry, geometry::GeometryMethod::kYeMaekawa);
+
+  TraceRequest unknown;
+  unknown.only = {"nope"};
+  unknown.only_where = "--intersection";
+  try {
+    select_intersections(scene, unknown);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "--intersection: the scene has no intersection \"nope\" (it has: viviani, ellipse)");
+  }
+  TraceRequest bad;
+  bad.overrides.push_back({find_trace_option("min_step"), 5.0, "--min-step"});
+  try {
+    select_intersections(scene, bad);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("min_step must not exceed step_length"));
+  }
+}
+
+TEST(TraceJob, AnOverrideGivesTheSameCurvesAsTheSceneKey) {
+  Scene scene = parse_scene(kScene, "s.json");
+  TraceRequest r;
+  r.only = {"ellipse"};
+  r.overrides.push_back({find_trace_option("step_length"), std::string("0.05"), "--step-length"});
+  const TraceJobResult a = trace_scene(scene, r);
+  scene.intersections[1].options.trace.step_length = 0.05;
+  const IntersectionRun b = run_intersection(scene, scene.intersections[1]);
+  ASSERT_EQ(a.runs.size(), 1u);
+  ASSERT_EQ(a.runs[0].result.curves.size(), b.result.curves.size());
+  EXPECT_EQ(a.runs[0].result.curves[0].points.size(), b.result.curves[0].points.size());
+  EXPECT_EQ(a.runs[0].result.curves[0].length, b.result.curves[0].length);
+}
+
+}  // namespace
+}  // namespace ssimarch
+
+namespace ssimarch {
+namespace {
+
+// A scene built in code (as Python or an MPI driver would) is checked by the same rules.
+TEST(TraceJob, OptionsSetInCodeAreCheckedByTheTable) {
+  Scene scene = parse_scene(kScene, "s.json");
+  scene.intersections[1].options.trace.step_length = 1e-320;
+  try {
+    select_intersections(scene, {});
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("s.json: ellipse.options.step_length: must be a finite number >= 0 (0 = automatic), got the subnormal"));
+  }
+  scene.intersections[1].options.trace.step_length = 0.1;
+  scene.intersections[1].options.trace.taylor_order = 9;
+  EXPECT_THROW(select_intersections(scene, {}), InputError);
+  scene.intersections[1].options.trace.taylor_order = 4;
+  EXPECT_EQ(select_intersections(scene, {}).size(), 2u);  // max_length's default +inf means unbounded
+}
+
+}  // namespace
+}  // namespace ssimarch
