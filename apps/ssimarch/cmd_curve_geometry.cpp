@@ -52,16 +52,16 @@ void run_curve_geometry(const CurveGeometryArgs& a) {
   std::string method_name = a.method;
   if (method_name.empty())
     method_name = spec->extra_options.contains("geometry") ? spec->extra_options["geometry"].get<std::string>() : "exact";
-  geometry::GeometryMethod method;
-  if (!geometry::parse(method_name, &method))
-    throw CliError("--method: unknown method \"" + method_name + "\" (known: " + geometry::method_names() + ")");
+  GeometryMethod method;
+  if (!parse(method_name, &method))
+    throw CliError("--method: unknown method \"" + method_name + "\" (known: " + method_names() + ")");
   const Vec3 at = parse_xyz(a.at, scene.constants, "--at");
   std::optional<Vec3> toward;
   if (!a.toward.empty()) toward = parse_xyz(a.toward, scene.constants, "--toward");
 
   Problem problem = scene.problem(*spec);
   nlohmann::json out{{"intersection", spec->name}, {"method", method_name}, {"at", vec_json(at)}};
-  auto x = geometry::project_to_curve(problem, at);
+  auto x = project_to_curve(problem, at);
   if (!x) {
     out["status"] = "not-on-curve";
     out["message"] = "Newton from the nearest surface points did not converge onto the curve";
@@ -69,13 +69,13 @@ void run_curve_geometry(const CurveGeometryArgs& a) {
     g_exit_status = 1;
     return;
   }
-  geometry::GeometryContext ctx;
+  GeometryContext ctx;
   const Vec3* o = toward ? &*toward : nullptr;
-  const bool sampled = method == geometry::GeometryMethod::kEstimate ||
-                       method == geometry::GeometryMethod::kBarnhillKersey || method == geometry::GeometryMethod::kMixed;
-  if (sampled) ctx = geometry::sample_context(problem, *x, a.step, o, 2);
+  const bool sampled = method == GeometryMethod::kEstimate ||
+                       method == GeometryMethod::kBarnhillKersey || method == GeometryMethod::kMixed;
+  if (sampled) ctx = sample_context(problem, *x, a.step, o, 2);
   if (o) ctx.orientation = *o;
-  geometry::CurveGeometry g = geometry::evaluate_geometry(problem, *x, method, ctx);
+  CurveGeometry g = evaluate_geometry(problem, *x, method, ctx);
   out["point"] = vec_json(problem.point(*x));
   out["distance"] = num_json((problem.point(*x) - at).norm());
   out["unknowns"] = std::vector<double>(x->data(), x->data() + x->size());
@@ -86,7 +86,7 @@ void run_curve_geometry(const CurveGeometryArgs& a) {
   out["tau"] = num_json(g.tau);
   out["kappa_prime"] = num_json(g.kappa_prime);
   out["theta"] = num_json(g.theta);
-  out["status"] = std::string(geometry::to_string(g.status));
+  out["status"] = std::string(to_string(g.status));
   out["tau_convention"] = "standard: (c' x c'').c''' / |c' x c''|^2 (the thesis prints -tau)";
   if (sampled) {
     out["step"] = a.step;

@@ -11,18 +11,18 @@ PointDecorator make_geometry_decorator(const std::vector<IntersectionRun>& runs)
   bool any = false;
   for (const auto& r : runs) {
     if (!r.spec.extra_options.contains("geometry")) continue;
-    geometry::GeometryMethod m;
+    GeometryMethod m;
     std::string name = r.spec.extra_options["geometry"].get<std::string>();
-    if (!geometry::parse(name, &m))
-      throw CliError("geometry: unknown method \"" + name + "\" (known: " + geometry::method_names() + ")");
+    if (!parse(name, &m))
+      throw CliError("geometry: unknown method \"" + name + "\" (known: " + method_names() + ")");
     any = true;
   }
   if (!any) return {};
   return [](const IntersectionRun& run, const TracedCurve& curve, std::size_t i, nlohmann::json* point) {
     if (!run.spec.extra_options.contains("geometry")) return;
-    geometry::GeometryMethod method;
-    geometry::parse(run.spec.extra_options["geometry"].get<std::string>(), &method);
-    geometry::GeometryContext ctx;
+    GeometryMethod method;
+    parse(run.spec.extra_options["geometry"].get<std::string>(), &method);
+    GeometryContext ctx;
     // Neighbours along the traced curve (closed curves wrap; the closing point repeats the first).
     const std::size_t n = curve.points.size();
     const std::size_t m = curve.closed && n > 1 ? n - 1 : n;
@@ -34,7 +34,7 @@ PointDecorator make_geometry_decorator(const std::vector<IntersectionRun>& runs)
     if (k + 1 < m) ctx.next.push_back(curve.points[k + 1].x);
     else if (curve.closed && m > 1) ctx.next.push_back(curve.points[0].x);
     ctx.orientation = curve.points[i].t;
-    geometry::CurveGeometry g = geometry::evaluate_geometry(run.problem, curve.points[i].x, method, ctx);
+    CurveGeometry g = evaluate_geometry(run.problem, curve.points[i].x, method, ctx);
     auto v = [](const Vec3& a) {
       return a.allFinite() ? nlohmann::json::array({a.x(), a.y(), a.z()}) : nlohmann::json(nullptr);
     };
@@ -46,7 +46,7 @@ PointDecorator make_geometry_decorator(const std::vector<IntersectionRun>& runs)
     (*point)["tau"] = s(g.tau);
     (*point)["kappa_prime"] = s(g.kappa_prime);
     (*point)["theta"] = s(g.theta);
-    (*point)["geometry_status"] = std::string(geometry::to_string(g.status));
+    (*point)["geometry_status"] = std::string(to_string(g.status));
   };
 }
 

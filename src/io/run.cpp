@@ -3,7 +3,7 @@
 #include <charconv>
 #include <iomanip>
 
-#include "ssimarch/march/tracer.hpp"
+#include "ssimarch/topology/trace_all.hpp"
 
 namespace ssimarch {
 
@@ -11,8 +11,7 @@ using nlohmann::json;
 
 IntersectionRun run_intersection(const Scene& scene, const IntersectionSpec& spec) {
   IntersectionRun run{spec, scene.problem(spec), {}};
-  Tracer tracer(run.problem, spec.options);
-  run.result = tracer.trace(spec.starts);
+  run.result = trace_all(run.problem, spec.options, spec.starts);
   return run;
 }
 

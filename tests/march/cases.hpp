@@ -24,7 +24,7 @@ inline Surface implicit(const std::string& f, const Box& box) {
   return ExprImplicit(expr::Program::compile_or_throw(f, vars, expr::Constants{}), box);
 }
 
-// Thesis pair 1 (spec/examples.md, ch. 3): ruled surface F1 and torus G1; curve C1.
+// Thesis pair 1 (thesis ch. 3 examples): ruled surface F1 and torus G1; curve C1.
 inline Surface ruled_surface() {
   return parametric("(4+cos(4*u))*cos(u) + v*(cos(4*u)+sin(4*u))*cos(u)",
                     "(4+cos(4*u))*sin(u) + v*(cos(4*u)+sin(4*u))*sin(u)", "sin(4*u) + v*(sin(4*u)-cos(4*u))",

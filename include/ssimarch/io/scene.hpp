@@ -12,7 +12,7 @@
 
 #include "ssimarch/expr/program.hpp"
 #include "ssimarch/march/options.hpp"
-#include "ssimarch/march/problem.hpp"
+#include "ssimarch/problem/problem.hpp"
 #include "ssimarch/surface/surface.hpp"
 
 namespace ssimarch {

@@ -1,9 +1,9 @@
 // Problem: H and its Jacobian for the three pair kinds, against central differences.
-#include "ssimarch/march/problem.hpp"
+#include "ssimarch/problem/problem.hpp"
 
 #include <gtest/gtest.h>
 
-#include "cases.hpp"
+#include "march/cases.hpp"
 #include "ssimarch/surface/sphere.hpp"
 
 namespace ssimarch {
