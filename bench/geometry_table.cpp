@@ -18,8 +18,7 @@
 #include "ssimarch/surface/expr_surface.hpp"
 
 using namespace ssimarch;
-using namespace ssimarch::geometry;
-using namespace ssimarch::geometry::testing;
+using namespace ssimarch::testing;
 
 namespace {
 

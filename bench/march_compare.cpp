@@ -30,7 +30,7 @@
 
 #include "ssimarch/expr/program.hpp"
 #include "ssimarch/march/predictor.hpp"
-#include "ssimarch/march/tracer.hpp"
+#include "ssimarch/topology/trace_all.hpp"
 #include "ssimarch/surface/sphere.hpp"
 #include "ssimarch/surface/surface.hpp"
 #include "testing/surface_pairs.hpp"
@@ -102,7 +102,7 @@ class Reference {
     o.step = StepRule::kConstant;
     o.step_length = kH;
     o.tolerance = 1e-13;
-    TraceResult r = Tracer(P, o).trace({start});
+    TraceResult r = trace_all(P, o, {start});
     if (r.curves.size() != 1) {
       std::fprintf(stderr, "reference trace failed\n");
       std::exit(1);
@@ -225,7 +225,7 @@ Row run(const Pair& pair, const Reference& ref, PredictorKind p, StepRule s, dou
   TraceResult r;
   double best = std::numeric_limits<double>::infinity();
   for (int i = 0; i < reps; ++i) {
-    r = Tracer(pair.problem, o).trace({pair.start});
+    r = trace_all(pair.problem, o, {pair.start});
     best = std::min(best, r.stats.time_ms);
   }
   row.time_ms = best;

@@ -47,10 +47,10 @@ void run_curve_geometry(const CurveGeometryArgs& a) {
     throw CliError("--intersection: the scene has no intersection \"" + a.intersection + "\" (it has: " +
                    (known.empty() ? std::string("none") : known) + ")");
   }
-  geometry::GeometryMethod method = spec->options.geometry.value_or(geometry::GeometryMethod::kExact);
-  if (!a.method.empty() && !geometry::parse(a.method, &method))
-    throw CliError("--method: unknown method \"" + a.method + "\" (known: " + geometry::method_names() + ")");
-  const std::string method_name(geometry::to_string(method));
+  GeometryMethod method = spec->options.geometry.value_or(GeometryMethod::kExact);
+  if (!a.method.empty() && !parse(a.method, &method))
+    throw CliError("--method: unknown method \"" + a.method + "\" (known: " + method_names() + ")");
+  const std::string method_name(to_string(method));
   const Vec3 at = parse_xyz(a.at, scene.constants, "--at");
   std::optional<Vec3> toward;
   if (!a.toward.empty()) toward = parse_xyz(a.toward, scene.constants, "--toward");
@@ -65,7 +65,7 @@ void run_curve_geometry(const CurveGeometryArgs& a) {
     g_exit_status = 1;
     return;
   }
-  const geometry::CurveGeometry& g = r.geometry;
+  const CurveGeometry& g = r.geometry;
   out["point"] = vec_json(r.point);
   out["distance"] = num_json(r.distance);
   out["unknowns"] = std::vector<double>(r.x->data(), r.x->data() + r.x->size());
@@ -76,7 +76,7 @@ void run_curve_geometry(const CurveGeometryArgs& a) {
   out["tau"] = num_json(g.tau);
   out["kappa_prime"] = num_json(g.kappa_prime);
   out["theta"] = num_json(g.theta);
-  out["status"] = std::string(geometry::to_string(g.status));
+  out["status"] = std::string(to_string(g.status));
   out["tau_convention"] = "standard: (c' x c'').c''' / |c' x c''|^2 (the thesis prints -tau)";
   if (r.sampled) {
     out["step"] = a.step;

@@ -3,7 +3,9 @@
 #include <array>
 #include <utility>
 
-namespace ssimarch::geometry {
+#include "ssimarch/problem/curve_jet.hpp"
+
+namespace ssimarch {
 
 namespace {
 constexpr std::array<std::pair<GeometryMethod, std::string_view>, 7> kMethodNames{{
@@ -64,7 +66,7 @@ void CurveGeometry::reverse() {
 
 double normal_angle(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
 
-// spec/curve-geometry.md §1, eqs 2.3-2.5 and 2.8 (kappa' as the arc-length derivative of eq 2.3).
+// Thesis §2.1, eqs 2.3-2.5 and 2.8 (kappa' as the arc-length derivative of eq 2.3).
 CurveGeometry frenet_from_derivatives(const Vec3& c1, const Vec3& c2, const Vec3& c3, const GeometryTolerances& tol) {
   CurveGeometry g;
   double speed = c1.norm();
@@ -90,4 +92,29 @@ CurveGeometry frenet_from_derivatives(const Vec3& c1, const Vec3& c2, const Vec3
   return g;
 }
 
-}  // namespace ssimarch::geometry
+CurveGeometry frenet_from_jet(const DynamicCurveJet& jet, double length_scale) {
+  CurveGeometry g;
+  g.point = jet.alpha[0];
+  if (jet.status != CurveJetStatus::kOk) {
+    g.status = jet.status == CurveJetStatus::kSingular ? GeometryStatus::kSingular : GeometryStatus::kNonFinite;
+    return g;
+  }
+  g.t = jet.alpha[1];
+  const Vec3 alpha2 = jet.order >= 2 ? Vec3(2.0 * jet.alpha[2]) : Vec3::Zero();
+  g.kappa = alpha2.norm();
+  if (!(g.kappa * length_scale > kStraightCurvature)) {
+    g.status = GeometryStatus::kZeroCurvature;
+    return g;
+  }
+  g.n = alpha2 / g.kappa;
+  g.b = g.t.cross(g.n);
+  if (jet.order >= 3) {
+    const Vec3 alpha3 = 6.0 * jet.alpha[3];
+    g.kappa_prime = alpha3.dot(g.n);
+    g.tau = alpha3.dot(g.b) / g.kappa;
+  }
+  g.status = GeometryStatus::kOk;
+  return g;
+}
+
+}  // namespace ssimarch

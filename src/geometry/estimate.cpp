@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace ssimarch::geometry {
+namespace ssimarch {
 
 namespace {
 
@@ -58,7 +58,7 @@ Frame frame_at(std::span<const CurveSample> s, std::size_t k, EstimateCircle kin
       return f;
     }
     // The literal construction returns the centre reflected through the chord midpoint: P - C'
-    // points towards the true centre (spec/curve-geometry.md §3.2 item 3).
+    // points towards the true centre (thesis ch. 3, eq 3.10).
     towards_centre = literal ? Vec3(p - c.center) : Vec3(c.center - p);
   }
   f.kappa = 1.0 / c.radius;
@@ -69,7 +69,7 @@ Frame frame_at(std::span<const CurveSample> s, std::size_t k, EstimateCircle kin
 
 }  // namespace
 
-// spec/curve-geometry.md §3.2 item 3 (eq 3.10), geometric plane assignment; `literal` swaps the
+// Thesis ch. 3, eq 3.10 (Wu-Andrade), geometric plane assignment; `literal` swaps the
 // points of the first two planes as printed in the thesis.
 Circle wu_andrade_circle(const Vec3& p, const Vec3& tp, const Vec3& q, const Vec3& tq, bool literal) {
   Circle c;
@@ -86,7 +86,7 @@ Circle wu_andrade_circle(const Vec3& p, const Vec3& tp, const Vec3& q, const Vec
   return c;
 }
 
-// spec/curve-geometry.md §3.2 item 1 (eq 3.7).
+// Thesis ch. 3, eq 3.7 (Barnhill-Kersey).
 double barnhill_kersey_radius(const Vec3& p, const Vec3& q, const Vec3& r) {
   Vec3 a = q - p, b = r - p;
   return a.norm() * b.norm() * (a - b).norm() / (2.0 * a.cross(b).norm());
@@ -106,7 +106,7 @@ Circle three_point_circle(const Vec3& p, const Vec3& q, const Vec3& r) {
   return c;
 }
 
-// spec/curve-geometry.md §1.3 (eqs 2.10-2.12 with the sign caveat) and §3.4 (eq 3.27).
+// Thesis §2.1 (eqs 2.10-2.12, with the sign caveat of docs/geometry.md) and §3.2 (eq 3.27).
 CurveGeometry estimate_from_samples(std::span<const CurveSample> samples, std::size_t index, EstimateCircle circle,
                                     const GeometryTolerances& tol) {
   CurveGeometry g;
@@ -166,4 +166,4 @@ CurveGeometry estimate_from_samples(std::span<const CurveSample> samples, std::s
   return g;
 }
 
-}  // namespace ssimarch::geometry
+}  // namespace ssimarch

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace ssimarch::geometry {
+namespace ssimarch {
 
 namespace {
 
@@ -125,8 +125,8 @@ CurveGeometry only_status(const Vec3& point, double theta, GeometryStatus status
 
 }  // namespace
 
-// spec/curve-geometry.md §3.2 item 4 (eqs 3.13-3.15) and §3.3 (eqs 3.23-3.25);
-// spec/implicit-curve-geometry.md §1 (eqs 4.1-4.6, 4.16-4.20) for implicit surfaces.
+// Thesis ch. 3 (eqs 3.13-3.15, 3.23-3.25; Ye & Maekawa); seed 004 §4 (eqs 4.1-4.6,
+// 4.16-4.20) for implicit surfaces.
 CurveGeometry ye_maekawa_transversal(const SurfaceLocal& first, const SurfaceLocal& second, const Vec3* orientation,
                                      const GeometryTolerances& tol) {
   TransversalStart s = start_transversal(first, second, orientation, tol);
@@ -145,7 +145,7 @@ CurveGeometry ye_maekawa_transversal(const SurfaceLocal& first, const SurfaceLoc
   return g;
 }
 
-// spec/curve-geometry.md §3.2 item 2 (eqs 3.8-3.9).
+// Thesis ch. 3, eqs 3.8-3.9 (Stoyanov).
 CurveGeometry stoyanov(const SurfaceLocal& first, const SurfaceLocal& second, const Vec3* orientation,
                        const GeometryTolerances& tol) {
   TransversalStart s = start_transversal(first, second, orientation, tol);
@@ -166,7 +166,7 @@ CurveGeometry stoyanov(const SurfaceLocal& first, const SurfaceLocal& second, co
   return g;
 }
 
-// spec/implicit-curve-geometry.md §2 (eqs 4.7-4.15, 4.21-4.23).
+// Seed 004 §4, eqs 4.7-4.15, 4.21-4.23 (Willmore's operator).
 CurveGeometry willmore(const ImplicitLocal& f, const ImplicitLocal& g, const Vec3* orientation,
                        const GeometryTolerances& tol) {
   TransversalStart s = start_transversal(f, g, nullptr, tol);
@@ -195,7 +195,7 @@ CurveGeometry willmore(const ImplicitLocal& f, const ImplicitLocal& g, const Vec
   return r;
 }
 
-// spec/curve-geometry.md §3.1 (tangential, eqs 3.2) and §3.2 item 5, without parameters.
+// Thesis ch. 3 (tangential case, eqs 3.2 and 3.16-3.22; Ye & Maekawa), without parameters.
 std::vector<CurveGeometry> ye_maekawa_tangential(const SurfaceLocal& first, const SurfaceLocal& second,
                                                  const Vec3* orientation, const GeometryTolerances& tol) {
   if (std::holds_alternative<ParametricLocal>(first) && std::holds_alternative<ParametricLocal>(second))
@@ -243,8 +243,8 @@ std::vector<CurveGeometry> ye_maekawa_tangential(const SurfaceLocal& first, cons
   return out;
 }
 
-// spec/curve-geometry.md §3.1 (eqs 3.3-3.6, b12 corrected) and §3.2 item 5 (eqs 3.16-3.22,
-// a13 sign and eq 3.18 corrected).
+// Thesis ch. 3 (eqs 3.3-3.6, b12 corrected; eqs 3.16-3.22, a13 sign and eq 3.18 corrected;
+// docs/geometry.md).
 std::vector<CurveGeometry> ye_maekawa_tangential_thesis(const ParametricLocal& F, const ParametricLocal& G,
                                                         const Vec3* orientation, const GeometryTolerances& tol) {
   std::vector<CurveGeometry> out;
@@ -369,4 +369,4 @@ Vec3 intersection_tangent(const SurfaceLocal& first, const SurfaceLocal& second,
   return closest_branch(ye_maekawa_tangential(first, second, orientation, tol), orientation).t;
 }
 
-}  // namespace ssimarch::geometry
+}  // namespace ssimarch

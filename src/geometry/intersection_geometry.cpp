@@ -3,12 +3,12 @@
 #include <cmath>
 #include <limits>
 
-#include "ssimarch/geometry/curve_jet.hpp"
+#include "ssimarch/problem/curve_jet.hpp"
 #include "ssimarch/geometry/intersection_formulas.hpp"
-#include "ssimarch/march/closest_point.hpp"
-#include "ssimarch/march/corrector.hpp"
+#include "ssimarch/problem/closest_point.hpp"
+#include "ssimarch/problem/gauss_newton.hpp"
 
-namespace ssimarch::geometry {
+namespace ssimarch {
 
 namespace {
 
@@ -164,7 +164,7 @@ CurveGeometry evaluate_geometry(const Problem& problem, const VecX& x, GeometryM
     case GeometryMethod::kYeMaekawa: return ye_maekawa(first, second, o, tol);
     case GeometryMethod::kStoyanov: return stoyanov(first, second, o, tol);
     case GeometryMethod::kMixed: {
-      // Thesis §3.2 / spec/marching-directions.md §5: Ye-Maekawa where sin(theta) >= 0.1.
+      // Thesis §3.2 and §4.3: Ye-Maekawa where sin(theta) >= 0.1.
       double sin_theta = unit_normal(first).cross(unit_normal(second)).norm();
       if (sin_theta >= tol.mixed_sin_theta) return ye_maekawa(first, second, o, tol);
       CurveGeometry e = estimate_geometry(problem, x, EstimateCircle::kWuAndrade, oriented);
@@ -189,7 +189,7 @@ std::optional<VecX> project_to_curve(const Problem& problem, const Vec3& X, cons
   VecX x = *guess;
   // Already on the curve (a singular point included, where Newton has no update): keep it.
   if (problem.linearize(x).distance > co.tolerance) {
-    CorrectorResult r = NewtonCorrector{}.correct(problem, x, co);
+    CorrectorResult r = gauss_newton(problem, x, co);
     if (r.status != CorrectorStatus::kConverged && problem.linearize(r.x).distance > co.tolerance) return std::nullopt;
     x = r.x;
   }
@@ -277,4 +277,4 @@ GeometryContext sample_context(const Problem& problem, const VecX& x, double ste
   return ctx;
 }
 
-}  // namespace ssimarch::geometry
+}  // namespace ssimarch

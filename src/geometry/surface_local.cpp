@@ -2,7 +2,7 @@
 
 #include "ssimarch/geometry/curve_geometry.hpp"
 
-namespace ssimarch::geometry {
+namespace ssimarch {
 
 namespace {
 
@@ -68,7 +68,7 @@ double normal_curvature(const SurfaceLocal& s, const Vec3& t, const Vec3& normal
 double third_normal(const SurfaceLocal& s, const Vec3& t, const Vec3& c2, const Vec3& normal) {
   return std::visit(
       Overloaded{[&](const ParametricLocal& d) {
-                   // spec/curve-geometry.md §3.3: lambda = 3 II((u',v'), (u'',v'')) + III(t,t,t).
+                   // Thesis ch. 3 (torsion, transversal): lambda = 3 II((u',v'), (u'',v'')) + III(t,t,t).
                    Vec2 w = tangent_coordinates(d, t);
                    double a = w[0], b = w[1];
                    Eigen::Matrix2d first;
@@ -82,11 +82,11 @@ double third_normal(const SurfaceLocal& s, const Vec3& t, const Vec3& c2, const 
                           d.fvvv.dot(normal) * b * b * b;
                  },
                  [&](const ImplicitLocal& d) {
-                   // spec/implicit-curve-geometry.md §1, eqs 4.19-4.20.
+                   // Seed 004 §4, eqs 4.19-4.20.
                    double third = t.dot(d.third_contract(t, t));
                    return -(third + 3 * t.dot(d.hess * c2)) / d.grad.dot(normal);
                  }},
       s);
 }
 
-}  // namespace ssimarch::geometry
+}  // namespace ssimarch

@@ -25,7 +25,7 @@ std::string shortest(double x) {
   return std::string(buf, r.ptr);
 }
 // The curve's differential geometry at a point; quantities a method cannot determine are null.
-void add_geometry(const geometry::CurveGeometry& g, json* point) {
+void add_geometry(const CurveGeometry& g, json* point) {
   auto v = [](const Vec3& a) { return a.allFinite() ? json::array({a.x(), a.y(), a.z()}) : json(nullptr); };
   auto s = [](double x) { return std::isfinite(x) ? json(x) : json(nullptr); };
   (*point)["t"] = v(g.t);
@@ -35,7 +35,7 @@ void add_geometry(const geometry::CurveGeometry& g, json* point) {
   (*point)["tau"] = s(g.tau);
   (*point)["kappa_prime"] = s(g.kappa_prime);
   (*point)["theta"] = s(g.theta);
-  (*point)["geometry_status"] = std::string(geometry::to_string(g.status));
+  (*point)["geometry_status"] = std::string(to_string(g.status));
 }
 }  // namespace
 

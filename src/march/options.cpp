@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "ssimarch/march/result.hpp"
+#include "ssimarch/problem/curve_jet.hpp"
 
 namespace ssimarch {
 
@@ -60,6 +61,7 @@ std::string_view to_string(Termination t) {
     case Termination::kStepUnderflow: return "step_underflow";
     case Termination::kMaxPoints: return "max_points";
     case Termination::kMaxLength: return "max_length";
+    case Termination::kReachedTracedCurve: return "traced_curve";
   }
   return "?";
 }
@@ -90,7 +92,7 @@ bool TraceOptions::is_valid(std::string* error) const {
   if (step_length > 0 && min_step_length > step_length) return fail("min_step_length must not exceed step_length");
   if (!(deviation >= 0) || !std::isfinite(deviation)) return fail("deviation must be a finite number >= 0 (0 = automatic)");
   if (!(turn_angle > 0 && turn_angle <= 1.5)) return fail("turn_angle must be in (0, 1.5] radians");
-  if (taylor_order < 1 || taylor_order > 8) return fail("taylor_order must be between 1 and 8");
+  if (taylor_order < 1 || taylor_order > kMaxCurveJetOrder) return fail("taylor_order must be between 1 and " + std::to_string(kMaxCurveJetOrder));
   if (!(tolerance > 0) || !std::isfinite(tolerance)) return fail("tolerance must be a finite number > 0");
   if (tolerance < 1e-15) return fail("tolerance below 1e-15 cannot be reached in double precision");
   if (max_corrector_iterations < 1 || max_corrector_iterations > 1000) return fail("max_corrector_iterations must be between 1 and 1000");

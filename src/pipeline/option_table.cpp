@@ -8,7 +8,7 @@
 #include <limits>
 
 #include "ssimarch/core/error.hpp"
-#include "ssimarch/geometry/curve_jet.hpp"
+#include "ssimarch/problem/curve_jet.hpp"
 
 namespace ssimarch {
 
@@ -102,19 +102,19 @@ Row geometry_row() {
                                   "(docs/geometry.md)",
                                   "geometry method");
   spec.type = TraceOptionSpec::Type::kChoice;
-  for (auto m : {geometry::GeometryMethod::kExact, geometry::GeometryMethod::kYeMaekawa, geometry::GeometryMethod::kWillmore,
-                 geometry::GeometryMethod::kStoyanov, geometry::GeometryMethod::kEstimate,
-                 geometry::GeometryMethod::kBarnhillKersey, geometry::GeometryMethod::kMixed})
-    spec.choices.emplace_back(geometry::to_string(m));
+  for (auto m : {GeometryMethod::kExact, GeometryMethod::kYeMaekawa, GeometryMethod::kWillmore,
+                 GeometryMethod::kStoyanov, GeometryMethod::kEstimate,
+                 GeometryMethod::kBarnhillKersey, GeometryMethod::kMixed})
+    spec.choices.emplace_back(to_string(m));
   spec.rule = "one of " + join(spec.choices);
   return Row{std::move(spec), {}, {},
              [](TraceJobOptions* o, std::string_view s) {
-               geometry::GeometryMethod m;
-               if (!geometry::parse(s, &m)) return false;
+               GeometryMethod m;
+               if (!parse(s, &m)) return false;
                o->geometry = m;
                return true;
              },
-             [](const TraceJobOptions& o) { return o.geometry ? std::string(geometry::to_string(*o.geometry)) : "none"; },
+             [](const TraceJobOptions& o) { return o.geometry ? std::string(to_string(*o.geometry)) : "none"; },
              {}};
 }
 

@@ -4,7 +4,7 @@
 
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/geometry/intersection_geometry.hpp"
-#include "ssimarch/march/tracer.hpp"
+#include "ssimarch/topology/trace_all.hpp"
 
 namespace ssimarch {
 
@@ -34,8 +34,7 @@ std::vector<IntersectionSpec> select_intersections(const Scene& scene, const Tra
 
 IntersectionRun run_intersection(const Scene& scene, const IntersectionSpec& spec) {
   IntersectionRun run{spec, scene.problem(spec), {}, {}};
-  Tracer tracer(run.problem, spec.options.trace);
-  run.result = tracer.trace(spec.starts);
+  run.result = trace_all(run.problem, spec.options.trace, spec.starts);
   if (spec.options.geometry)
     for (const TracedCurve& c : run.result.curves)
       run.geometry.push_back(geometry_along_curve(run.problem, c, *spec.options.geometry));
@@ -48,14 +47,14 @@ TraceJobResult trace_scene(const Scene& scene, const TraceRequest& request) {
   return job;
 }
 
-std::vector<geometry::CurveGeometry> geometry_along_curve(const Problem& problem, const TracedCurve& curve,
-                                                          geometry::GeometryMethod method) {
-  std::vector<geometry::CurveGeometry> out;
+std::vector<CurveGeometry> geometry_along_curve(const Problem& problem, const TracedCurve& curve,
+                                                          GeometryMethod method) {
+  std::vector<CurveGeometry> out;
   // Neighbours along the traced curve (closed curves wrap; the closing point repeats the first).
   const std::size_t n = curve.points.size();
   const std::size_t m = curve.closed && n > 1 ? n - 1 : n;
   for (std::size_t i = 0; i < n; ++i) {
-    geometry::GeometryContext ctx;
+    GeometryContext ctx;
     const std::size_t k = (curve.closed && i + 1 == n) ? 0 : std::min(i, m - 1);  // the closing point is point 0
     for (std::size_t back = 3; back >= 1; --back) {
       if (k >= back) ctx.previous.push_back(curve.points[k - back].x);
@@ -64,7 +63,7 @@ std::vector<geometry::CurveGeometry> geometry_along_curve(const Problem& problem
     if (k + 1 < m) ctx.next.push_back(curve.points[k + 1].x);
     else if (curve.closed && m > 1) ctx.next.push_back(curve.points[0].x);
     ctx.orientation = curve.points[i].t;
-    out.push_back(geometry::evaluate_geometry(problem, curve.points[i].x, method, ctx));
+    out.push_back(evaluate_geometry(problem, curve.points[i].x, method, ctx));
   }
   return out;
 }

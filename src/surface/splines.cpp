@@ -88,7 +88,7 @@ void check_knots(const std::vector<double>& k, int degree, int n_ctrl, const std
 
 }  // namespace
 
-namespace spline {
+namespace internal {
 
 int find_span(std::span<const double> knots, int degree, int n_ctrl, double t) {
   // First knot in knots[degree..n_ctrl] above t; the span starts one before it.
@@ -100,7 +100,7 @@ int find_span(std::span<const double> knots, int degree, int n_ctrl, double t) {
   return k;
 }
 
-}  // namespace spline
+}  // namespace internal
 
 BezierPatch::BezierPatch(const ControlNet& points, const WeightNet& weights, const std::string& where)
     : rational_(!weights.empty()) {

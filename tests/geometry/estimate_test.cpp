@@ -10,7 +10,7 @@
 
 #include "geometry/test_curves.hpp"
 
-namespace ssimarch::geometry {
+namespace ssimarch {
 namespace {
 
 using namespace testing;
@@ -178,4 +178,4 @@ TEST(Estimate, ReportsMissingSamplesAndStraightLines) {
 }
 
 }  // namespace
-}  // namespace ssimarch::geometry
+}  // namespace ssimarch

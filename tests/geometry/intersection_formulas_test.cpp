@@ -9,7 +9,7 @@
 
 #include "geometry/test_curves.hpp"
 
-namespace ssimarch::geometry {
+namespace ssimarch {
 namespace {
 
 using namespace testing;
@@ -379,4 +379,4 @@ TEST(Methods, NamesRoundTrip) {
 }
 
 }  // namespace
-}  // namespace ssimarch::geometry
+}  // namespace ssimarch

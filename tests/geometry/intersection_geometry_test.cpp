@@ -9,7 +9,7 @@
 #include "geometry/test_curves.hpp"
 #include "ssimarch/surface/expr_surface.hpp"
 
-namespace ssimarch::geometry {
+namespace ssimarch {
 namespace {
 
 using namespace testing;
@@ -294,4 +294,4 @@ TEST(Sampling, ProjectAndWalkAlongTheCurveThroughASingularPoint) {
 }
 
 }  // namespace
-}  // namespace ssimarch::geometry
+}  // namespace ssimarch

@@ -14,7 +14,7 @@
 #include "ssimarch/geometry/curve_geometry.hpp"
 #include "ssimarch/geometry/surface_local.hpp"
 
-namespace ssimarch::geometry::testing {
+namespace ssimarch::testing {
 
 using std::cos;
 using std::sin;
@@ -223,4 +223,4 @@ struct Helicoid {  // (v cos u, v sin u, c u); the helix is v = a
   }
 };
 
-}  // namespace ssimarch::geometry::testing
+}  // namespace ssimarch::testing

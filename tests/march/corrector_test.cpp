@@ -45,7 +45,7 @@ TEST(Corrector, BothConvergeOnEveryPairKindAndCountTheirWork) {
     for (double size : {1e-2, 1e-4}) {
       VecX guess = c.on_curve + size * c.offset.normalized();
       for (int which = 0; which < 2; ++which) {
-        AnyCorrector corr = which == 0 ? AnyCorrector(NewtonCorrector{}) : AnyCorrector(ProjectionCorrector{});
+        AnyCorrector corr = which == 0 ? AnyCorrector(NewtonCorrector{}) : AnyCorrector(TangentPlaneProjection{});
         CorrectorResult r = correct(corr, c.problem, guess, o);
         SCOPED_TRACE(std::string(to_string(c.problem.kind())) + (which == 0 ? " newton" : " projection") + " size " +
                      std::to_string(size));
@@ -74,7 +74,7 @@ TEST(Corrector, ProjectionLandsWhereTheSeedSays) {
   // one round: plane z = 0 and plane y = 0 meet in the x axis; feet and midpoint are P0's foot.
   Problem P(testing::implicit("z", Box{{-2, 2}, {-2, 2}, {-2, 2}}), testing::implicit("y", Box{{-2, 2}, {-2, 2}, {-2, 2}}),
             PairKind::kImplicitImplicit);
-  CorrectorResult r = ProjectionCorrector{}.correct(P, Vec3(0.3, 0.2, -0.1), CorrectorOptions{1e-12, 12});
+  CorrectorResult r = TangentPlaneProjection{}.correct(P, Vec3(0.3, 0.2, -0.1), CorrectorOptions{1e-12, 12});
   ASSERT_EQ(r.status, CorrectorStatus::kConverged);
   EXPECT_EQ(r.iterations, 1);
   EXPECT_NEAR((r.x - Vec3(0.3, 0, 0)).norm(), 0.0, 1e-15);
@@ -86,11 +86,11 @@ TEST(Corrector, SingularAndDivergedAreReported) {
   VecX node(2);
   node << -M_PI / 2, 0.0;
   EXPECT_EQ(NewtonCorrector{}.correct(P, node, CorrectorOptions{1e-12, 12}).status, CorrectorStatus::kSingular);
-  EXPECT_EQ(ProjectionCorrector{}.correct(P, node, CorrectorOptions{1e-12, 12}).status, CorrectorStatus::kSingular);
+  EXPECT_EQ(TangentPlaneProjection{}.correct(P, node, CorrectorOptions{1e-12, 12}).status, CorrectorStatus::kSingular);
   // One update is not enough from 0.01 away: diverged after exactly max_iterations.
   for (const Case& c : cases()) {
     VecX guess = c.on_curve + 1e-2 * c.offset.normalized();
-    for (const AnyCorrector& corr : {AnyCorrector(NewtonCorrector{}), AnyCorrector(ProjectionCorrector{})}) {
+    for (const AnyCorrector& corr : {AnyCorrector(NewtonCorrector{}), AnyCorrector(TangentPlaneProjection{})}) {
       CorrectorResult r = correct(corr, c.problem, guess, CorrectorOptions{1e-12, 1});
       EXPECT_EQ(r.status, CorrectorStatus::kDiverged);
       EXPECT_EQ(r.iterations, 1);
@@ -99,7 +99,7 @@ TEST(Corrector, SingularAndDivergedAreReported) {
   // Two disjoint spheres: no curve to converge to.
   Problem apart(testing::implicit("x^2+y^2+z^2-1", Box{{-9, 9}, {-9, 9}, {-9, 9}}),
                 testing::implicit("(x-5)^2+y^2+z^2-1", Box{{-9, 9}, {-9, 9}, {-9, 9}}), PairKind::kImplicitImplicit);
-  for (const AnyCorrector& corr : {AnyCorrector(NewtonCorrector{}), AnyCorrector(ProjectionCorrector{})}) {
+  for (const AnyCorrector& corr : {AnyCorrector(NewtonCorrector{}), AnyCorrector(TangentPlaneProjection{})}) {
     CorrectorResult r = correct(corr, apart, Vec3(2.5, 1.0, 0.3), CorrectorOptions{1e-12, 30});
     EXPECT_NE(r.status, CorrectorStatus::kConverged);
     EXPECT_LE(r.iterations, 30);

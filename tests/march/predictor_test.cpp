@@ -1,5 +1,5 @@
 // Predictors: order of the guess error against exact curves, seed 000's circular step against
-// its recomputed examples (spec/examples.md, oracle s000.*), the thesis' formulas against
+// its recomputed examples (seed 000's examples, oracle s000.* in tests/reference/oracle.json), the thesis' formulas against
 // independent forms (oracle s003.ch4.*).
 #include "ssimarch/march/predictor.hpp"
 
@@ -10,7 +10,8 @@
 
 #include "testing/surface_pairs.hpp"
 #include "exact_curves.hpp"
-#include "ssimarch/march/closest_point.hpp"
+#include "ssimarch/geometry/curve_geometry.hpp"
+#include "ssimarch/problem/closest_point.hpp"
 #include "ssimarch/surface/sphere.hpp"
 
 namespace ssimarch {
@@ -109,11 +110,11 @@ void expect_order(const OnCurve& c, const AnyPredictor& p, double s0, double exp
 TEST(PredictorOrder, TorusCurveWhereKappaPrimeVanishes) {
   // C1 at s = 0: kappa' = 0 (oracle s003.ch4.orders.C1): every order as the thesis states.
   OnCurve c = torus_case();
-  expect_order(c, CirclePredictor{}, 0.0, 3, "circle");
-  expect_order(c, WuAndradePredictor{}, 0.0, 3, "circle-wu-andrade");
-  expect_order(c, ParabolaPredictor{}, 0.0, 3, "parabola");
-  expect_order(c, PolynomialPredictor{}, 0.0, 4, "polynomial");
-  expect_order(c, HelixPredictor{}, 0.0, 4, "helix");
+  expect_order(c, OsculatingCirclePredictor{}, 0.0, 3, "circle");
+  expect_order(c, WuAndradeCirclePredictor{}, 0.0, 3, "circle-wu-andrade");
+  expect_order(c, StoyanovParabolaPredictor{}, 0.0, 3, "parabola");
+  expect_order(c, Order3PolynomialPredictor{}, 0.0, 4, "polynomial");
+  expect_order(c, OsculatingHelixPredictor{}, 0.0, 4, "helix");
 }
 
 TEST(PredictorOrder, TorusCurveWhereKappaPrimeIsNotZero) {
@@ -121,20 +122,20 @@ TEST(PredictorOrder, TorusCurveWhereKappaPrimeIsNotZero) {
   // shows the same), and seed 000's circle to order 2: its centre is placed by the torsion and
   // kappa' terms of the two normal planes, off the axis of curvature by O(1) (docs/marching.md).
   OnCurve c = torus_case();
-  expect_order(c, CirclePredictor{}, 0.3, 2, "circle");
-  expect_order(c, WuAndradePredictor{}, 0.3, 3, "circle-wu-andrade");
-  expect_order(c, ParabolaPredictor{}, 0.3, 3, "parabola");
-  expect_order(c, PolynomialPredictor{}, 0.3, 4, "polynomial");
-  expect_order(c, HelixPredictor{}, 0.3, 3, "helix");
+  expect_order(c, OsculatingCirclePredictor{}, 0.3, 2, "circle");
+  expect_order(c, WuAndradeCirclePredictor{}, 0.3, 3, "circle-wu-andrade");
+  expect_order(c, StoyanovParabolaPredictor{}, 0.3, 3, "parabola");
+  expect_order(c, Order3PolynomialPredictor{}, 0.3, 4, "polynomial");
+  expect_order(c, OsculatingHelixPredictor{}, 0.3, 3, "helix");
 }
 
 TEST(PredictorOrder, VivianiParametricImplicit) {
   OnCurve c = viviani_case();
   expect_order(c, TangentPredictor{}, 0.7, 2, "tangent");
-  expect_order(c, WuAndradePredictor{}, 0.7, 3, "circle-wu-andrade");
-  expect_order(c, ParabolaPredictor{}, 0.7, 3, "parabola");
-  expect_order(c, PolynomialPredictor{}, 0.7, 4, "polynomial");
-  expect_order(c, HelixPredictor{}, 0.7, 3, "helix");
+  expect_order(c, WuAndradeCirclePredictor{}, 0.7, 3, "circle-wu-andrade");
+  expect_order(c, StoyanovParabolaPredictor{}, 0.7, 3, "parabola");
+  expect_order(c, Order3PolynomialPredictor{}, 0.7, 4, "polynomial");
+  expect_order(c, OsculatingHelixPredictor{}, 0.7, 3, "helix");
   expect_order(c, TaylorPredictor{3}, 0.7, 4, "taylor-3");
 }
 
@@ -142,8 +143,8 @@ TEST(PredictorOrder, VivianiParametricParametric) {
   OnCurve c = viviani_pp_case();
   for (const AnyPredictor& p : {AnyPredictor(TangentPredictor{}), AnyPredictor(TaylorPredictor{3})})
     expect_order(c, p, 2.0, contact_order(p) + 1, std::string(p.index() == 0 ? "tangent" : "taylor-3") + " (PP)");
-  expect_order(c, WuAndradePredictor{}, 2.0, 3, "circle-wu-andrade (PP)");
-  expect_order(c, PolynomialPredictor{}, 2.0, 4, "polynomial (PP)");
+  expect_order(c, WuAndradeCirclePredictor{}, 2.0, 3, "circle-wu-andrade (PP)");
+  expect_order(c, Order3PolynomialPredictor{}, 2.0, 4, "polynomial (PP)");
 }
 
 TEST(PredictorOrder, TaylorOfEveryOrder) {
@@ -158,17 +159,17 @@ TEST(PredictorOrder, ErrorMagnitudesMatchTheThesisCurve) {
   OnCurve c = torus_case();
   MarchState st = state_at(c, 0.0, 0.01, 3);
   const Vec3 target = testing::point_at(c.curve, testing::parameter_at_arc(c.curve, 0.0, 0.01));
-  CurveFrame f = curve_frame(st.here, c.problem.scale());
-  EXPECT_NEAR((f.p + 0.01 * f.t - target).norm(), 2.56097477989e-05, 1e-3 * 2.56e-5);
-  EXPECT_NEAR((ParabolaPredictor{}.predict(c.problem, st, 0.01).point - target).norm(), 4.50160757029e-08, 1e-3 * 4.5e-8);
-  EXPECT_NEAR((PolynomialPredictor{}.predict(c.problem, st, 0.01).point - target).norm(), 4.78630605254e-11, 1e-2 * 4.8e-11);
-  EXPECT_NEAR((HelixPredictor{}.predict(c.problem, st, 0.01).point - target).norm(), 1.14834569765e-11, 1e-2 * 1.15e-11);
+  CurveGeometry f = frenet_from_jet(st.here, c.problem.scale());
+  EXPECT_NEAR((f.point + 0.01 * f.t - target).norm(), 2.56097477989e-05, 1e-3 * 2.56e-5);
+  EXPECT_NEAR((StoyanovParabolaPredictor{}.predict(c.problem, st, 0.01).point - target).norm(), 4.50160757029e-08, 1e-3 * 4.5e-8);
+  EXPECT_NEAR((Order3PolynomialPredictor{}.predict(c.problem, st, 0.01).point - target).norm(), 4.78630605254e-11, 1e-2 * 4.8e-11);
+  EXPECT_NEAR((OsculatingHelixPredictor{}.predict(c.problem, st, 0.01).point - target).norm(), 1.14834569765e-11, 1e-2 * 1.15e-11);
 }
 
 TEST(Predictor, FrameFromTheJetMatchesTable33) {
   OnCurve c = torus_case();
-  CurveFrame f = curve_frame(curve_jet_dynamic(c.problem, c.unknowns(0.0), 3), c.problem.scale());
-  ASSERT_TRUE(f.has_normal);
+  CurveGeometry f = frenet_from_jet(curve_jet_dynamic(c.problem, c.unknowns(0.0), 3), c.problem.scale());
+  ASSERT_TRUE(f.has_frame());
   EXPECT_NEAR(f.kappa, 0.5121951219512195, 1e-12);
   EXPECT_NEAR(f.tau, -0.1254355400696864, 1e-12);  // standard sign; the thesis prints +0.1254 (do Carmo)
   EXPECT_NEAR(f.kappa_prime, 0.0, 1e-12);
@@ -179,16 +180,17 @@ TEST(Predictor, FrameFromTheJetMatchesTable33) {
 TEST(Predictor, PolynomialIsTheCubicTaylorPolynomialAndHelixMatchesItsClosedForm) {
   OnCurve c = viviani_case();
   MarchState st = state_at(c, 0.7, 0.05, 3);
-  CurveFrame f = curve_frame(st.here, c.problem.scale());
+  CurveGeometry f = frenet_from_jet(st.here, c.problem.scale());
   for (double L : {0.01, 0.3, 1.0}) {
-    Prediction poly = PolynomialPredictor{}.predict(c.problem, st, L);
-    Vec3 cubic = f.p + L * f.t + (L * L / 2) * f.alpha2 + (L * L * L / 6) * f.alpha3;
+    Prediction poly = Order3PolynomialPredictor{}.predict(c.problem, st, L);
+    const Vec3 alpha2 = 2.0 * st.here.alpha[2], alpha3 = 6.0 * st.here.alpha[3];
+    Vec3 cubic = f.point + L * f.t + (L * L / 2) * alpha2 + (L * L * L / 6) * alpha3;
     EXPECT_NEAR((poly.point - cubic).norm(), 0.0, 1e-14);
-    // Standard-torsion closed form (spec/marching-directions.md §4.2).
+    // Standard-torsion closed form (thesis §4.2, eq 2.9).
     double w = std::sqrt(f.kappa * f.kappa + f.tau * f.tau), k = f.kappa, t = f.tau;
-    Vec3 helix = f.p + (t * t * L / (w * w) + k * k * std::sin(w * L) / (w * w * w)) * f.t +
+    Vec3 helix = f.point + (t * t * L / (w * w) + k * k * std::sin(w * L) / (w * w * w)) * f.t +
                  (k / (w * w)) * (1 - std::cos(w * L)) * f.n + (k * t / (w * w)) * (L - std::sin(w * L) / w) * f.b;
-    EXPECT_NEAR((HelixPredictor{}.predict(c.problem, st, L).point - helix).norm(), 0.0, 1e-13);
+    EXPECT_NEAR((OsculatingHelixPredictor{}.predict(c.problem, st, L).point - helix).norm(), 0.0, 1e-13);
   }
 }
 
@@ -197,7 +199,7 @@ TEST(Predictor, CirclesFallBackToTheTangentStepWithoutAPreviousPoint) {
   MarchState st = state_at(c, 0.3, 0.05, 3);
   st.has_previous = false;
   Prediction tangent = TangentPredictor{}.predict(c.problem, st, 0.05);
-  for (const AnyPredictor& p : {AnyPredictor(CirclePredictor{}), AnyPredictor(WuAndradePredictor{})}) {
+  for (const AnyPredictor& p : {AnyPredictor(OsculatingCirclePredictor{}), AnyPredictor(WuAndradeCirclePredictor{})}) {
     Prediction r = predict(p, c.problem, st, 0.05);
     EXPECT_TRUE(r.fallback);
     EXPECT_EQ((r.x - tangent.x).norm(), 0.0);
@@ -212,17 +214,17 @@ TEST(Predictor, CirclesFallBackToTheTangentStepWithoutAPreviousPoint) {
   ls.previous_x = Vec3(0.4, 0, 0);
   ls.previous_p = Vec3(0.4, 0, 0);
   ls.previous_t = Vec3::UnitX();
-  for (const AnyPredictor& p : {AnyPredictor(CirclePredictor{}), AnyPredictor(WuAndradePredictor{})}) {
+  for (const AnyPredictor& p : {AnyPredictor(OsculatingCirclePredictor{}), AnyPredictor(WuAndradeCirclePredictor{})}) {
     Prediction r = predict(p, line, ls, 0.1);
     EXPECT_TRUE(r.fallback);
     EXPECT_NEAR((r.point - Vec3(0.6, 0, 0)).norm(), 0.0, 1e-15);
   }
   // Helix and polynomial on a straight line: the line itself.
-  EXPECT_NEAR((HelixPredictor{}.predict(line, ls, 0.1).point - Vec3(0.6, 0, 0)).norm(), 0.0, 1e-15);
-  EXPECT_NEAR((PolynomialPredictor{}.predict(line, ls, 0.1).point - Vec3(0.6, 0, 0)).norm(), 0.0, 1e-15);
+  EXPECT_NEAR((OsculatingHelixPredictor{}.predict(line, ls, 0.1).point - Vec3(0.6, 0, 0)).norm(), 0.0, 1e-15);
+  EXPECT_NEAR((Order3PolynomialPredictor{}.predict(line, ls, 0.1).point - Vec3(0.6, 0, 0)).norm(), 0.0, 1e-15);
 }
 
-// --- seed 000, Example 1 (spec/examples.md; oracle s000.ex1.*) ---------------------------------------
+// --- seed 000, Example 1 (seed 000, Example 1; oracle s000.ex1.*) ---------------------------------------
 
 CurveFn helix_fn() {
   return [](const T3& s) { return testing::helix_t(s); };
@@ -235,16 +237,16 @@ TEST(Seed000Example1, HelixWithExactTangents) {
   const Vec3 P = testing::point_at(helix_fn(), 1), Q = testing::point_at(helix_fn(), 2);
   const Vec3 u(-std::sin(1.0), std::cos(1.0), 1.0), v(-std::sin(2.0), std::cos(2.0), 1.0);  // f'(1), f'(2)
   for (const Vec3& origin : {Vec3(Vec3::Zero()), Q}) {
-    Seed000Circle c = seed000_circle(P, Q, u, v, origin);
+    OsculatingCircle c = osculating_circle(P, Q, u, v, origin);
     ASSERT_EQ(c.status, CircleStatus::kOk);
-    EXPECT_EQ(c.how, Seed000Circle::Equidistant::kSolved);
+    EXPECT_EQ(c.how, OsculatingCircle::Equidistant::kSolved);
     EXPECT_NEAR((c.centre - Vec3(-0.0737728760483, -1.04030230587, 1.5)).norm(), 0.0, 1e-10);
     EXPECT_NEAR(c.radius, 2.041606976513223, 1e-11);
     EXPECT_NEAR((Q - c.centre).norm(), c.radius, 1e-12);  // equidistant
-    Vec3 A = seed000_arc_point(P, Q, c.centre, c.radius, 1.0);
+    Vec3 A = osculating_circle_arc_point(P, Q, c.centre, c.radius, 1.0);
     EXPECT_NEAR((A - Vec3(-1.0226997942, 0.399225745928, 2.59336898559)).norm(), 0.0, 1e-9);
     EXPECT_NEAR(testing::distance_to_curve(helix_fn(), A, 2.7), 0.16059857389, 1e-9);
-    // Rodrigues form of the same arc (spec/circular-step.md §3).
+    // Rodrigues form of the same arc (seed 000 §3).
     Vec3 k = (P - c.centre).cross(Q - c.centre).normalized(), w = Q - c.centre;
     double th = 1.0 / c.radius;
     EXPECT_NEAR((A - (c.centre + w * std::cos(th) + k.cross(w) * std::sin(th))).norm(), 0.0, 1e-13);
@@ -259,11 +261,11 @@ TEST(Seed000Example1, HelixWithThePapersTangentReproducesItsNumbers) {
   const Vec3 P = testing::point_at(helix_fn(), 1), Q = testing::point_at(helix_fn(), 2);
   const Vec3 u(-std::sin(1.0), std::cos(1.0), 1.0);
   const Vec3 printed_tangent_point(-1.0591, 0.5789, 2.8104), w = printed_tangent_point - Q;
-  Seed000Circle c = seed000_circle(P, Q, u, w, Vec3::Zero());
+  OsculatingCircle c = osculating_circle(P, Q, u, w, Vec3::Zero());
   ASSERT_EQ(c.status, CircleStatus::kOk);
   EXPECT_NEAR((c.centre - Vec3(-0.157038077106, -1.02003951544, 1.41898671688)).norm(), 0.0, 1e-9);
   EXPECT_NEAR(c.radius, 2.0315154001845017, 1e-10);
-  Vec3 A = seed000_arc_point(P, Q, c.centre, c.radius, 1.0);
+  Vec3 A = osculating_circle_arc_point(P, Q, c.centre, c.radius, 1.0);
   EXPECT_NEAR((A - Vec3(-1.04604498715, 0.399504016767, 2.56860304211)).norm(), 0.0, 1e-9);
   // Against the paper's printed (4-digit) values: C = (-0.1568, -1.0200, 1.4192), r = 2.031534,
   // A = (-1.0459, 0.3994, 2.5686); distances 0.241830 and 0.192835 of its printed points.
@@ -282,11 +284,11 @@ TEST(Seed000Example1, RationalCurve) {
   const Vec3 u = testing::derivs(f, 1).d1, v = testing::derivs(f, 2).d1;
   EXPECT_NEAR((u - Vec3(0.5, 6, -5)).norm(), 0.0, 1e-13);
   EXPECT_NEAR((v - Vec3(1.08, 8, -4.76)).norm(), 0.0, 1e-13);
-  Seed000Circle c = seed000_circle(P, Q, u, v, Q);
+  OsculatingCircle c = osculating_circle(P, Q, u, v, Q);
   ASSERT_EQ(c.status, CircleStatus::kOk);
   EXPECT_NEAR((c.centre - Vec3(-73.2566037736, 62.3570754717, 49.8528301887)).norm(), 0.0, 1e-8);
   EXPECT_NEAR(c.radius, 108.35902461210367, 1e-9);
-  Vec3 A = seed000_arc_point(P, Q, c.centre, c.radius, 0.1);
+  Vec3 A = osculating_circle_arc_point(P, Q, c.centre, c.radius, 0.1);
   EXPECT_NEAR((A - Vec3(1.40780537399, 15.0838195088, -12.8539755998)).norm(), 0.0, 1e-9);
   Vec3 T = Q + 0.1 * v.normalized();
   EXPECT_NEAR((T - Vec3(1.41152436882, 15.085365695, -12.8507925885)).norm(), 0.0, 1e-9);
@@ -295,10 +297,10 @@ TEST(Seed000Example1, RationalCurve) {
   EXPECT_NEAR(testing::distance_to_curve(f, A, 2.01), 0.00516590227256, 1e-9);
   // The paper's tangent direction at Q (towards its printed "tangent step" point) reproduces its circle.
   Vec3 w(1.1524, 8.5287, -4.8399);
-  Seed000Circle s = seed000_circle(P, Q, u, w, Vec3::Zero());
+  OsculatingCircle s = osculating_circle(P, Q, u, w, Vec3::Zero());
   EXPECT_NEAR((s.centre - Vec3(-15.4801051874, 42.7876162731, 32.147129009)).norm(), 0.0, 1e-7);
   EXPECT_NEAR(s.radius, 55.47372328801364, 1e-8);
-  Vec3 As = seed000_arc_point(P, Q, s.centre, s.radius, 0.1);
+  Vec3 As = osculating_circle_arc_point(P, Q, s.centre, s.radius, 0.1);
   EXPECT_NEAR((As - Vec3(1.4082005821, 15.0861669871, -12.8500799169)).norm(), 0.0, 1e-9);
   EXPECT_NEAR(testing::distance_to_curve(f, As, 2.01), 0.00347128201713, 1e-9);
   // Printed: C = (-15.4835, 42.7887, 32.1481), r = 55.4761, A = (1.4082, 15.0861, -12.8500).
@@ -318,7 +320,7 @@ TEST(Seed000, RotationMatrixAndOrientation) {
     Vec3 n(rnd(), rnd(), rnd());
     if (i == 0) n = Vec3(2, 0, 0);
     if (i == 1) n = Vec3(-3, 0, 0);
-    Eigen::Matrix3d R = seed000_rotation(n);
+    Eigen::Matrix3d R = osculating_circle_rotation(n);
     EXPECT_NEAR((n.transpose() * R - Eigen::RowVector3d(0, 0, n.norm())).norm(), 0.0, 1e-14 * (1 + n.norm()));
     EXPECT_NEAR((R * R.transpose() - Eigen::Matrix3d::Identity()).norm(), 0.0, 1e-14);
     // The arc continues P -> Q (oracle s000.sec4.orientation): A is on the far side of Q from P.
@@ -326,7 +328,7 @@ TEST(Seed000, RotationMatrixAndOrientation) {
     double a = 3 * rnd(), da = 0.5 * (rnd() + 1.2), rho = 1 + rnd() * 0.5;
     Vec3 P = C + rho * (std::cos(a) * e1 + std::sin(a) * e2), Q = C + rho * (std::cos(a + da) * e1 + std::sin(a + da) * e2);
     Vec3 expected = C + rho * (std::cos(a + da + 0.3 / rho) * e1 + std::sin(a + da + 0.3 / rho) * e2);
-    EXPECT_NEAR((seed000_arc_point(P, Q, C, rho, 0.3) - expected).norm(), 0.0, 1e-12);
+    EXPECT_NEAR((osculating_circle_arc_point(P, Q, C, rho, 0.3) - expected).norm(), 0.0, 1e-12);
   }
 }
 
@@ -353,20 +355,20 @@ TEST(Seed000Example3, PlanarArcTakesTheThirdPlaneFallback) {
   // at z = 4. b = 0 (oracle s000.ex3.b_zero); the third plane recovers the exact circle.
   const Vec3 P(1.3993, 1.4289, 4.0), Q(0.7206, 1.8656, 4.0);
   const Vec3 u = Vec3(-P.y(), P.x(), 0).normalized(), v = Vec3(-Q.y(), Q.x(), 0).normalized();
-  Seed000Circle c = seed000_circle(P, Q, u, v, Vec3::Zero());
+  OsculatingCircle c = osculating_circle(P, Q, u, v, Vec3::Zero());
   ASSERT_EQ(c.status, CircleStatus::kOk);
-  EXPECT_EQ(c.how, Seed000Circle::Equidistant::kThirdPlane);
+  EXPECT_EQ(c.how, OsculatingCircle::Equidistant::kThirdPlane);
   EXPECT_NEAR(c.b, 0.0, 1e-12);
   EXPECT_NEAR((c.centre - Vec3(0, 0, 4)).norm(), 0.0, 1e-12);
   EXPECT_NEAR(c.radius, 1.99994892435, 1e-10);
-  Vec3 A = seed000_arc_point(P, Q, c.centre, (Q - c.centre).norm(), 1.0);
+  Vec3 A = osculating_circle_arc_point(P, Q, c.centre, (Q - c.centre).norm(), 1.0);
   EXPECT_NEAR((A - Vec3(-0.262064032869, 1.98268761097, 4.0)).norm(), 0.0, 1e-6);
   EXPECT_NEAR((Q + v - Vec3(-0.212231749469, 2.22591226344, 4.0)).norm(), 0.0, 1e-10);  // tangent step
   // The paper's own rule, "reuse t from the previous step": t is the centre's coordinate along
   // the fixed axis (z here), 4 at the previous step.
   double previous_t = 4.0;
-  Seed000Circle r = seed000_circle(P, Q, u, v, Vec3::Zero(), &previous_t, 2);
-  EXPECT_EQ(r.how, Seed000Circle::Equidistant::kReusedPrevious);
+  OsculatingCircle r = osculating_circle(P, Q, u, v, Vec3::Zero(), &previous_t, 2);
+  EXPECT_EQ(r.how, OsculatingCircle::Equidistant::kReusedPrevious);
   EXPECT_NEAR((r.centre - Vec3(0, 0, 4)).norm(), 0.0, 1e-12);
 }
 

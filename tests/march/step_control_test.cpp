@@ -5,8 +5,9 @@
 #include <gtest/gtest.h>
 
 #include "testing/surface_pairs.hpp"
-#include "exact_curves.hpp"
-#include "ssimarch/march/tracer.hpp"
+#include "march/exact_curves.hpp"
+#include "ssimarch/problem/curve_jet.hpp"
+#include "ssimarch/topology/trace_all.hpp"
 #include "ssimarch/surface/sphere.hpp"
 
 namespace ssimarch {
@@ -58,7 +59,7 @@ TEST(StepRules, StepReportSagittaIsExactOnACircle) {
 
 TEST(StepRules, ChordalControllerRejectsShrinksAndGrowsAtMostTwice) {
   ChordalStep c{StepBounds{1.0, 1e-3, 1e-6}, 1e-3, 1.0};
-  CurveFrame f;
+  CurveGeometry f;
   f.kappa = 0.5;
   c.start(f);
   EXPECT_NEAR(c.step(), 0.9 * std::sqrt(8e-3 / 0.5), 1e-15);
@@ -73,7 +74,7 @@ TEST(StepRules, ChordalControllerRejectsShrinksAndGrowsAtMostTwice) {
   StepReport flat;
   flat.h = flat.chord = 0.01;
   flat.sagitta = 1e-12;
-  CurveFrame straight;
+  CurveGeometry straight;
   c.accepted(flat, straight);
   EXPECT_NEAR(c.step(), 0.02, 1e-15);
   // Guard rejections halve; below min_step the rule gives up.
@@ -94,7 +95,7 @@ Traced trace_viviani(StepRule rule, double deviation) {
   o.step_length = 0.5;
   o.deviation = deviation;
   o.turn_angle = 0.05;
-  TraceResult r = Tracer(P, o).trace({testing::viviani(M_PI / 2)});
+  TraceResult r = trace_all(P, o, {testing::viviani(M_PI / 2)});
   EXPECT_EQ(r.curves.size(), 1u);
   EXPECT_TRUE(r.curves[0].closed);
   EXPECT_NEAR(r.curves[0].length / testing::kVivianiLength - 1, 0.0, 1e-5);
@@ -119,7 +120,7 @@ TEST(StepRulesTraced, ChordalKeepsEverySagittaBelowDeltaWithFewPoints) {
       double s = viviani_param_guess(pts[i].p) + 0.5 * (pts[i + 1].p - pts[i].p).norm() / std::hypot(1.0, std::cos(0.5 * viviani_param_guess(pts[i].p)));
       worst = std::max(worst, testing::distance_to_curve(f, mid, s));
       // Minimum points: integral of sqrt(kappa / (8 delta)) ds, kappa from the curve's jet.
-      CurveFrame fr = curve_frame(curve_jet_dynamic(P, pts[i].x, 2), P.scale());
+      CurveGeometry fr = frenet_from_jet(curve_jet_dynamic(P, pts[i].x, 2), P.scale());
       minimum += std::sqrt(fr.kappa / (8 * delta)) * (pts[i + 1].p - pts[i].p).norm();
     }
     EXPECT_LE(worst, delta) << delta;
@@ -151,7 +152,7 @@ TEST(StepRulesTraced, DeviationAndOrder3FollowTheirFormulasPointByPoint) {
     StepBounds b{0.5, 5e-4, 0};
     int on_formula = 0;
     for (std::size_t i = 1; i + 2 < pts.size(); ++i) {
-      CurveFrame fr = curve_frame(curve_jet_dynamic(P, pts[i].x, 3), P.scale());
+      CurveGeometry fr = frenet_from_jet(curve_jet_dynamic(P, pts[i].x, 3), P.scale());
       double L = rule == StepRule::kDeviation ? stoyanov_step_length(1e-4, fr.kappa, b)
                                               : order3_step_length(1e-4, fr.kappa, fr.kappa_prime, fr.tau, b);
       double arc = arc_length_estimate(pts[i].p, pts[i].t, pts[i + 1].p, pts[i + 1].t);

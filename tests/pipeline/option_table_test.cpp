@@ -101,7 +101,7 @@ TEST(OptionTable, ValuesAreTypedAndExpressionsUseTheConstants) {
   EXPECT_EQ(o.trace.taylor_order, 6);
   EXPECT_EQ(o.trace.step, StepRule::kConstant);
   ASSERT_TRUE(o.geometry.has_value());
-  EXPECT_EQ(*o.geometry, geometry::GeometryMethod::kYeMaekawa);
+  EXPECT_EQ(*o.geometry, GeometryMethod::kYeMaekawa);
   EXPECT_FALSE(parse_scene(scene_with_options("{}"), "s.json").intersections[0].options.geometry.has_value());
   // Zero is the automatic value, not a subnormal or an out-of-range number.
   EXPECT_EQ(option_error("step_length", "0"), "(no error)");

@@ -47,7 +47,7 @@ TEST(TraceJob, OverridesAndSelectionAreCheckedBeforeTracing) {
   ASSERT_EQ(specs.size(), 1u);
   EXPECT_EQ(specs[0].name, "ellipse");
   EXPECT_EQ(specs[0].options.trace.step_length, 0.2);
-  EXPECT_EQ(specs[0].options.geometry, geometry::GeometryMethod::kYeMaekawa);
+  EXPECT_EQ(specs[0].options.geometry, GeometryMethod::kYeMaekawa);
 
   TraceRequest unknown;
   unknown.only = {"nope"};

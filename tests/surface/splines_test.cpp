@@ -235,13 +235,13 @@ TEST(BSplineSurface, RejectsInvalidInput) {
 
 TEST(SplineBasis, SpanSearchClampsToTheDomain) {
   const std::vector<double> U{0, 0, 0, 0.3, 0.3, 0.7, 1, 1, 1};  // degree 2, 6 points
-  EXPECT_EQ(spline::find_span(U, 2, 6, 0.0), 2);
-  EXPECT_EQ(spline::find_span(U, 2, 6, -5.0), 2);
-  EXPECT_EQ(spline::find_span(U, 2, 6, 0.29), 2);
-  EXPECT_EQ(spline::find_span(U, 2, 6, 0.3), 4);
-  EXPECT_EQ(spline::find_span(U, 2, 6, 0.7), 5);
-  EXPECT_EQ(spline::find_span(U, 2, 6, 1.0), 5);
-  EXPECT_EQ(spline::find_span(U, 2, 6, 3.0), 5);
+  EXPECT_EQ(internal::find_span(U, 2, 6, 0.0), 2);
+  EXPECT_EQ(internal::find_span(U, 2, 6, -5.0), 2);
+  EXPECT_EQ(internal::find_span(U, 2, 6, 0.29), 2);
+  EXPECT_EQ(internal::find_span(U, 2, 6, 0.3), 4);
+  EXPECT_EQ(internal::find_span(U, 2, 6, 0.7), 5);
+  EXPECT_EQ(internal::find_span(U, 2, 6, 1.0), 5);
+  EXPECT_EQ(internal::find_span(U, 2, 6, 3.0), 5);
 }
 
 }  // namespace

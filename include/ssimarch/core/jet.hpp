@@ -32,7 +32,7 @@
 
 namespace ssimarch {
 
-namespace detail {
+namespace internal {
 
 constexpr int binomial(int n, int k) {
   if (k < 0 || k > n) return 0;
@@ -110,7 +110,7 @@ struct JetLayout {
   }
 };
 
-}  // namespace detail
+}  // namespace internal
 
 /// Truncated Taylor polynomial in NV variables to total degree K (normalised coefficients).
 template <int NV, int K>
@@ -121,8 +121,8 @@ class Jet {
  public:
   static constexpr int kVars = NV;
   static constexpr int kOrder = K;
-  static constexpr int kSize = detail::JetLayout<NV, K>::kSize;
-  using Layout = detail::JetLayout<NV, K>;
+  static constexpr int kSize = internal::JetLayout<NV, K>::kSize;
+  using Layout = internal::JetLayout<NV, K>;
   using MultiIndex = std::array<int, NV>;
 
   Jet() { c_.fill(0.0); }
@@ -230,7 +230,7 @@ class Jet {
     return r;
   }
 
-  friend Jet reciprocal(const Jet& b) { return apply(b, series::reciprocal<K>(b.value())); }
+  friend Jet reciprocal(const Jet& b) { return apply(b, internal::reciprocal<K>(b.value())); }
 
   // Comparisons act on the primal value only (branching code must use primal(), style.md 3.3).
   friend bool operator<(const Jet& a, const Jet& b) { return a.value() < b.value(); }
@@ -269,7 +269,7 @@ bool is_finite(const Jet<NV, K>& x) {
 #define SSIMARCH_JET_UNARY(name)                                      \
   template <int NV, int K>                                            \
   Jet<NV, K> name(const Jet<NV, K>& a) {                              \
-    return Jet<NV, K>::apply(a, series::name<K>(a.value()));          \
+    return Jet<NV, K>::apply(a, internal::name<K>(a.value()));          \
   }
 SSIMARCH_JET_UNARY(exp)    // exp(a0+h) = e^a0 sum h^k/k!
 SSIMARCH_JET_UNARY(log)    // log(a0+h) = log a0 + sum (-1)^(k+1) h^k/(k a0^k)
@@ -292,7 +292,7 @@ template <int NV, int K>
 Jet<NV, K> pow(const Jet<NV, K>& a, double r) {
   double ri = std::round(r);
   if (ri == r && std::fabs(r) <= 64) return pow(a, static_cast<int>(ri));
-  return Jet<NV, K>::apply(a, series::pow<K>(a.value(), r));
+  return Jet<NV, K>::apply(a, internal::pow<K>(a.value(), r));
 }
 
 /// a^n for integer n by repeated squaring, exact also at a0 = 0 for n >= 0.
@@ -342,7 +342,7 @@ Jet<NV, K> atan2(const Jet<NV, K>& y, const Jet<NV, K>& x) {
 /// must equal f's expansion point; only their non-constant parts enter.
 template <int NV, int M, int K>
 Jet<M, K> compose(const Jet<NV, K>& f, const std::array<Jet<M, K>, NV>& x) {
-  const auto& layout = detail::JetLayout<NV, K>::get();
+  const auto& layout = internal::JetLayout<NV, K>::get();
   // powers[v][p] = (x_v - x_v0)^p
   std::array<std::array<Jet<M, K>, K + 1>, NV> powers;
   for (int v = 0; v < NV; ++v) {

@@ -13,7 +13,7 @@
 #include <cmath>
 #include <limits>
 
-namespace ssimarch::series {
+namespace ssimarch::internal {
 
 template <int K>
 using Coeffs = std::array<double, K + 1>;
@@ -189,4 +189,4 @@ Coeffs<K> abs(double x0) {
   return f;
 }
 
-}  // namespace ssimarch::series
+}  // namespace ssimarch::internal

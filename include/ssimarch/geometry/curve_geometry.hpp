@@ -1,10 +1,10 @@
 // The differential geometry of a space curve at one point, as one small value type, and the
-// Frenet formulas that produce it from derivatives (spec/curve-geometry.md §1).
+// Frenet formulas that produce it from derivatives (thesis §2.1).
 //
 // Conventions (docs/geometry.md):
 //  * Torsion is the standard one, tau = (c' x c'') . c''' / |c' x c''|^2 (right-handed helix
 //    positive; Frenet b' = -tau n). The thesis (seed 003) prints do Carmo's sign, tau_dC = -tau
-//    (spec/curve-geometry.md §0); use tau_do_carmo() to compare with its tables.
+//    (docs/geometry.md, torsion sign); use tau_do_carmo() to compare with its tables.
 //  * n points to the centre of curvature, b = t x n.
 //  * kappa_prime = d kappa / ds with s the arc length in the direction of t: it changes sign
 //    with the orientation of t (kappa and tau do not).
@@ -20,8 +20,11 @@
 #include <string_view>
 
 #include "ssimarch/core/vec3.hpp"
+#include "ssimarch/problem/singular_tolerances.hpp"
 
-namespace ssimarch::geometry {
+namespace ssimarch {
+
+struct DynamicCurveJet;  // problem/curve_jet.hpp
 
 /// Outcome of a geometry evaluation. Each status documents which fields are valid; the others
 /// are NaN.
@@ -49,7 +52,7 @@ std::string_view to_string(GeometryStatus status);
 
 /// The methods of issue 4 (docs/geometry.md has the formulas and sources).
 enum class GeometryMethod {
-  kExact,           // implicit function theorem, order by order (geometry/curve_jet.hpp)
+  kExact,           // implicit function theorem, order by order (problem/curve_jet.hpp)
   kYeMaekawa,       // transversal eqs 3.11-3.15, 3.23-3.25; tangential eqs 3.1-3.6, 3.16-3.22
   kWillmore,        // operator method, two implicit surfaces (seed 004 §4)
   kStoyanov,        // curvature vector from the Gram system of the two normals (eqs 3.8-3.9)
@@ -73,11 +76,11 @@ struct GeometryTolerances {
   /// tangential formulas. About sqrt(machine epsilon): where two surfaces are tangent the
   /// residual is quadratic in the distance, so a point can only be located to ~1e-8 of a
   /// tangential point, where sin(theta) is of that order too.
-  double singular_sin_theta = 1e-7;
+  double singular_sin_theta = kTangentialSinTheta;
   /// Curvature below which the Frenet frame is undefined (1 / model length).
   double zero_curvature = 1e-12;
-  /// mixed: ye-maekawa where sin(theta) >= this, estimate below (dimensionless; thesis §3.2,
-  /// spec/marching-directions.md §5).
+  /// mixed: ye-maekawa where sin(theta) >= this, estimate below (dimensionless; thesis §3.2
+  /// and §4.3).
   double mixed_sin_theta = 0.1;
   /// Tangential formulas: discriminant of the direction quadratic below which the two
   /// directions count as one, relative to the squared size of II_F - II_G (dimensionless).
@@ -98,14 +101,14 @@ struct CurveGeometry {
 
   bool has_tangent() const { return t.allFinite(); }
   bool has_frame() const { return n.allFinite() && b.allFinite(); }
-  /// The thesis' (do Carmo's) torsion, -tau (spec/curve-geometry.md §0).
+  /// The thesis' (do Carmo's) torsion, -tau (docs/geometry.md, torsion sign).
   double tau_do_carmo() const { return -tau; }
   /// Reverses the orientation of t: b and kappa' change sign, n, kappa, tau do not.
   void reverse();
 };
 
 /// Frenet data of a curve from its first three derivatives with respect to any regular
-/// parameter (spec/curve-geometry.md §1, eqs 2.3-2.5, 2.8):
+/// parameter (thesis §2.1, eqs 2.3-2.5, 2.8):
 ///   kappa = |c1 x c2| / |c1|^3, tau = (c1 x c2).c3 / |c1 x c2|^2, b = unit(c1 x c2), n = b x t,
 ///   kappa' = [ (w.(c1 x c3)) / (|w| |c1|^3) - 3 |w| (c1.c2) / |c1|^5 ] / |c1|,  w = c1 x c2
 /// (the derivative of eq 2.3 along the curve, divided by the speed). theta is left NaN.
@@ -113,7 +116,20 @@ struct CurveGeometry {
 CurveGeometry frenet_from_derivatives(const Vec3& c1, const Vec3& c2, const Vec3& c3,
                                       const GeometryTolerances& tol = {});
 
+/// kappa times the problem's length scale at or below which a curve counts as straight at a
+/// point (dimensionless): its Frenet frame is then undetermined.
+inline constexpr double kStraightCurvature = 1e-12;
+
+/// The same frame from an arc-length jet alpha(s) = sum alpha_k s^k (problem/curve_jet.hpp),
+/// where |alpha'| = 1 and alpha' . alpha'' = 0 reduce the formulas above to
+///   kappa = |alpha''|, n = alpha''/kappa, b = t x n, kappa' = alpha'''.n, tau = alpha'''.b/kappa
+/// (thesis §2.1, eqs 2.3-2.5). The marching predictors and step rules use it. Status kOk, or
+/// kZeroCurvature where kappa * length_scale <= kStraightCurvature (n, b, tau, kappa' NaN); a jet
+/// of order 2 determines no third derivative (tau, kappa' NaN), one of order 1 no curvature
+/// (kZeroCurvature with kappa = 0); kSingular / kNonFinite when the jet is. theta is left NaN.
+CurveGeometry frenet_from_jet(const DynamicCurveJet& jet, double length_scale);
+
 /// Angle between two unit normals, atan2(|a x b|, a.b), in [0, pi].
 double normal_angle(const Vec3& a, const Vec3& b);
 
-}  // namespace ssimarch::geometry
+}  // namespace ssimarch

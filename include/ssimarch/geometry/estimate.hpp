@@ -1,5 +1,5 @@
 // Curvature, torsion and curvature derivative estimated from points and unit tangents only:
-// the thesis' technique for singular regions (spec/curve-geometry.md §1.3 and §3.4-3.5).
+// the thesis' technique for singular regions (thesis §2.1, eqs 2.10-2.12, and §3.2, eq 3.27).
 //
 // A sample is a point of the curve with its unit tangent, oriented along the direction in which
 // the samples are ordered. At sample j the estimate builds an osculating-circle estimate
@@ -7,7 +7,7 @@
 //   kappa  = 1 / R(j),  n = unit(C(j) - P_j) (projected normal to t_j),  b = unit(t_j x n)
 //   |tau|  = 2 sin(phi/2) / |P_j - P_{j-1}|,  phi = angle(b(j), b(j-1))                  (eq 2.11)
 //   sign   = sign[(P_j - P_{j-1}).b(j)] gives the sign of the standard torsion      (eq 2.12,
-//            read with n towards the centre; spec/curve-geometry.md §1.3 caveat)
+//            read with n towards the centre; docs/geometry.md)
 //   kappa' = (kappa(j) - kappa(j-1)) / |P_j - P_{j-1}|                                 (eq 3.27)
 // (with kWuAndrade the two denominators are the distance between the frames' arc midpoints,
 // (|P_j - P_{j-1}| + |P_{j+1} - P_j|) / 2: the chord for equal steps, right for unequal ones;
@@ -26,7 +26,7 @@
 
 #include "ssimarch/geometry/curve_geometry.hpp"
 
-namespace ssimarch::geometry {
+namespace ssimarch {
 
 struct CurveSample {
   Vec3 point;
@@ -57,4 +57,4 @@ double barnhill_kersey_radius(const Vec3& p, const Vec3& q, const Vec3& r);
 CurveGeometry estimate_from_samples(std::span<const CurveSample> samples, std::size_t index, EstimateCircle circle,
                                     const GeometryTolerances& tol = {});
 
-}  // namespace ssimarch::geometry
+}  // namespace ssimarch

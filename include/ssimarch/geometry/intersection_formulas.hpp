@@ -12,10 +12,10 @@
 #include "ssimarch/geometry/curve_geometry.hpp"
 #include "ssimarch/geometry/surface_local.hpp"
 
-namespace ssimarch::geometry {
+namespace ssimarch {
 
-/// Ye-Maekawa, transversal (spec/curve-geometry.md §3.2 item 4 and §3.3, eqs 3.11-3.15,
-/// 3.23-3.25; spec/implicit-curve-geometry.md §1 for implicit surfaces):
+/// Ye-Maekawa, transversal (thesis ch. 3, eqs 3.11-3.15, 3.23-3.25; seed 004 §4 for implicit
+/// surfaces):
 ///   t = unit(N1 x N2), c'' = [(k1 - k2 cos th) N1 + (k2 - k1 cos th) N2] / sin^2 th,
 ///   c''' = -kappa^2 t + [(l1 - l2 cos th) N1 + (l2 - l1 cos th) N2] / sin^2 th,
 ///   kappa' = c'''.n, tau = c'''.b / kappa.
@@ -23,14 +23,14 @@ namespace ssimarch::geometry {
 CurveGeometry ye_maekawa_transversal(const SurfaceLocal& first, const SurfaceLocal& second,
                                      const Vec3* orientation, const GeometryTolerances& tol = {});
 
-/// Stoyanov (spec/curve-geometry.md §3.2 item 2, eqs 3.8-3.9): c'' = a1 N1 + a2 N2 from the
+/// Stoyanov (thesis ch. 3, eqs 3.8-3.9): c'' = a1 N1 + a2 N2 from the
 /// Gram system [N1.N1 N1.N2; N2.N1 N2.N2] (a1, a2) = (c''.N1, c''.N2). The third derivative is
 /// found the same way (its normal-plane part from the Gram system with right-hand side
 /// (c'''.N1, c'''.N2), plus -kappa^2 t); the thesis stops at c''. kSingular as above.
 CurveGeometry stoyanov(const SurfaceLocal& first, const SurfaceLocal& second, const Vec3* orientation,
                        const GeometryTolerances& tol = {});
 
-/// Willmore's operator method for two implicit surfaces (spec/implicit-curve-geometry.md §2,
+/// Willmore's operator method for two implicit surfaces (seed 004 §4,
 /// eqs 4.7-4.23): h = grad f x grad g, Delta = h.grad, k = h x Delta h, Delta k = h x Delta^2 h,
 ///   kappa = |k| / |h|^3, c'' = (k x h) / |h|^4, tau = -Delta h . Delta k / |k|^2,
 ///   kappa' = (k.Delta k / (|k| |h|^3) - 3 |k| (h.Delta h) / |h|^5) / |h|
@@ -40,8 +40,8 @@ CurveGeometry willmore(const ImplicitLocal& f, const ImplicitLocal& g, const Vec
                        const GeometryTolerances& tol = {});
 
 /// The tangent directions and curvatures of the branches through a tangential point (normals
-/// parallel, contact of order one), Ye-Maekawa (spec/curve-geometry.md §3.1 tangential and §3.2
-/// item 5, eqs 3.1-3.6 and 3.16-3.22 with the corrections listed there):
+/// parallel, contact of order one), Ye-Maekawa (thesis ch. 3, tangential case,
+/// eqs 3.1-3.6 and 3.16-3.22 with the corrections in docs/geometry.md):
 ///  * direction(s): (II_1 - II_2)(t, t) = 0 in the common tangent plane (eq 3.2);
 ///  * curvature vector c'' = k N + g m (m = N x t) with k = II_1(t,t) = II_2(t,t), c''.t = 0
 ///    (eq 3.22) and g from equal third normal derivatives c'''.N on both surfaces (eq 3.21).
@@ -73,4 +73,4 @@ CurveGeometry ye_maekawa(const SurfaceLocal& first, const SurfaceLocal& second, 
 Vec3 intersection_tangent(const SurfaceLocal& first, const SurfaceLocal& second, const Vec3* orientation,
                           const GeometryTolerances& tol = {});
 
-}  // namespace ssimarch::geometry
+}  // namespace ssimarch

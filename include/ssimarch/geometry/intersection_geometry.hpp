@@ -12,9 +12,9 @@
 #include "ssimarch/geometry/curve_geometry.hpp"
 #include "ssimarch/geometry/estimate.hpp"
 #include "ssimarch/geometry/surface_local.hpp"
-#include "ssimarch/march/problem.hpp"
+#include "ssimarch/problem/problem.hpp"
 
-namespace ssimarch::geometry {
+namespace ssimarch {
 
 /// What a method may use besides the point itself.
 struct GeometryContext {
@@ -74,4 +74,4 @@ std::optional<VecX> step_along_curve(const Problem& problem, const VecX& x, cons
 GeometryContext sample_context(const Problem& problem, const VecX& x, double step, const Vec3* orientation,
                                int count = 2, const GeometryTolerances& tol = {});
 
-}  // namespace ssimarch::geometry
+}  // namespace ssimarch

@@ -1,6 +1,6 @@
 // Local derivative data of one surface at one point, to third order, and the normal projections
 // of a curve's second and third derivatives that every intersection-geometry formula is built on
-// (spec/curve-geometry.md §2, §3.3; spec/implicit-curve-geometry.md §1).
+// (thesis §2.2 and ch. 3; seed 004 §4).
 //
 // This layer knows nothing of the Surface class: the data come from jets (parametric_local /
 // implicit_local below take any callable written once for every scalar type) or from the
@@ -13,9 +13,9 @@
 // parametric: II(a,b) = L a_u b_u + M (a_u b_v + a_v b_u) + N a_v b_v with (a_u, a_v) the
 //   coordinates of a in (F_u, F_v), w2 = F_u u'' + F_v v'' from
 //   E u'' + F v'' = c''.F_u - F_uu.F_u u'^2 - 2 F_uv.F_u u'v' - F_vv.F_u v'^2 (and with F_v)
-//   (spec/curve-geometry.md §3.3, the E_u/2 ... form written with the dot products it abbreviates);
+//   (thesis ch. 3, the E_u/2 ... form written with the dot products it abbreviates);
 // implicit:   c''.grad f = -D^2f[t,t],  c'''.grad f = -(D^3f[t,t,t] + 3 D^2f[t,c''])
-//   (spec/implicit-curve-geometry.md §1, eqs 4.6, 4.19-4.20), projected on N by dividing by grad f.N.
+//   (seed 004 §4, eqs 4.6, 4.19-4.20), projected on N by dividing by grad f.N.
 // Both are linear in N, so they hold for either orientation of the normal.
 #pragma once
 
@@ -26,7 +26,7 @@
 #include "ssimarch/core/jet.hpp"
 #include "ssimarch/core/vec3.hpp"
 
-namespace ssimarch::geometry {
+namespace ssimarch {
 
 /// F and its partial derivatives to order 3 at (u, v).
 struct ParametricLocal {
@@ -105,4 +105,4 @@ ImplicitLocal implicit_local(const Fn& f, const Vec3& p) {
   return s;
 }
 
-}  // namespace ssimarch::geometry
+}  // namespace ssimarch

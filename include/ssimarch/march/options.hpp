@@ -8,7 +8,7 @@
 
 namespace ssimarch {
 
-/// Where the next point is guessed (spec/marching-directions.md, spec/circular-step.md).
+/// Where the next point is guessed (thesis ch. 4; seed 000 §3; docs/marching.md).
 enum class PredictorKind {
   kTangent,           // "tangent": x + L x'(0), i.e. P + L t (Barnhill et al.); point error O(L^2)
   kCircle,            // "circle": seed 000's circular step through the last two points; O(L^2), O(L^3) where kappa' = 0

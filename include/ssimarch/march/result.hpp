@@ -21,6 +21,7 @@ enum class Termination {
   kStepUnderflow,  // no step of length >= min_step could be taken at a regular point
   kMaxPoints,      // the curve reached options.max_points points
   kMaxLength,      // the traced length reached options.max_length
+  kReachedTracedCurve,  // the end came within a given distance of a curve traced before
 };
 std::string_view to_string(Termination t);
 
@@ -56,6 +57,10 @@ struct TraceStats {
   // Wall time is `time_ms` (milliseconds, steady clock), over the whole trace() call.
 
   void record_iterations(int n) { ++iterations[static_cast<std::size_t>(n <= 1 ? 0 : (n >= 5 ? 4 : n - 1))]; }
+  void add_surface_evaluations(const std::array<long, 2>& e) {
+    surface_evaluations[0] += e[0];
+    surface_evaluations[1] += e[1];
+  }
   TraceStats& operator+=(const TraceStats& o);
 };
 

@@ -18,7 +18,7 @@ namespace ssimarch {
 /// Everything an intersection of a trace job is traced and decorated with.
 struct TraceJobOptions {
   TraceOptions trace;                      // how the curve is marched (march/options.hpp)
-  std::optional<geometry::GeometryMethod> geometry;  // differential geometry at every output point, by this method
+  std::optional<GeometryMethod> geometry;  // differential geometry at every output point, by this method
 };
 
 /// A value as the user wrote it: a JSON number, or text (a name such as "taylor", or a number

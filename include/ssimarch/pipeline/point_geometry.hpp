@@ -11,7 +11,7 @@ namespace ssimarch {
 
 struct PointGeometryQuery {
   Vec3 at;                                // a point near the curve
-  geometry::GeometryMethod method = geometry::GeometryMethod::kExact;
+  GeometryMethod method = GeometryMethod::kExact;
   double step = 0.01;                     // chord between the samples of the estimate methods (model units)
   std::optional<Vec3> toward;             // orient t so that t . toward >= 0
 };
@@ -20,7 +20,7 @@ struct PointGeometry {
   std::optional<VecX> x;                  // the curve point's unknowns; empty when Newton did not reach the curve
   Vec3 point = Vec3::Zero();              // problem.point(*x)
   double distance = 0;                    // |point - at|
-  geometry::CurveGeometry geometry;
+  CurveGeometry geometry;
   bool sampled = false;                   // the method used samples along the curve
   std::size_t samples = 0;                // how many (the point included), when sampled
 };

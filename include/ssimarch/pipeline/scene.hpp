@@ -11,7 +11,7 @@
 
 #include "ssimarch/core/vec3.hpp"
 #include "ssimarch/expr/program.hpp"
-#include "ssimarch/march/problem.hpp"
+#include "ssimarch/problem/problem.hpp"
 #include "ssimarch/pipeline/option_table.hpp"
 #include "ssimarch/surface/surface.hpp"
 

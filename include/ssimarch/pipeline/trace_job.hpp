@@ -20,7 +20,7 @@ struct IntersectionRun {
   TraceResult result;
   /// With the "geometry" option: geometry[c][i] is the differential geometry at
   /// result.curves[c].points[i]; empty without it.
-  std::vector<std::vector<geometry::CurveGeometry>> geometry;
+  std::vector<std::vector<CurveGeometry>> geometry;
 };
 
 /// An option set for the whole job (e.g. a command-line flag) over every intersection's own.
@@ -55,7 +55,7 @@ TraceJobResult trace_scene(const Scene& scene, const TraceRequest& request = {})
 
 /// The differential geometry at every point of a traced curve by `method`, each point with its
 /// neighbours along the curve as the estimate methods' samples (closed curves wrap).
-std::vector<geometry::CurveGeometry> geometry_along_curve(const Problem& problem, const TracedCurve& curve,
-                                                          geometry::GeometryMethod method);
+std::vector<CurveGeometry> geometry_along_curve(const Problem& problem, const TracedCurve& curve,
+                                                          GeometryMethod method);
 
 }  // namespace ssimarch

@@ -49,10 +49,10 @@ class BezierPatch {
     for (std::size_t i = 0; i <= static_cast<std::size_t>(n_); ++i) {
       for (std::size_t j = 0; j < cols; ++j)
         for (std::size_t c = 0; c < D; ++c) row[j][c] = T(h[i * cols + j][c]);
-      spline::de_casteljau<T, D>(row, v);
+      internal::de_casteljau<T, D>(row, v);
       col[i] = row[0];
     }
-    spline::de_casteljau<T, D>(col, u);
+    internal::de_casteljau<T, D>(col, u);
     const auto& q = col[0];
     if constexpr (D == 4) return {q[0] / q[3], q[1] / q[3], q[2] / q[3]};
     else return {q[0], q[1], q[2]};

@@ -8,7 +8,7 @@
 #include <span>
 #include <vector>
 
-namespace ssimarch::spline {
+namespace ssimarch::internal {
 
 /// Index k of the knot span [knots[k], knots[k+1]) containing t, restricted to the domain spans
 /// degree <= k < n_ctrl (t below the domain gives the first span, t at or above its end the
@@ -43,4 +43,4 @@ void de_boor(std::span<std::array<T, D>> d, std::span<const double> knots, int p
     }
 }
 
-}  // namespace ssimarch::spline
+}  // namespace ssimarch::internal

@@ -1,5 +1,5 @@
 // Curve jets by the implicit function theorem against the closed-form curves.
-#include "ssimarch/geometry/curve_jet.hpp"
+#include "ssimarch/problem/curve_jet.hpp"
 
 #include <gtest/gtest.h>
 
@@ -54,7 +54,7 @@ TEST(CurveJet, TorusCurveFromEveryPairKindMatchesFrenetValues) {
     expect_matches(jy, f);
     EXPECT_NEAR((jy.alpha[0] - p).norm(), 0.0, 1e-14);
   }
-  // Seed value at C1(0): kappa = 0.512195, standard torsion -0.125436 (spec/examples.md Table 3.3).
+  // Seed value at C1(0): kappa = 0.512195, standard torsion -0.125436 (thesis Table 3.3).
   Problem pp(testing::ruled_surface(), testing::torus_g1(), PairKind::kParametricParametric);
   VecX x(4);
   x << 0.0, 0.0, 0.0, M_PI / 2;

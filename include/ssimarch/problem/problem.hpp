@@ -1,5 +1,5 @@
-// The intersection of two surfaces as the zero set of H : R^n -> R^(n-1) (spec/architecture.md,
-// "One idea carries the engine"; Allgower & Georg, Numerical Continuation Methods, ch. 2):
+// The intersection of two surfaces as the zero set of H : R^n -> R^(n-1) (Allgower & Georg,
+// Numerical Continuation Methods, ch. 2; docs/architecture.md, "One idea carries the engine"):
 //
 //   pair kind               unknowns x          H(x)                      n
 //   parametric-parametric   (u, v, p, q)        F(u,v) - G(p,q)           4

@@ -1,6 +1,6 @@
 // Taylor coefficients of an intersection curve through a regular point, to any order K, by the
-// implicit function theorem (seed 004 / spec/implicit-curve-geometry.md §5, generalised to the
-// three pair kinds of march/problem.hpp; derivation in docs/math/curve_jet.md).
+// implicit function theorem (seed 004 §5, generalised to the three pair kinds of
+// problem/problem.hpp; derivation in docs/math/curve_jet.md).
 //
 // Unknown: x(s) = sum_k c_k s^k with s the arc length of the 3D curve alpha(s) = point(x(s)).
 // Conditions, coefficient by coefficient:
@@ -17,22 +17,23 @@
 #include <array>
 #include <cmath>
 
+#include <string>
+
+#include "ssimarch/core/error.hpp"
 #include "ssimarch/core/jet.hpp"
-#include "ssimarch/march/problem.hpp"
+#include "ssimarch/problem/problem.hpp"
+#include "ssimarch/problem/singular_tolerances.hpp"
 
 namespace ssimarch {
 
 enum class CurveJetStatus {
   kOk,
-  // sigma_min(J_H) <= kRankTolerance * sigma_max(J_H): the tangent is not determined
+  // rank ratio of J_H <= kCurveJetRankTolerance (problem/singular_tolerances.hpp): the tangent is not determined
   // (a singular point of the curve: surfaces tangent, or a crossing of branches).
   kSingular,
   // Some derivative of the surfaces is not finite at this point.
   kNonFinite,
 };
-
-/// Relative singular-value threshold below which J_H is taken as rank deficient.
-inline constexpr double kCurveJetRankTolerance = 1e-10;
 
 template <int K>
 struct CurveJet {
@@ -60,7 +61,7 @@ struct CurveJet {
   }
 };
 
-namespace detail {
+namespace internal {
 
 // Unnormalised J_H (the residual functor's own derivative) and D, via first-order jets.
 template <int N>
@@ -141,22 +142,29 @@ CurveJet<K> curve_jet_n(const Problem& problem, const VecX& x0, const Vec3* hint
   return jet;
 }
 
-}  // namespace detail
+}  // namespace internal
 
 /// The curve's Taylor jet of order K at the solution x0 of problem. `hint`, if given, orients
 /// the tangent: alpha'(0) . hint >= 0.
 /// Requires: x0 on the curve (H(x0) ~ 0); otherwise the coefficients describe the level set of
 /// H through x0.
+/// Throws InputError when x0 does not have problem.dim() entries.
 template <int K>
 CurveJet<K> curve_jet(const Problem& problem, const VecX& x0, const Vec3* hint = nullptr) {
+  static_assert(K >= 1, "a curve jet has order >= 1");
+  if (x0.size() != problem.dim())
+    throw InputError("curve_jet", "the point has " + std::to_string(x0.size()) + " unknowns, the problem " +
+                                      std::to_string(problem.dim()));
   switch (problem.dim()) {
-    case 2: return detail::curve_jet_n<2, K>(problem, x0, hint);
-    case 3: return detail::curve_jet_n<3, K>(problem, x0, hint);
-    default: return detail::curve_jet_n<4, K>(problem, x0, hint);
+    case 2: return internal::curve_jet_n<2, K>(problem, x0, hint);
+    case 3: return internal::curve_jet_n<3, K>(problem, x0, hint);
+    case 4: return internal::curve_jet_n<4, K>(problem, x0, hint);
   }
+  // Problem's constructor admits only the three pair kinds (2, 3 or 4 unknowns).
+  throw InputError("curve_jet", "a problem with " + std::to_string(problem.dim()) + " unknowns");
 }
 
-/// Highest order curve_jet_dynamic supports.
+/// Highest order curve_jet_dynamic supports (TraceOptions::taylor_order is validated against it).
 inline constexpr int kMaxCurveJetOrder = 8;
 
 /// A curve jet whose order is chosen at run time (1..kMaxCurveJetOrder); coefficients above
@@ -182,9 +190,10 @@ struct DynamicCurveJet {
   const Vec3& tangent() const { return alpha[1]; }
 };
 
-namespace detail {
+namespace internal {
 template <int K>
 DynamicCurveJet to_dynamic(const CurveJet<K>& j, int n) {
+  static_assert(K <= kMaxCurveJetOrder, "DynamicCurveJet holds orders up to kMaxCurveJetOrder");
   DynamicCurveJet d;
   d.order = K;
   d.status = j.status;
@@ -195,20 +204,23 @@ DynamicCurveJet to_dynamic(const CurveJet<K>& j, int n) {
   }
   return d;
 }
-}  // namespace detail
+}  // namespace internal
 
+/// Throws InputError when order is outside 1..kMaxCurveJetOrder (or as curve_jet).
 inline DynamicCurveJet curve_jet_dynamic(const Problem& problem, const VecX& x0, int order, const Vec3* hint = nullptr) {
   const int n = problem.dim();
   switch (order) {
-    case 1: return detail::to_dynamic(curve_jet<1>(problem, x0, hint), n);
-    case 2: return detail::to_dynamic(curve_jet<2>(problem, x0, hint), n);
-    case 3: return detail::to_dynamic(curve_jet<3>(problem, x0, hint), n);
-    case 4: return detail::to_dynamic(curve_jet<4>(problem, x0, hint), n);
-    case 5: return detail::to_dynamic(curve_jet<5>(problem, x0, hint), n);
-    case 6: return detail::to_dynamic(curve_jet<6>(problem, x0, hint), n);
-    case 7: return detail::to_dynamic(curve_jet<7>(problem, x0, hint), n);
-    default: return detail::to_dynamic(curve_jet<8>(problem, x0, hint), n);
+    case 1: return internal::to_dynamic(curve_jet<1>(problem, x0, hint), n);
+    case 2: return internal::to_dynamic(curve_jet<2>(problem, x0, hint), n);
+    case 3: return internal::to_dynamic(curve_jet<3>(problem, x0, hint), n);
+    case 4: return internal::to_dynamic(curve_jet<4>(problem, x0, hint), n);
+    case 5: return internal::to_dynamic(curve_jet<5>(problem, x0, hint), n);
+    case 6: return internal::to_dynamic(curve_jet<6>(problem, x0, hint), n);
+    case 7: return internal::to_dynamic(curve_jet<7>(problem, x0, hint), n);
+    case 8: return internal::to_dynamic(curve_jet<8>(problem, x0, hint), n);
   }
+  static_assert(kMaxCurveJetOrder == 8, "add the cases above up to kMaxCurveJetOrder");
+  throw InputError("curve_jet", "order " + std::to_string(order) + " outside 1.." + std::to_string(kMaxCurveJetOrder));
 }
 
 }  // namespace ssimarch

@@ -1,5 +1,5 @@
 // Problem: H and its Jacobian for the three pair kinds, against central differences.
-#include "ssimarch/march/problem.hpp"
+#include "ssimarch/problem/problem.hpp"
 
 #include <gtest/gtest.h>
 

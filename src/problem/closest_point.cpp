@@ -1,10 +1,10 @@
-#include "ssimarch/march/closest_point.hpp"
-
-#include "ssimarch/march/corrector.hpp"
+#include "ssimarch/problem/closest_point.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+
+#include "ssimarch/problem/gauss_newton.hpp"
 
 namespace ssimarch {
 
@@ -94,8 +94,7 @@ std::optional<VecX> regular_point_near(const Problem& problem, const VecX& x, do
                                        double min_rank_ratio) {
   const Vec3 p0 = problem.point(x);
   Linearization L0 = problem.linearize(x);
-  NewtonCorrector corrector;
-  CorrectorOptions co{tolerance, 30};
+  const CorrectorOptions co{tolerance, 30};
   // Directions: each unknown alone, then each pair of unknowns with both relative signs (at a
   // node of a parametric-implicit pair, the coordinate lines through it may meet the curve
   // only at the node itself).
@@ -110,7 +109,7 @@ std::optional<VecX> regular_point_near(const Problem& problem, const VecX& x, do
     if (!(speed > 0)) continue;
     for (double sign : {1.0, -1.0}) {
       VecX guess = x + (sign * distance / speed) * dir;
-      CorrectorResult r = corrector.correct(problem, guess, co);
+      CorrectorResult r = gauss_newton(problem, guess, co);
       if (r.status != CorrectorStatus::kConverged || !problem.inside(r.x)) continue;
       double d = (problem.point(r.x) - p0).norm();
       if (d < 0.1 * distance || d > 3 * distance) continue;

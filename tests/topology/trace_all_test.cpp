@@ -1,6 +1,6 @@
 // The tracer against exact curves: the thesis' torus curve C1 and Viviani's figure eight, for
 // every pair kind (issue 2 acceptance tests).
-#include "ssimarch/march/tracer.hpp"
+#include "ssimarch/topology/trace_all.hpp"
 
 #include <gtest/gtest.h>
 
@@ -39,7 +39,7 @@ void check_torus_curve(const Problem& P, double tolerance_on_surfaces) {
   TraceOptions o;
   o.step_length = 0.05;
   Tracer tracer(P, o);
-  TraceResult r = tracer.trace({testing::c1(0.3)});
+  TraceResult r = trace_all(tracer, {testing::c1(0.3)});
   ASSERT_EQ(r.curves.size(), 1u);
   const TracedCurve& c = r.curves[0];
   EXPECT_TRUE(c.closed);
@@ -65,7 +65,7 @@ TEST(Tracer, TorusCurveWithTaylorPredictor) {
   TraceOptions o;
   o.step_length = 0.1;
   o.predictor = PredictorKind::kTaylor;
-  TraceResult r = Tracer(P, o).trace({testing::c1(1.0)});
+  TraceResult r = trace_all(P, o, {testing::c1(1.0)});
   ASSERT_EQ(r.curves.size(), 1u);
   EXPECT_TRUE(r.curves[0].closed);
   EXPECT_NEAR(r.curves[0].length / testing::kC1Length - 1, 0.0, 1e-6);
@@ -85,7 +85,7 @@ void check_viviani(const Problem& P) {
   TraceOptions o;
   o.step_length = 0.05;
   Tracer tracer(P, o);
-  TraceResult r = tracer.trace({testing::viviani(M_PI / 2)});
+  TraceResult r = trace_all(tracer, {testing::viviani(M_PI / 2)});
   ASSERT_EQ(r.curves.size(), 1u);
   const TracedCurve& c = r.curves[0];
   EXPECT_TRUE(c.closed) << to_string(c.end_end) << ": " << c.end_message;
@@ -113,7 +113,7 @@ TEST(Tracer, OpenCurveLandsExactlyOnTheDomainEdge) {
             testing::implicit("z - 0.5*y - 1", Box{{-5, 5}, {-5, 5}, {-5, 5}}), PairKind::kParametricImplicit);
   TraceOptions o;
   o.step_length = 0.07;
-  TraceResult r = Tracer(P, o).trace({Vec3(0, 0, 1)});
+  TraceResult r = trace_all(P, o, {Vec3(0, 0, 1)});
   ASSERT_EQ(r.curves.size(), 1u);
   const TracedCurve& c = r.curves[0];
   EXPECT_FALSE(c.closed);
@@ -138,7 +138,7 @@ TEST(Tracer, FindsStartPointsAutomatically) {
   Problem P(testing::ruled_surface(), Torus(Vec3::Zero(), Vec3::UnitZ(), 4, 1), PairKind::kParametricImplicit);
   TraceOptions o;
   o.step_length = 0.05;
-  TraceResult r = Tracer(P, o).trace();
+  TraceResult r = trace_all(P, o);
   ASSERT_GE(r.curves.size(), 1u);
   // The torus curve C1 is among them, traced once.
   int matches = 0;

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "testing/surface_pairs.hpp"
-#include "ssimarch/march/tracer.hpp"
+#include "ssimarch/topology/trace_all.hpp"
 #include "ssimarch/surface/sphere.hpp"
 #include "ssimarch/surface/torus.hpp"
 
@@ -56,7 +56,7 @@ void expect_complete(const Problem& P, const TraceOptions& o, const Vec3& start,
                      double length) {
   SCOPED_TRACE(std::string(to_string(o.predictor)) + " / " + std::string(to_string(o.step)) + " / " +
                std::string(to_string(o.corrector)) + " / " + std::string(to_string(P.kind())));
-  TraceResult r = Tracer(P, o).trace({start});
+  TraceResult r = trace_all(P, o, {start});
   ASSERT_EQ(r.curves.size(), 1u);
   const TracedCurve& c = r.curves[0];
   EXPECT_TRUE(c.closed) << to_string(c.end_end) << ": " << c.end_message;
@@ -105,7 +105,7 @@ TEST(TracerMatrix, DefaultMeetsTheIterationTarget) {
   ASSERT_EQ(o.predictor, PredictorKind::kTaylor);
   ASSERT_EQ(o.step, StepRule::kChordal);
   ASSERT_EQ(o.tolerance, 1e-12);
-  TraceResult r = Tracer(P, o).trace({testing::c1(0.3)});
+  TraceResult r = trace_all(P, o, {testing::c1(0.3)});
   ASSERT_EQ(r.curves.size(), 1u);
   EXPECT_TRUE(r.curves[0].closed);
   EXPECT_GE(r.stats.iterations[0] + r.stats.iterations[1], 0.9 * static_cast<double>(r.stats.points));
@@ -133,7 +133,7 @@ TEST(Seed000Examples4And5, CircularStepNeedsNoMoreIterationsThanTheTangentStep) 
       o.step = StepRule::kConstant;
       o.step_length = run.L;
       o.max_points = 100;
-      TraceResult r = Tracer(*run.P, o).trace({run.start});
+      TraceResult r = trace_all(*run.P, o, {run.start});
       ASSERT_EQ(r.curves.size(), 1u);
       const TracedCurve& c = r.curves[0];
       EXPECT_EQ(c.points.size(), 199u);  // 100 points each way, sharing the start

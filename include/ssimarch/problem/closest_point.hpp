@@ -3,7 +3,8 @@
 
 #include <optional>
 
-#include "ssimarch/march/problem.hpp"
+#include "ssimarch/problem/problem.hpp"
+#include "ssimarch/problem/singular_tolerances.hpp"
 
 namespace ssimarch {
 
@@ -25,6 +26,6 @@ std::optional<VecX> unknowns_near(const Problem& problem, const Vec3& X);
 /// >= min_rank_ratio and whose 3D distance from x is in (0.1, 3] * distance. Empty when none is
 /// found (an isolated singular point has no regular neighbours).
 std::optional<VecX> regular_point_near(const Problem& problem, const VecX& x, double distance, double tolerance,
-                                       double min_rank_ratio = 1e-4);
+                                       double min_rank_ratio = kSuspectSingularRankRatio);
 
 }  // namespace ssimarch

@@ -1,4 +1,4 @@
-#include "ssimarch/march/problem.hpp"
+#include "ssimarch/problem/problem.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,0 +1,41 @@
+// Every tolerance that decides "this point is singular" (the curve's tangent is not determined:
+// the surfaces are tangent there, or branches cross), in one place, each with its unit and why it
+// has its value. Measures (all dimensionless, scale-free):
+//   rank ratio  sigma_min / sigma_max of J_H, Problem::rank_ratio (0 at a singular point);
+//   sin(theta)  |n_F x n_G| for unit surface normals (0 where the surfaces are tangent).
+// Where several of them nest, the smaller one decides that a computation is impossible and the
+// larger one that a point is suspicious: 1e-14 < 1e-10 < 1e-7 < 1e-4.
+#pragma once
+
+namespace ssimarch {
+
+/// Rank ratio at or below which Gauss-Newton has no usable update x <- x - J^+ H (the corrector
+/// reports kSingular). About 100 machine epsilons: J^+ amplifies rounding by 1 / sigma_min, and
+/// above this the update still carries a few correct digits.
+inline constexpr double kNewtonRankRatio = 1e-14;
+
+/// sin(theta) at or below which the tangent planes of the two surfaces count as parallel in seed
+/// 000's projection corrector (Wu & Andrade, seed 000 §2): their line of intersection is then
+/// not defined to more than rounding. Same reasoning as kNewtonRankRatio.
+inline constexpr double kParallelPlanesSinTheta = 1e-14;
+
+/// Rank ratio at or below which a curve jet reports kSingular (problem/curve_jet.hpp): the
+/// order-k coefficients solve a system whose condition grows like 1 / rank ratio per order, so
+/// below 1e-10 even the order-2 terms lose all but a few digits in double precision.
+inline constexpr double kCurveJetRankTolerance = 1e-10;
+
+/// sin(theta) below which the closed-form geometry formulas (geometry/, Ye & Maekawa 1999 §3)
+/// treat the normals as parallel (default of GeometryTolerances::singular_sin_theta). About
+/// sqrt(machine epsilon): near a tangential point the residual is quadratic in the distance, so a
+/// point can only be located to ~1e-8 of it, where sin(theta) is of that order too.
+inline constexpr double kTangentialSinTheta = 1e-7;
+
+/// Rank ratio (and sin(theta)) below which a point is *suspected* singular: a marching end that
+/// cannot take a step of min_step there stops as a singular point rather than a step underflow;
+/// a start point that converged onto such a point is moved to a regular neighbour; that
+/// neighbour must reach at least this ratio. 1e-4 separates a crossing of branches (the ratio
+/// falls like the distance to the node) from merely high curvature by orders of magnitude at the
+/// default step lengths (scale / 10 .. scale / 100).
+inline constexpr double kSuspectSingularRankRatio = 1e-4;
+
+}  // namespace ssimarch

@@ -1,0 +1,37 @@
+// The pieces of one march (tracer.cpp), each in its own file: the branch-jump guards and the
+// verdict where no step can be taken (step_guards.cpp), landing on the domain edge
+// (domain_edge.cpp), and the loop closure test (loop_closure.cpp).
+#pragma once
+
+#include "ssimarch/march/options.hpp"
+#include "ssimarch/march/tracer.hpp"
+#include "ssimarch/problem/gauss_newton.hpp"
+
+namespace ssimarch::internal {
+
+/// Angle between two vectors, atan2(|a x b|, a.b), in [0, pi].
+double angle_between(const Vec3& a, const Vec3& b);
+
+/// The guards on a corrected point p1 reached from `cur` by a prediction `predicted` that
+/// advanced `arc`: the chord |p1 - cur.p| is in [0.25, 1.75] arc, the correction
+/// |p1 - predicted| is <= max_correction_ratio arc, and p1 lies ahead of cur (along cur.t).
+bool chord_is_plausible(const CurvePoint& cur, const Vec3& p1, const Vec3& predicted, double arc, const TraceOptions& o);
+
+/// The guard on the tangents at both ends of a step: they turn by <= max_turn_angle.
+bool turn_is_plausible(const Vec3& t0, const Vec3& t1, const TraceOptions& o);
+
+/// The event where no step >= min_step could be taken after `cur` (jet rank ratio `rank_ratio`):
+/// kSingularSuspected when J_H or the normals are nearly degenerate there, else kStepUnderflow.
+Event stuck_event(const Problem& problem, const CurvePoint& cur, double rank_ratio, double min_step, TraceStats* stats);
+
+/// x1, the corrected point after `cur`, is outside the domain: lands on the first bound the
+/// chord cur.x -> x1 crosses (Newton with that unknown fixed), appends the landed point to *r
+/// when it differs from cur, and returns the kDomainEdge event.
+Event land_on_domain_edge(const Problem& problem, const CurvePoint& cur, const VecX& x1, const CorrectorOptions& co,
+                          TraceStats* stats, MarchResult* r);
+
+/// Whether the march closed: the start lies on the chord cur.p -> p1 within twice the chord's
+/// sagitta (from the turn cur.t -> t1) plus `slack` (model units), and the tangents agree.
+bool closes_loop(const CurvePoint& start, const CurvePoint& cur, const Vec3& p1, const Vec3& t1, double slack);
+
+}  // namespace ssimarch::internal
