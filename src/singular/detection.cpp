@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "ssimarch/core/error.hpp"
+#include "ssimarch/march/closest_point.hpp"
 
 namespace ssimarch {
 
@@ -39,50 +40,75 @@ StepSignals step_signals(const Problem& problem, const VecX& a, const VecX& b, c
 
 namespace {
 
-// The Newton step towards a critical point of h = g(F(u,v)) from (u, v) (second-order jet).
-bool newton_to_critical_point(const Problem& problem, const Vec2& z, Vec2* step) {
-  using J = Jet<2, 2>;
-  const Vec3T<J> F = problem.first().point(J::variable(0, z[0]), J::variable(1, z[1]));
-  const J g = problem.second().value(F);
-  if (!is_finite(g)) return false;
-  Eigen::Matrix2d H;
-  H << g.derivative({2, 0}), g.derivative({1, 1}), g.derivative({1, 1}), g.derivative({0, 2});
-  Eigen::CompleteOrthogonalDecomposition<Eigen::Matrix2d> cod(H);
-  *step = -cod.solve(Vec2(g.d(0), g.d(1)));
-  return step->allFinite();
+// Starting unknowns spread over the problem: a grid over the first surface's domain (the second
+// surface's nearest parameters added for parametric-parametric pairs) or over the 3D box.
+std::vector<VecX> grid_starts(const Problem& problem, int n, double* cell) {
+  const auto& B = problem.bounds();
+  std::vector<VecX> starts;
+  auto lerp = [&](int k, int i) { return B[static_cast<std::size_t>(k)].lo + B[static_cast<std::size_t>(k)].width() * i / (n - 1); };
+  if (problem.kind() == PairKind::kImplicitImplicit) {
+    const int m = std::max(3, n / 2);  // n^3 would be wasteful: the local curve reaches far
+    *cell = Vec3(B[0].width(), B[1].width(), B[2].width()).norm() / (m - 1);
+    for (int i = 0; i < m; ++i)
+      for (int j = 0; j < m; ++j)
+        for (int k = 0; k < m; ++k) {
+          VecX x(3);
+          x << B[0].lo + B[0].width() * i / (m - 1), B[1].lo + B[1].width() * j / (m - 1), B[2].lo + B[2].width() * k / (m - 1);
+          starts.push_back(x);
+        }
+    return starts;
+  }
+  *cell = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const double u = lerp(0, i), v = lerp(1, j);
+      VecX x(problem.dim());
+      if (problem.kind() == PairKind::kParametricImplicit) {
+        x << u, v;
+      } else {
+        const Vec3T<double> P = problem.first().point(u, v);
+        auto pq = closest_parameters(problem.second(), Vec3(P.x, P.y, P.z));
+        if (!pq) continue;
+        x << u, v, (*pq)[0], (*pq)[1];
+      }
+      starts.push_back(x);
+    }
+  // The 3D size of a cell: the largest image of one grid step (from the middle of the domain).
+  using J = Jet<2, 1>;
+  const Vec3T<J> F = problem.first().point(J::variable(0, lerp(0, n / 2)), J::variable(1, lerp(1, n / 2)));
+  const Vec3 Fu(F.x.d(0), F.y.d(0), F.z.d(0)), Fv(F.x.d(1), F.y.d(1), F.z.d(1));
+  *cell = std::max(Fu.norm() * B[0].width(), Fv.norm() * B[1].width()) / (n - 1);
+  return starts;
 }
 
 }  // namespace
 
 std::vector<SingularLocation> hunt_singular_points(const Problem& problem, const HuntOptions& options) {
-  if (problem.kind() != PairKind::kParametricImplicit)
-    throw InputError("hunt_singular_points", "implemented for parametric-implicit pairs only");
   if (options.grid < 3) throw InputError("hunt_singular_points.grid", "needs at least 3 samples per direction");
-  const auto& B = problem.bounds();
-  const int n = options.grid;
-  auto at = [&](int i, int j) {
-    return Vec2(B[0].lo + B[0].width() * i / (n - 1), B[1].lo + B[1].width() * j / (n - 1));
-  };
+  double cell = 0;
+  const std::vector<VecX> starts = grid_starts(problem, options.grid, &cell);
   std::vector<SingularLocation> found;
-  const Vec2 spacing(B[0].width() / (n - 1), B[1].width() / (n - 1));
-  // Starts: grid points whose Newton step for grad h = 0 stays within one cell (every critical
-  // point of h, the singular points among them, attracts the grid points around it).
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      Vec2 step;
-      if (!newton_to_critical_point(problem, at(i, j), &step)) continue;
-      if (std::fabs(step[0]) > spacing[0] || std::fabs(step[1]) > spacing[1]) continue;
-      VecX x(2);
-      x << at(i, j)[0] + step[0], at(i, j)[1] + step[1];
-      bool known = false;
-      for (const auto& f : found) known = known || problem.difference(f.x, x).norm() <= 1e-3 * spacing.norm();
-      if (known) continue;
-      SingularLocation s = locate_singular_point(problem, x, options.locate);
-      if (s.status != LocateStatus::kConverged || !problem.inside(s.x, 1e-9)) continue;
-      known = false;
-      for (const auto& f : found) known = known || problem.difference(f.x, s.x).norm() <= options.merge_distance;
-      if (!known) found.push_back(s);
-    }
+  for (const VecX& x0 : starts) {
+    // Only where the surfaces come within a cell of each other (first-order distance).
+    if (!(problem.linearize(x0).distance <= cell)) continue;
+    // Newton step towards a critical point of the local curve h; keep starts whose step stays
+    // within about one cell (every critical point of h attracts the grid points around it).
+    const LocalCurve c = local_curve(problem, x0);
+    if (c.status != LocalCurveStatus::kOk) continue;
+    const LocalValue v = evaluate(c.h, Vec2::Zero());
+    Eigen::CompleteOrthogonalDecomposition<Eigen::Matrix2d> cod(v.hessian);
+    const Vec2 step = -cod.solve(v.gradient);
+    if (!step.allFinite() || step.norm() > cell) continue;
+    const VecX x = c.unknowns_at(step);
+    bool known = false;
+    for (const auto& f : found) known = known || (f.point - problem.point(x)).norm() <= 1e-3 * cell;
+    if (known) continue;
+    SingularLocation s = locate_singular_point(problem, x, options.locate);
+    if (s.status != LocateStatus::kConverged || !problem.inside(s.x, 1e-9)) continue;
+    known = false;
+    for (const auto& f : found) known = known || problem.difference(f.x, s.x).norm() <= options.merge_distance;
+    if (!known) found.push_back(s);
+  }
   return found;
 }
 

@@ -94,8 +94,18 @@ TEST(Detection, HuntFindsEveryThesisSingularPoint) {
   EXPECT_TRUE(hunt(testing::graph_vs_plane_pi("u^6/6-5*u^4/4+2*u^2+v^2", "0.917")).empty());
 }
 
-TEST(Detection, HuntRejectsOtherPairKinds) {
-  EXPECT_THROW(hunt_singular_points(viviani_ii()), InputError);
+TEST(Detection, HuntFindsVivianisNodeForEveryPairKind) {
+  Problem pp(testing::param("cos(u)", "sin(u)-1", "v", {0, 2 * M_PI}, {-3, 3}, true),
+             testing::param("2*sin(u)", "2*cos(u)*cos(v)", "2*cos(u)*sin(v)", {-M_PI / 2, M_PI / 2}, {0, 2 * M_PI}, false, true),
+             PairKind::kParametricParametric);
+  for (const Problem& pr : {viviani_pi(), viviani_ii(), pp}) {
+    std::vector<SingularLocation> s = hunt_singular_points(pr);
+    ASSERT_EQ(s.size(), 1u) << to_string(pr.kind());
+    EXPECT_LE((s[0].point - Vec3(0, -2, 0)).norm(), 1e-12);
+  }
+  HuntOptions bad;
+  bad.grid = 2;
+  EXPECT_THROW(hunt_singular_points(viviani_pi(), bad), InputError);
 }
 
 }  // namespace

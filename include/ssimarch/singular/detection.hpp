@@ -45,11 +45,12 @@ struct HuntOptions {
   double merge_distance = 1e-7;  // solutions closer than this (unknowns) are the same point
 };
 
-/// Every singular point of a parametric-implicit pair found from a grid over the first surface's
-/// domain: critical points of h = g(F(u,v)) on its zero level (h = h_u = h_v = 0), started from
-/// the grid points whose Newton step for grad h = 0 stays within their cell and located by
-/// locate_singular_point. Isolated
-/// points (Ex. 16) included. Throws InputError for other pair kinds.
+/// Every singular point of the problem found from a grid: over the first surface's domain (with
+/// the second surface's nearest parameters for parametric-parametric pairs), or over the 3D box
+/// (grid/2 per direction) for implicit-implicit pairs. At each start the local curve h is built
+/// and the start kept when Newton's step towards a critical point of h stays within one grid
+/// cell; each kept start is located by locate_singular_point (h = h_s = h_t = 0). Isolated
+/// points (Ex. 16) included. Throws InputError for grid < 3.
 std::vector<SingularLocation> hunt_singular_points(const Problem& problem, const HuntOptions& options = {});
 
 }  // namespace ssimarch
