@@ -55,6 +55,25 @@ Vec2 gauss_newton_step(const Residual& R) {
   return Vec2(y[0] / scale[0], y[1] / scale[1]);
 }
 
+// Where the Taylor polynomial is a faithful model: the root test on its coefficients, with the
+// quadratic and cubic parts (one of which is O(1) at any singular point of multiplicity <= 3)
+// as reference: rho = min_d (M / |h_d|)^(1/(d-2)) (Cauchy-Hadamard, one term at a time).
+double model_radius(const LocalJet& h) {
+  auto degree_max = [&](int d) {
+    double m = 0;
+    for (int j = 0; j <= d; ++j) m = std::max(m, std::fabs(coef(h, d - j, j)));
+    return m;
+  };
+  const double M = std::max(degree_max(2), degree_max(3));
+  double rho = std::numeric_limits<double>::infinity();
+  if (!(M > 0)) return rho;
+  for (int d = 3; d <= kLocalOrder; ++d) {
+    const double c = degree_max(d);
+    if (c > 0) rho = std::min(rho, std::pow(M / c, 1.0 / (d - 2)));
+  }
+  return rho;
+}
+
 // Value and derivative of the n-th derivative of the univariate polynomial p at y.
 std::pair<double, double> derivative_at(const Taylor<kLocalOrder>& p, int n, double y) {
   double v = 0, dv = 0;
@@ -111,7 +130,7 @@ Vec2 refine_corank_one(const LocalJet& h, const Vec2& z, double radius) {
     r.phi[0] = g[0];
     return r;
   }();
-  const double rho = 0.1 * radius;
+  const double rho = 0.1 * std::min(radius, model_radius(g));
   int m = 1;
   double best = 0;
   for (int j = 1; j <= kLocalOrder; ++j) {
@@ -172,7 +191,8 @@ SingularLocation locate_singular_point(const Problem& problem, const VecX& guess
     c = local_curve(problem, x);
     ++out.expansions;
     if (c.status != LocalCurveStatus::kOk) return out;
-    const Vec2 z = solve_augmented_system(c.h, Vec2::Zero(), radius, options.max_inner_iterations);
+    const Vec2 z = solve_augmented_system(c.h, Vec2::Zero(), std::min(radius, model_radius(c.h)),
+                                          options.max_inner_iterations);
     out.last_step = z.norm();
     x = c.unknowns_at(z);
     // Stop at the rounding floor: the move no longer shrinks (at most once more after that).
