@@ -129,7 +129,7 @@ void classify_double_point(const LocalJet& h, double tol, Classification* c) {
     return;
   }
   c->real_branches = c->real_form < 0 ? 2 : 0;
-  // Branches X = +-sqrt(-c/lambda) Y^((k+1)/2) cross iff (k+1)/2 is odd (spec §4.4).
+  // Branches X = +-sqrt(-c/lambda) Y^((k+1)/2) cross iff (k+1)/2 is odd (docs/math/singular_local_curve.md §3).
   c->crossing = c->real_branches == 2 && ((k + 1) / 2) % 2 == 1;
   if (c->real_branches == 0)
     c->type = SingularType::kIsolated;

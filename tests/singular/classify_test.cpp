@@ -1,6 +1,6 @@
 // Classification against the oracle (tests/reference/oracle.json: s003.t21.codimensions,
 // s003.sec2.*, s003.alg1.classification, s003.ex12.tangent_slopes, s003.ex13.quartic,
-// s003.ch5.*) and the real forms of spec singularities.md §4.4 (Ex. 16 is an isolated point).
+// s003.ch5.*) and the real forms of docs/math/singular_local_curve.md §3 (Ex. 16 is an isolated point).
 #include "ssimarch/singular/classify.hpp"
 
 #include <gtest/gtest.h>
@@ -67,7 +67,7 @@ INSTANTIATE_TEST_SUITE_P(
         // (x+y)^2 + (x-y)^4: a sum of squares, isolated; (x+y)^2 + (x-y)^3: cusp
         GermCase{"rotated_a3", {{2, 0, 1}, {1, 1, 2}, {0, 2, 1}, {4, 0, 1}, {3, 1, -4}, {2, 2, 6}, {1, 3, -4}, {0, 4, 1}}, T::kIsolated, "A3", 3, 2},
         GermCase{"rotated_a2", {{2, 0, 1}, {1, 1, 2}, {0, 2, 1}, {3, 0, 1}, {2, 1, -3}, {1, 2, 3}, {0, 3, -1}}, T::kCusp, "A2", 2, 2},
-        // real forms with branches (spec §4.2 table): x^2 - y^4 tacnode, x^2 - y^6 oscnode
+        // real forms with branches (thesis Fig. 2.6): x^2 - y^4 tacnode, x^2 - y^6 oscnode
         GermCase{"tacnode", {{2, 0, 1}, {0, 4, -1}}, T::kTacnode, "A3", 3, 2},
         GermCase{"oscnode", {{2, 0, 1}, {0, 6, -1}}, T::kOscnode, "A5", 5, 2},
         GermCase{"isolated_a1", {{2, 0, 1}, {0, 2, 2}}, T::kIsolated, "A1", 1, 2},

@@ -1,5 +1,5 @@
 // Half-branches and their pairing at the thesis' singular points and Viviani's node, against
-// closed-form tangents and branch expansions (spec examples.md ch. 5, issue 10 "Tracing through").
+// closed-form tangents and branch expansions (thesis ch. 5 examples, issue 10 "Tracing through").
 #include "ssimarch/singular/half_branches.hpp"
 
 #include <gtest/gtest.h>

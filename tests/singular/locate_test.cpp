@@ -1,5 +1,5 @@
 // Location of singular points to <= 1e-12 in the unknowns, from guesses 0.02-0.05 away, against
-// closed forms (thesis ch. 5 examples, spec examples.md; Viviani's node (0,-2,0) for R = 2).
+// closed forms (thesis ch. 5 examples; Viviani's node (0,-2,0) for R = 2).
 // The thesis' own solver stopped 3e-3 from the tacnode of Ex. 18 (oracle s003.ch5.Ex18/27).
 #include "ssimarch/singular/locate.hpp"
 

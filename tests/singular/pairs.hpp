@@ -1,5 +1,5 @@
 // Surface pairs with singular intersection points in closed form (thesis ch. 5 examples,
-// spec examples.md; Viviani's node), and germs built from monomials, for the singular tests.
+// thesis ch. 5; Viviani's node), and germs built from monomials, for the singular tests.
 #pragma once
 
 #include <cmath>

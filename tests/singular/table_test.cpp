@@ -1,6 +1,6 @@
 // The published table of docs/singular.md: every singular point of the thesis' ch. 5 and 6
-// examples and of Viviani's curve, hunted over the whole domain, against closed forms (spec
-// examples.md; oracle s003.ex18.all_singular, s003.ex21.singular_points). Prints the table:
+// examples and of Viviani's curve, hunted over the whole domain, against closed forms (thesis
+// ch. 5-6; oracle s003.ex18.all_singular, s003.ex21.singular_points). Prints the table:
 //   build/bin/singular_tests --gtest_filter='SingularTable.*'
 #include <gtest/gtest.h>
 

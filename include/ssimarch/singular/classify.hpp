@@ -44,7 +44,7 @@ std::string_view to_string(SingularType t);
 
 struct ClassifyOptions {
   // Coefficients of h below zero_tolerance * (largest |coefficient| of degree >= 2) are zero
-  // (relative; spec §5: exact zero tests with a tolerance relative to the coefficient scale).
+  // (relative; thesis §5.2.5 coefficient tests, done as exact zero tests with a tolerance relative to the coefficient scale).
   double zero_tolerance = 1e-8;
 };
 

@@ -8,7 +8,7 @@
 // points. Along one branch it keeps its orientation between regular points; stepping over a
 // crossing (a node, a triple point) reverses it relative to the branch (Fig. 5.3), so
 // T(a) . T(b) < 0 between consecutive points a, b means "a crossing was stepped over: go back
-// and locate". Together with sin theta = |N_F x N_G| < 0.01 (spec §1) and the rank ratio.
+// and locate". Together with sin theta = |N_F x N_G| < 0.01 (thesis ch. 5 §5.2.1) and the rank ratio.
 #pragma once
 
 #include <vector>
@@ -19,7 +19,7 @@
 namespace ssimarch {
 
 struct DetectionThresholds {
-  double sine = 0.01;        // sin theta below which a point is near-singular (spec §1)
+  double sine = 0.01;        // sin theta below which a point is near-singular (thesis ch. 5 §5.2.1)
   double rank_ratio = 1e-3;  // Problem::rank_ratio below which J_H is near rank-deficient
 };
 

@@ -9,7 +9,7 @@
 // converges quadratically; at A_k (k >= 2) it converges linearly with ratio (k-1)/k along the
 // kernel direction, which costs only polynomial evaluations; re-expanding removes the truncation
 // error (O(distance^11)) so the limit is the rounding floor of h itself. The thesis' Sederberg
-// system stopped 3e-3 from a tacnode (spec table, Ex. 18); this reaches 1e-12 there.
+// system stopped 3e-3 from a tacnode (thesis Ex. 18; oracle s003.ch5.Ex18/27); this reaches 1e-12 there.
 #pragma once
 
 #include "ssimarch/march/problem.hpp"
