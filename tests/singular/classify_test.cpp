@@ -187,3 +187,32 @@ TEST(ClassifyPoint, Ex17EllipsoidNodeQuadraticForm) {
 
 }  // namespace
 }  // namespace ssimarch
+
+namespace ssimarch {
+namespace {
+
+// Curves of tangential contact (issue 10 item 5): a cylinder lying on a plane (h = v^2), and the
+// same contact curve crossed by a transversal branch (h = v^2 (u - 0.1)).
+TEST(ClassifyPoint, TangentialContactAndTangentLineCrossing) {
+  Problem contact = testing::graph_vs_plane_pi("v^2");
+  VecX x(2);
+  x << 0.3, 0.02;
+  SingularLocation s = locate_singular_point(contact, x);
+  ASSERT_EQ(s.status, LocateStatus::kConverged);
+  EXPECT_LE(std::fabs(s.x[1]), 1e-12);
+  EXPECT_EQ(classify(local_curve(contact, s.x).h).type, SingularType::kTangentialContact);
+
+  Problem crossed = testing::graph_vs_plane_pi("v^2*(u-0.1)");
+  x << 0.13, 0.02;
+  s = locate_singular_point(crossed, x);
+  ASSERT_EQ(s.status, LocateStatus::kConverged);
+  EXPECT_LE(std::fabs(s.x[1]), 1e-12);  // on the contact line v = 0
+  VecX at(2);
+  at << 0.1, 0.0;
+  EXPECT_EQ(classify(local_curve(crossed, at).h).type, SingularType::kTangentLineCrossing);
+  at << 0.3, 0.0;
+  EXPECT_EQ(classify(local_curve(crossed, at).h).type, SingularType::kTangentialContact);
+}
+
+}  // namespace
+}  // namespace ssimarch
