@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "ssimarch/expr/program.hpp"
-#include "ssimarch/march/problem.hpp"
+#include "ssimarch/problem/problem.hpp"
 #include "ssimarch/singular/local_jet.hpp"
 #include "ssimarch/surface/surface.hpp"
 
@@ -17,15 +17,15 @@ namespace ssimarch::testing {
 inline Surface param(const std::string& x, const std::string& y, const std::string& z, Interval u = {-2, 2},
                      Interval v = {-2, 2}, bool periodic_u = false, bool periodic_v = false) {
   std::vector<std::string> vars = {"u", "v"};
-  expr::Constants c;
-  std::array<expr::Program, 3> p = {expr::Program::compile_or_throw(x, vars, c), expr::Program::compile_or_throw(y, vars, c),
-                                    expr::Program::compile_or_throw(z, vars, c)};
+  Constants c;
+  std::array<Program, 3> p = {Program::compile_or_throw(x, vars, c), Program::compile_or_throw(y, vars, c),
+                                    Program::compile_or_throw(z, vars, c)};
   return ExprParametric(p, ParamDomain{u, v, periodic_u, periodic_v});
 }
 
 inline Surface implicit_surface(const std::string& f, const Box& box = Box{{-3, 3}, {-3, 3}, {-3, 3}}) {
   std::vector<std::string> vars = {"x", "y", "z"};
-  return ExprImplicit(expr::Program::compile_or_throw(f, vars, expr::Constants{}), box);
+  return ExprImplicit(Program::compile_or_throw(f, vars, Constants{}), box);
 }
 
 /// The thesis' graph pairs: F(u,v) = (u, v, f(u,v)) against the plane z = c, as a
