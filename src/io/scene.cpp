@@ -108,7 +108,7 @@ const std::vector<std::string>& trace_option_keys() {
       "predictor", "corrector", "step", "step_length", "min_step_length", "min_step", "deviation", "turn_angle",
       "taylor_order", "tolerance",
       "max_corrector_iterations", "max_turn_angle", "max_correction_ratio", "max_points", "max_length",
-      "start_samples", "geometry"};
+      "start_samples", "certified_start_points", "start_box_budget", "geometry"};
   return keys;
 }
 
@@ -159,6 +159,11 @@ void apply_trace_options(const json& options, const expr::Constants& c, const st
       o->max_length = number_from_json(v, c, w);
     } else if (key == "start_samples") {
       o->start_samples = static_cast<int>(integer(key, v));
+    } else if (key == "certified_start_points") {
+      if (!v.is_boolean()) throw InputError(w, "must be true or false, not " + type_of(v));
+      o->certified_start_points = v.get<bool>();
+    } else if (key == "start_box_budget") {
+      o->start_box_budget = integer(key, v);
     } else if (key == "geometry") {
       (*extra)[key] = str(key, v);
     } else {
