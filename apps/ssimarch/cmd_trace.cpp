@@ -59,7 +59,8 @@ void run_trace(const TraceArgs& a) {
   write_runs(runs, f, a.output, decorate);
   if (!a.quiet) print_summary(runs);
   for (const auto& r : runs)
-    if (r.result.curves.empty() || r.result.failed_starts > 0) g_exit_status = 1;
+    // No curve is a result when the start-point search proved there is none (issue 11 item 6).
+    if ((r.result.curves.empty() && !r.result.start_search.certified) || r.result.failed_starts > 0) g_exit_status = 1;
 }
 
 }  // namespace

@@ -180,7 +180,30 @@ struct Collector {
   }
 };
 
+RootSearchResult in_unknowns(const System& s, RootSearchResult r) {
+  for (CertifiedRoot& root : r.roots) {
+    root.enclosure = to_unknowns(s, root.enclosure);
+    root.unique_in = to_unknowns(s, root.unique_in);
+    root.x = VecX(static_cast<Eigen::Index>(root.enclosure.size()));
+    for (std::size_t i = 0; i < root.enclosure.size(); ++i) root.x[static_cast<Eigen::Index>(i)] = root.enclosure[i].mid();
+  }
+  for (UndecidedBox& u : r.undecided) u.box = to_unknowns(s, u.box);
+  return r;
+}
+
 }  // namespace
+
+RootSearchResult boundary_roots(const Problem& P, int i, bool upper, const RootSearchOptions& options) {
+  for (const System& s : boundary_systems(P))
+    if (s.fixed == i && s.at == (upper ? P.bounds()[static_cast<std::size_t>(i)].hi : P.bounds()[static_cast<std::size_t>(i)].lo))
+      return in_unknowns(s, find_all_roots(s.equations, s.box, options));
+  return {};
+}
+
+RootSearchResult turning_points(const Problem& P, int k, const RootSearchOptions& options) {
+  System s = turning_system(P, k);
+  return find_all_roots(s.equations, s.box, options);
+}
 
 bool evaluates_on_intervals(const Surface& surface) {
   if (surface.get_if<Capsule>()) return false;

@@ -22,12 +22,21 @@
 #include "ssimarch/march/result.hpp"
 #include "ssimarch/march/tracer.hpp"
 #include "ssimarch/surface/surface.hpp"
+#include "ssimarch/topology/krawczyk.hpp"
 
 namespace ssimarch {
 
 /// Whether the surface's point/value evaluated on intervals encloses its true range: false for
 /// forms that branch on the midpoint (capsules; B-spline surfaces with more than one knot span).
 bool evaluates_on_intervals(const Surface& surface);
+
+/// The roots of the boundary system x_i = lo_i (upper: hi_i) and its undecided boxes, as boxes
+/// of all n unknowns (x_i a point interval). Empty for the upper end of a periodic x_i.
+RootSearchResult boundary_roots(const Problem& P, int i, bool upper, const RootSearchOptions& options);
+
+/// The roots of the turning system for unknown k (x_k's tangent component vanishes) and its
+/// undecided boxes.
+RootSearchResult turning_points(const Problem& P, int k, const RootSearchOptions& options);
 
 /// Start points found by the certified search; fills *search (method "certified") and adds the
 /// Newton work to *stats. Requires both surfaces to evaluate on intervals.
