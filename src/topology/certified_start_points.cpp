@@ -230,7 +230,12 @@ std::vector<VecX> certified_start_points(const Tracer& tracer, TraceStats* stats
     System s = turning_system(P, k);
     RootSearchResult r = find_all_roots(s.equations, s.box, ro);
     loops_decided = out.take(s, r, false);
-    if (!loops_decided) undecided_turning.emplace_back(std::move(s), std::move(r));
+    if (loops_decided) break;
+    const bool budget_spent = std::any_of(r.undecided.begin(), r.undecided.end(), [](const UndecidedBox& u) { return u.budget; });
+    undecided_turning.emplace_back(std::move(s), std::move(r));
+    // Only singular roots left undecided: they are roots of every turning system (J_H loses rank
+    // there), so no other k can be decided; their Newton candidates are start points already.
+    if (!budget_spent) break;
   }
   if (!loops_decided)
     for (const auto& [s, r] : undecided_turning) {
