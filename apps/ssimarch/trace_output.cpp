@@ -70,6 +70,12 @@ void print_summary(const std::vector<IntersectionRun>& runs) {
     const auto& s = r.result.stats;
     std::cerr << r.spec.name << ": " << r.result.curves.size() << " curve(s), " << s.points << " points, "
               << s.rejected_steps << " rejected steps, " << s.time_ms << " ms\n";
+    const StartPointSearch& sp = r.result.start_search;
+    std::cerr << "  start points: " << sp.method << (sp.certified ? ", certified" : ", not certified");
+    if (sp.method == "certified")
+      std::cerr << " (" << sp.boxes << " boxes, " << sp.uncertain_regions.size() << " uncertain regions, " << sp.time_ms << " ms)";
+    if (sp.certified && r.result.curves.empty()) std::cerr << "; no intersection";
+    std::cerr << (sp.note.empty() ? "" : "; " + sp.note) << "\n";
     for (std::size_t i = 0; i < r.result.curves.size(); ++i) {
       const auto& c = r.result.curves[i];
       std::cerr << "  curve " << i << ": " << (c.closed ? "closed" : "open") << ", length " << std::setprecision(12) << c.length

@@ -117,6 +117,8 @@ void read_trace_options(const json& options, const Constants& c, const std::stri
     if (!spec) throw InputError(w, "unknown option (known options: " + trace_option_keys() + ")");
     if (v.is_number()) apply_trace_option(*spec, v.get<double>(), c, w, out);
     else if (v.is_string()) apply_trace_option(*spec, v.get<std::string>(), c, w, out);
+    else if (v.is_boolean() && spec->choices == std::vector<std::string>{"true", "false"})
+      apply_trace_option(*spec, std::string(v.get<bool>() ? "true" : "false"), c, w, out);
     else throw InputError(w, "must be " + spec->rule + ", got " + json_kind(v));
   }
   check_trace_options(*out, where);

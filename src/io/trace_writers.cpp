@@ -50,6 +50,18 @@ json stats_to_json(const TraceStats& s) {
               {"time_ms", s.time_ms}};
 }
 
+// How the start points were found and whether every branch is guaranteed (docs/topology.md).
+static json start_search_to_json(const StartPointSearch& s) {
+  json regions = json::array();
+  for (const UncertainRegion& u : s.uncertain_regions) {
+    json box = json::array();
+    for (const Interval& i : u.box) box.push_back({i.lo, i.hi});
+    regions.push_back(json{{"system", u.system}, {"reason", u.reason}, {"box", box}});
+  }
+  return json{{"method", s.method}, {"certified", s.certified}, {"boxes", s.boxes}, {"time_ms", s.time_ms},
+              {"uncertain_regions", regions}, {"note", s.note}};
+}
+
 json to_json(const IntersectionRun& run) {
   json curves = json::array();
   for (std::size_t ci = 0; ci < run.result.curves.size(); ++ci) {
@@ -82,6 +94,8 @@ json to_json(const IntersectionRun& run) {
                 {"tolerance", run.spec.options.trace.tolerance}}},
               {"curves", std::move(curves)},
               {"stats", stats_to_json(run.result.stats)},
+              {"certified", run.result.start_search.certified},
+              {"start_points", start_search_to_json(run.result.start_search)},
               {"warnings", run.result.warnings}};
 }
 

@@ -96,6 +96,20 @@ Row choice_row(TraceOptionSpec spec, std::initializer_list<E> values, E TraceOpt
              [field](const TraceJobOptions& o) { return std::string(to_string(o.trace.*field)); }, {}};
 }
 
+// A yes/no option: a choice between "true" and "false" (a scene may write JSON true/false).
+Row flag_row(TraceOptionSpec spec, bool TraceOptions::*field) {
+  spec.type = TraceOptionSpec::Type::kChoice;
+  spec.choices = {"true", "false"};
+  spec.rule = "true or false";
+  return Row{std::move(spec), {}, {},
+             [field](TraceJobOptions* o, std::string_view s) {
+               if (s != "true" && s != "false") return false;
+               o->trace.*field = s == "true";
+               return true;
+             },
+             [field](const TraceJobOptions& o) { return std::string(o.trace.*field ? "true" : "false"); }, {}};
+}
+
 Row geometry_row() {
   TraceOptionSpec spec = describe("geometry", "", "none",
                                   "add t, n, b, kappa, tau, kappa_prime, theta to each output point, by this method "
@@ -161,6 +175,14 @@ std::vector<Row> make_rows() {
   rows.push_back(number_row(describe("start_samples", "", "24", "samples per parameter direction (per axis, at most 16, for implicit pairs) when searching "
                               "start points"),
                             Range{2, 1000, false, false, false, {}}, &TraceOptions::start_samples));
+  rows.push_back(flag_row(describe("certified_start_points", "", "true",
+                                   "find start points by the certified interval search (docs/topology.md); false: by sampling",
+                                   "yes/no"),
+                          &TraceOptions::certified_start_points));
+  rows.push_back(number_row(describe("start_box_budget", "", "5000",
+                                     "boxes the certified search examines per square system before it reports the rest "
+                                     "as `uncertain_regions`"),
+                            Range{1, 1e9, false, false, false, {}}, &TraceOptions::start_box_budget));
   rows.push_back(geometry_row());
   return rows;
 }

@@ -10,7 +10,12 @@ namespace ssimarch {
 
 bool TraceJobResult::complete() const {
   return std::none_of(runs.begin(), runs.end(),
-                      [](const IntersectionRun& r) { return r.result.curves.empty() || r.result.failed_starts > 0; });
+                      [](const IntersectionRun& r) {
+                        // No curve is a result when the start-point search proved there is none
+                        // (issue 11 item 6); otherwise an empty trace is incomplete.
+                        const bool proven_empty = r.result.curves.empty() && r.result.start_search.certified;
+                        return (r.result.curves.empty() && !proven_empty) || r.result.failed_starts > 0;
+                      });
 }
 
 std::vector<IntersectionSpec> select_intersections(const Scene& scene, const TraceRequest& request) {

@@ -107,7 +107,7 @@ Problem::Problem(Surface first, Surface second, PairKind kind)
                  Interval{std::max(a.y.lo, b.y.lo), std::min(a.y.hi, b.y.hi)},
                  Interval{std::max(a.z.lo, b.z.lo), std::min(a.z.hi, b.z.hi)}};
       for (const Interval& i : bounds_)
-        if (!(i.lo < i.hi)) throw InputError("", "the boxes of the two implicit surfaces do not overlap");
+        if (!(i.lo < i.hi)) disjoint_ = true;  // no intersection: a result, not an error (issue 11)
       periods_ = {0.0, 0.0, 0.0};
       scale_ = Vec3(bounds_[0].hi - bounds_[0].lo, bounds_[1].hi - bounds_[1].lo, bounds_[2].hi - bounds_[2].lo).norm();
       break;

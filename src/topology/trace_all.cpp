@@ -4,6 +4,7 @@
 
 #include "ssimarch/march/predictor.hpp"
 #include "ssimarch/problem/curve_jet.hpp"
+#include "ssimarch/topology/certified_start_points.hpp"
 #include "ssimarch/topology/start_points.hpp"
 
 namespace ssimarch {
@@ -48,7 +49,13 @@ TracedCurve trace_curve_through(const Tracer& tracer, const VecX& x0, TraceStats
 TraceResult trace_all(const Tracer& tracer, const std::vector<Vec3>& starts) {
   const auto t0 = std::chrono::steady_clock::now();
   TraceResult result;
-  std::vector<VecX> seeds = starts.empty() ? find_start_points(tracer, &result.stats)
+  if (tracer.problem().disjoint()) {  // no intersection is a result (issue 11 item 6)
+    result.start_search = {"box", true, 0, 0, {}, "no intersection: the boxes of the two implicit surfaces do not overlap"};
+    result.warnings.push_back(result.start_search.note);
+    return result;
+  }
+  if (!starts.empty()) result.start_search.method = "given";
+  std::vector<VecX> seeds = starts.empty() ? automatic_start_points(tracer, &result.stats, &result.start_search)
                                            : start_points_near(tracer, starts, &result.stats, &result.warnings,
                                                                &result.failed_starts);
   const double radius = 0.2 * tracer.spacing();

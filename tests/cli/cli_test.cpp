@@ -88,10 +88,22 @@ TEST(Cli, BadInputGivesAClearErrorAndStatus2) {
   EXPECT_EQ(usage.status, 2);
 }
 
-TEST(Cli, NoCurveFoundExitsWith1) {
+// No intersection is a result when the certified start-point search proves it (issue 11 item 6).
+TEST(Cli, NoIntersectionIsAResultWithStatus0) {
   CliRun r = run("trace " + write_file("apart.json", R"json({
     "surfaces": {"a": {"sphere": {"center": [0,0,0], "radius": 1}}, "b": {"sphere": {"center": [0,0,0], "radius": 0.5}}},
     "intersections": [{"name": "apart", "surfaces": ["a", "b"]}]})json"));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("apart: 0 curve(s)"));
+  EXPECT_THAT(r.err, HasSubstr("certified"));
+  EXPECT_THAT(r.err, HasSubstr("no intersection"));
+}
+
+// Without the certificate (sampling asked for) an empty result stays a failure.
+TEST(Cli, NoCurveFoundBySamplingExitsWith1) {
+  CliRun r = run("trace " + write_file("apart_sampled.json", R"json({
+    "surfaces": {"a": {"sphere": {"center": [0,0,0], "radius": 1}}, "b": {"sphere": {"center": [0,0,0], "radius": 0.5}}},
+    "intersections": [{"name": "apart", "surfaces": ["a", "b"], "options": {"certified_start_points": false}}]})json"));
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_THAT(r.err, HasSubstr("apart: 0 curve(s)"));
 }

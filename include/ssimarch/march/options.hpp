@@ -86,6 +86,12 @@ struct TraceOptions {
   // Automatic start points: samples per parameter direction (parametric surfaces) or per axis
   // of the box (implicit-implicit pairs).
   int start_samples = 24;
+  // Automatic start points found by the certified search (docs/topology.md) when both surfaces
+  // evaluate on intervals; false: by sampling (start_samples) only.
+  bool certified_start_points = true;
+  // Boxes the certified search examines per square system before it reports the rest as
+  // uncertain regions.
+  long start_box_budget = 5000;
 
   /// Checks every field; on failure returns false and says which field and why.
   bool is_valid(std::string* error) const;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "ssimarch/core/vec3.hpp"
+#include "ssimarch/surface/domain.hpp"
 
 namespace ssimarch {
 
@@ -64,9 +65,28 @@ struct TraceStats {
   TraceStats& operator+=(const TraceStats& o);
 };
 
+/// A box of the unknowns in which the certified start-point search decided nothing: it may hold
+/// a start point that was not found (docs/topology.md).
+struct UncertainRegion {
+  std::vector<Interval> box;  // one interval per unknown of H
+  std::string system;         // the square system searched, e.g. "boundary u = 0", "turning du = 0"
+  std::string reason;         // "budget spent" or "singular or non-isolated root"
+};
+
+/// How the start points were found, and what is guaranteed (docs/topology.md).
+struct StartPointSearch {
+  std::string method = "sampling";  // "certified", "sampling" or "given"
+  bool certified = false;   // every branch in the domain has a start point (every box decided)
+  long boxes = 0;           // boxes examined by the certified search
+  double time_ms = 0;
+  std::vector<UncertainRegion> uncertain_regions;
+  std::string note;         // why sampling was used, or what the certificate does not cover
+};
+
 struct TraceResult {
   std::vector<TracedCurve> curves;
   TraceStats stats;
+  StartPointSearch start_search;
   std::vector<std::string> warnings;  // e.g. a start point that could not be put on the curve
   int failed_starts = 0;              // given start points that could not be put on the curve
 };

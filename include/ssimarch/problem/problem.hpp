@@ -97,6 +97,9 @@ class Problem {
   /// Bounds of each unknown: parameter domains (u,v[,p,q]) or the intersection of the implicit
   /// surfaces' boxes (x,y,z).
   const std::vector<Interval>& bounds() const { return bounds_; }
+  /// True when the domain is empty (implicit surfaces whose boxes do not overlap): the
+  /// intersection is empty, and bounds() must not be searched.
+  bool disjoint() const { return disjoint_; }
   /// Period of each unknown, 0 where not periodic.
   const std::vector<double>& periods() const { return periods_; }
   /// x with every periodic coordinate moved into [lo, lo + period).
@@ -117,6 +120,7 @@ class Problem {
   std::vector<Interval> bounds_;
   std::vector<double> periods_;
   double scale_ = 1.0;
+  bool disjoint_ = false;
 };
 
 }  // namespace ssimarch

@@ -1,0 +1,50 @@
+// Complete start points with a certificate (docs/topology.md): a point on every branch of
+// H(x) = 0 inside the box of the unknowns, from two families of square systems solved for all
+// their roots by interval branch and bound with the Krawczyk test (topology/krawczyk.hpp):
+//
+//   boundary systems   x_i = lo_i or hi_i (the seam lo_i for a periodic x_i), H(x) = 0:
+//                      n-1 equations in the other n-1 unknowns. Every branch that leaves the box
+//                      (or crosses a seam) meets one of these faces in isolated points.
+//   turning systems    H(x) = 0 and det(J_H without column k) = 0: n equations in n unknowns.
+//                      The second equation says the tangent's x_k component vanishes (the tangent
+//                      is the generalised cross product of J_H's rows, whose k-th component is
+//                      that minor up to sign). A closed branch inside the open box has a
+//                      maximum of x_k, so it is a root of the system of every k.
+//
+// The result is certified when every box of every boundary system and of at least one turning
+// system was decided. Roots the Krawczyk test cannot prove (singular Jacobian: tangential
+// contacts, singular points of the curve) are shrunk to a small box, handed to Newton as
+// candidate start points and reported as uncertain regions.
+#pragma once
+
+#include <vector>
+
+#include "ssimarch/march/result.hpp"
+#include "ssimarch/march/tracer.hpp"
+#include "ssimarch/surface/surface.hpp"
+#include "ssimarch/topology/krawczyk.hpp"
+
+namespace ssimarch {
+
+/// Whether the surface's point/value evaluated on intervals encloses its true range: false for
+/// forms that branch on the midpoint (capsules; B-spline surfaces with more than one knot span).
+bool evaluates_on_intervals(const Surface& surface);
+
+/// The roots of the boundary system x_i = lo_i (upper: hi_i) and its undecided boxes, as boxes
+/// of all n unknowns (x_i a point interval). Empty for the upper end of a periodic x_i.
+RootSearchResult boundary_roots(const Problem& P, int i, bool upper, const RootSearchOptions& options);
+
+/// The roots of the turning system for unknown k (x_k's tangent component vanishes) and its
+/// undecided boxes.
+RootSearchResult turning_points(const Problem& P, int k, const RootSearchOptions& options);
+
+/// Start points found by the certified search; fills *search (method "certified") and adds the
+/// Newton work to *stats. Requires both surfaces to evaluate on intervals.
+std::vector<VecX> certified_start_points(const Tracer& tracer, TraceStats* stats, StartPointSearch* search);
+
+/// The automatic start points of trace_all: the certified search when both surfaces evaluate on
+/// intervals and the options ask for it, sampling (find_start_points) otherwise; *search says
+/// which and why.
+std::vector<VecX> automatic_start_points(const Tracer& tracer, TraceStats* stats, StartPointSearch* search);
+
+}  // namespace ssimarch

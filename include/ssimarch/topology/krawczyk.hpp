@@ -1,0 +1,73 @@
+// All roots of a square system g : R^m -> R^m (m <= 4) in a box, certified: branch and bound
+// over boxes with interval arithmetic, exclusion of boxes whose image misses 0, and the Krawczyk
+// operator (Krawczyk 1969; Moore, Kearfott & Cloud, Introduction to Interval Analysis, 2009,
+// §8.2)
+//
+//   K(X) = m - Y g(m) + (I - Y J(X)) (X - m),   m = mid X,  Y ~ J(m)^-1,  J(X) ⊇ {g'(x): x in X}
+//
+// Every root in X lies in K(X); so K(X) ∩ X = ∅ proves X root-free, and K(X) ⊂ int X proves that
+// X holds exactly one root, to which iterating X <- K(X) ∩ X converges quadratically.
+//
+// A box is tested inflated by a few percent, so that a root on the face shared by two boxes is
+// interior to the inflated box of each (it is then found twice and kept once). A box that is
+// neither excluded nor proven after shrinking below `min_width` (relative to the start box) is
+// undecided: a root with a singular Jacobian (a tangency, a singular point of the curve) or a
+// continuum of roots; so is every box left when the budget of boxes is spent. Undecided boxes are
+// returned, never dropped.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "ssimarch/core/vec3.hpp"
+#include "ssimarch/topology/gradient.hpp"
+#include "ssimarch/topology/interval_number.hpp"
+
+namespace ssimarch {
+
+inline constexpr int kMaxSystemDimension = 4;
+using IntervalBox = std::vector<IntervalNumber>;
+using IntervalGradient = Gradient<IntervalNumber, kMaxSystemDimension>;
+
+/// A square system of `dimension` equations in as many unknowns, evaluated on boxes.
+struct SquareSystem {
+  int dimension = 0;
+  /// g on a box, plain intervals: g[i] encloses {g_i(x) : x in box}.
+  std::function<void(const IntervalNumber* x, IntervalNumber* g)> value;
+  /// g and its Jacobian on a box (x[i] seeded with derivative e_i): g[i].d[j] encloses dg_i/dx_j.
+  std::function<void(const IntervalGradient* x, IntervalGradient* g)> gradient;
+};
+
+struct RootSearchOptions {
+  long max_boxes = 5000;     // boxes examined before the rest is reported undecided
+  double min_width = 1e-7;   // relative to the start box: smaller undecided boxes are not split
+  double root_width = 1e-12; // relative width (to max(1, |root|)) of a certified root's enclosure
+};
+
+struct CertifiedRoot {
+  IntervalBox enclosure;  // holds exactly one root, width about root_width
+  IntervalBox unique_in;  // the box in which that root was proven unique
+  VecX x;                 // the enclosure's midpoint
+};
+
+struct UndecidedBox {
+  IntervalBox box;
+  bool budget = false;  // left when the budget ran out (else: shrunk below min_width undecided)
+};
+
+struct RootSearchResult {
+  std::vector<CertifiedRoot> roots;
+  std::vector<UndecidedBox> undecided;
+  long boxes = 0;  // boxes examined
+  bool complete() const { return undecided.empty(); }
+};
+
+/// Every root of `system` in `box`, each certified, plus the boxes not decided.
+RootSearchResult find_all_roots(const SquareSystem& system, const IntervalBox& box, const RootSearchOptions& options);
+
+/// One Krawczyk step on `box`: K(box) (see above). *ok is false when J(mid) is too close to
+/// singular to invert (K is then not formed).
+IntervalBox krawczyk(const SquareSystem& system, const IntervalBox& box, bool* ok);
+
+}  // namespace ssimarch

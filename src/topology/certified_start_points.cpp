@@ -1,0 +1,273 @@
+#include "ssimarch/topology/certified_start_points.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+
+#include "ssimarch/problem/gauss_newton.hpp"
+#include "ssimarch/topology/krawczyk.hpp"
+#include "ssimarch/topology/start_points.hpp"
+
+namespace ssimarch {
+
+namespace {
+
+// H with x_fixed = at, as a function of the other unknowns y.
+template <class T>
+void boundary_residual(const Problem& P, int fixed, double at, const T* y, T* g) {
+  T x[kMaxSystemDimension];
+  for (int i = 0, j = 0; i < P.dim(); ++i) x[i] = i == fixed ? T(at) : y[j++];
+  P.residual(x, g);
+}
+
+template <class T>
+T determinant(const T (&m)[3][3], int size) {
+  if (size == 1) return m[0][0];
+  if (size == 2) return m[0][0] * m[1][1] - m[0][1] * m[1][0];
+  return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+         m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+}
+
+// (H(x), det of J_H without column k): the tangent's x_k component vanishes (see the header).
+template <class T>
+void turning_residual(const Problem& P, int k, const T* x, T* g) {
+  using D = Gradient<T, kMaxSystemDimension>;
+  const int n = P.dim();
+  D xd[kMaxSystemDimension], h[kMaxSystemDimension - 1];
+  for (int i = 0; i < n; ++i) xd[i] = D(x[i], i);
+  P.residual(xd, h);
+  T minor[3][3];
+  for (int r = 0; r < n - 1; ++r) {
+    g[r] = h[r].v;
+    for (int c = 0, j = 0; c < n; ++c)
+      if (c != k) minor[r][j++] = h[r].d[static_cast<std::size_t>(c)];
+  }
+  g[n - 1] = determinant(minor, n - 1);
+}
+
+struct System {
+  SquareSystem equations;
+  IntervalBox box;
+  std::string name;
+  int fixed = -1;  // the unknown held at `at` (boundary systems)
+  double at = 0;
+};
+
+std::vector<System> boundary_systems(const Problem& P) {
+  std::vector<System> out;
+  const auto names = P.unknown_names();
+  for (int i = 0; i < P.dim(); ++i) {
+    const Interval& b = P.bounds()[static_cast<std::size_t>(i)];
+    std::vector<double> ends{b.lo};
+    if (P.periods()[static_cast<std::size_t>(i)] == 0.0) ends.push_back(b.hi);
+    for (double at : ends) {
+      System s;
+      s.fixed = i;
+      s.at = at;
+      char value[32];
+      std::snprintf(value, sizeof value, "%.9g", at);
+      s.name = "boundary " + names[static_cast<std::size_t>(i)] + " = " + value;
+      s.equations.dimension = P.dim() - 1;
+      s.equations.value = [&P, i, at](const IntervalNumber* y, IntervalNumber* g) { boundary_residual(P, i, at, y, g); };
+      s.equations.gradient = [&P, i, at](const IntervalGradient* y, IntervalGradient* g) {
+        boundary_residual(P, i, at, y, g);
+      };
+      for (int j = 0; j < P.dim(); ++j)
+        if (j != i) s.box.emplace_back(P.bounds()[static_cast<std::size_t>(j)].lo, P.bounds()[static_cast<std::size_t>(j)].hi);
+      out.push_back(std::move(s));
+    }
+  }
+  return out;
+}
+
+System turning_system(const Problem& P, int k) {
+  System s;
+  s.name = "turning d" + P.unknown_names()[static_cast<std::size_t>(k)] + " = 0";
+  s.equations.dimension = P.dim();
+  s.equations.value = [&P, k](const IntervalNumber* x, IntervalNumber* g) { turning_residual(P, k, x, g); };
+  s.equations.gradient = [&P, k](const IntervalGradient* x, IntervalGradient* g) { turning_residual(P, k, x, g); };
+  for (const Interval& b : P.bounds()) s.box.emplace_back(b.lo, b.hi);
+  return s;
+}
+
+// The unknowns x of H from a point or box of a system's unknowns.
+IntervalBox to_unknowns(const System& s, const IntervalBox& y) {
+  if (s.fixed < 0) return y;
+  IntervalBox x;
+  for (std::size_t i = 0, j = 0; i <= y.size(); ++i)
+    x.push_back(static_cast<int>(i) == s.fixed ? IntervalNumber(s.at) : y[j++]);
+  return x;
+}
+
+// Undecided boxes that touch merged into their hulls (a singular root leaves a cluster of them).
+std::vector<IntervalBox> merge_touching(const std::vector<UndecidedBox>& boxes, bool budget) {
+  std::vector<IntervalBox> regions;
+  for (const UndecidedBox& u : boxes) {
+    if (u.budget != budget) continue;
+    IntervalBox b = u.box;
+    for (bool merged = true; merged;) {
+      merged = false;
+      for (std::size_t r = 0; r < regions.size(); ++r) {
+        bool touch = true;
+        for (std::size_t i = 0; i < b.size(); ++i)
+          if (b[i].hi() < regions[r][i].lo() || regions[r][i].hi() < b[i].lo()) touch = false;
+        if (!touch) continue;
+        for (std::size_t i = 0; i < b.size(); ++i) b[i] = hull(b[i], regions[r][i]);
+        regions.erase(regions.begin() + static_cast<std::ptrdiff_t>(r));
+        merged = true;
+        break;
+      }
+    }
+    regions.push_back(std::move(b));
+  }
+  return regions;
+}
+
+struct Collector {
+  const Tracer& tracer;
+  TraceStats* stats;
+  StartPointSearch* search;
+  std::vector<VecX> points;
+
+  // x clamped into the bounds and polished by Newton when that keeps it close.
+  void add(VecX x, bool candidate) {
+    const Problem& P = tracer.problem();
+    clamp(&x);
+    CorrectorResult r = gauss_newton(P, x, CorrectorOptions{tracer.options().tolerance, 20});
+    stats->linearizations += r.linearizations;
+    stats->add_surface_evaluations(r.evaluations);
+    clamp(&r.x);
+    const bool converged = r.status == CorrectorStatus::kConverged && P.linearize(r.x).distance <= 1e-9 * P.scale();
+    if (converged && (candidate || (P.point(r.x) - P.point(x)).norm() < 1e-6 * P.scale())) x = r.x;
+    else if (candidate) return;  // Newton from an undecided box found no point of the curve
+    const Vec3 p = P.point(x);
+    for (const VecX& q : points)
+      if ((P.point(q) - p).norm() < 1e-9 * P.scale()) return;
+    points.push_back(x);
+  }
+
+  // Into the bounds (a root on a face may come out a rounding error beyond it).
+  void clamp(VecX* x) const {
+    const Problem& P = tracer.problem();
+    for (int i = 0; i < P.dim(); ++i) {
+      const Interval& b = P.bounds()[static_cast<std::size_t>(i)];
+      if (P.periods()[static_cast<std::size_t>(i)] == 0.0) (*x)[i] = std::clamp((*x)[i], b.lo, b.hi);
+    }
+  }
+
+  // Roots as start points, undecided boxes as candidates and uncertain regions. Returns
+  // whether the system was decided everywhere.
+  bool take(const System& s, const RootSearchResult& r, bool report) {
+    search->boxes += r.boxes;
+    for (const CertifiedRoot& root : r.roots) {
+      IntervalBox x = to_unknowns(s, root.enclosure);
+      VecX v(static_cast<Eigen::Index>(x.size()));
+      for (std::size_t i = 0; i < x.size(); ++i) v[static_cast<Eigen::Index>(i)] = x[i].mid();
+      add(v, false);
+    }
+    for (bool budget : {false, true})
+      for (const IntervalBox& y : merge_touching(r.undecided, budget)) {
+        IntervalBox x = to_unknowns(s, y);
+        VecX v(static_cast<Eigen::Index>(x.size()));
+        for (std::size_t i = 0; i < x.size(); ++i) v[static_cast<Eigen::Index>(i)] = x[i].mid();
+        if (!budget) add(v, true);
+        if (!report) continue;
+        UncertainRegion u{{}, s.name, budget ? "budget spent" : "singular or non-isolated root"};
+        for (const IntervalNumber& c : x) u.box.push_back({c.lo(), c.hi()});
+        search->uncertain_regions.push_back(std::move(u));
+      }
+    return r.complete();
+  }
+};
+
+RootSearchResult in_unknowns(const System& s, RootSearchResult r) {
+  for (CertifiedRoot& root : r.roots) {
+    root.enclosure = to_unknowns(s, root.enclosure);
+    root.unique_in = to_unknowns(s, root.unique_in);
+    root.x = VecX(static_cast<Eigen::Index>(root.enclosure.size()));
+    for (std::size_t i = 0; i < root.enclosure.size(); ++i) root.x[static_cast<Eigen::Index>(i)] = root.enclosure[i].mid();
+  }
+  for (UndecidedBox& u : r.undecided) u.box = to_unknowns(s, u.box);
+  return r;
+}
+
+}  // namespace
+
+RootSearchResult boundary_roots(const Problem& P, int i, bool upper, const RootSearchOptions& options) {
+  for (const System& s : boundary_systems(P))
+    if (s.fixed == i && s.at == (upper ? P.bounds()[static_cast<std::size_t>(i)].hi : P.bounds()[static_cast<std::size_t>(i)].lo))
+      return in_unknowns(s, find_all_roots(s.equations, s.box, options));
+  return {};
+}
+
+RootSearchResult turning_points(const Problem& P, int k, const RootSearchOptions& options) {
+  System s = turning_system(P, k);
+  return find_all_roots(s.equations, s.box, options);
+}
+
+bool evaluates_on_intervals(const Surface& surface) {
+  if (surface.get_if<Capsule>()) return false;
+  if (const auto* b = surface.get_if<BSplineSurface>())
+    return b->knots_u().size() == 2 * static_cast<std::size_t>(b->degree_u() + 1) &&
+           b->knots_v().size() == 2 * static_cast<std::size_t>(b->degree_v() + 1);
+  return true;
+}
+
+std::vector<VecX> certified_start_points(const Tracer& tracer, TraceStats* stats, StartPointSearch* search) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const Problem& P = tracer.problem();
+  search->method = "certified";
+  RootSearchOptions ro;
+  ro.max_boxes = tracer.options().start_box_budget;
+  Collector out{tracer, stats, search, {}};
+  bool boundary_decided = true;
+  for (const System& s : boundary_systems(P))
+    boundary_decided = out.take(s, find_all_roots(s.equations, s.box, ro), true) && boundary_decided;
+  // One turning system decided everywhere suffices for the loops; the others' roots still help.
+  bool loops_decided = false;
+  std::vector<std::pair<System, RootSearchResult>> undecided_turning;
+  for (int k = 0; k < P.dim() && !loops_decided; ++k) {
+    System s = turning_system(P, k);
+    RootSearchResult r = find_all_roots(s.equations, s.box, ro);
+    loops_decided = out.take(s, r, false);
+    if (loops_decided) break;
+    const bool budget_spent = std::any_of(r.undecided.begin(), r.undecided.end(), [](const UndecidedBox& u) { return u.budget; });
+    undecided_turning.emplace_back(std::move(s), std::move(r));
+    // Only singular roots left undecided: they are roots of every turning system (J_H loses rank
+    // there), so no other k can be decided; their Newton candidates are start points already.
+    if (!budget_spent) break;
+  }
+  if (!loops_decided)
+    for (const auto& [s, r] : undecided_turning) {
+      RootSearchResult regions_only{{}, r.undecided, 0};
+      out.take(s, regions_only, true);
+    }
+  search->certified = boundary_decided && loops_decided;
+  if (!search->certified)
+    search->note = std::string(boundary_decided ? "" : "a boundary system ") +
+                   (boundary_decided || loops_decided ? "" : "and ") + (loops_decided ? "" : "every turning system ") +
+                   "left undecided boxes (uncertain_regions)";
+  search->time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return std::move(out.points);
+}
+
+std::vector<VecX> automatic_start_points(const Tracer& tracer, TraceStats* stats, StartPointSearch* search) {
+  const Problem& P = tracer.problem();
+  if (tracer.options().certified_start_points && evaluates_on_intervals(P.first()) &&
+      evaluates_on_intervals(P.second()))
+    return certified_start_points(tracer, stats, search);
+  const auto t0 = std::chrono::steady_clock::now();
+  search->method = "sampling";
+  search->certified = false;
+  if (!tracer.options().certified_start_points)
+    search->note = "sampling asked for (certified_start_points = false): not every branch is guaranteed";
+  else
+    search->note = std::string("a ") +
+                   std::string(evaluates_on_intervals(P.first()) ? P.second().type_name() : P.first().type_name()) +
+                   " surface does not evaluate on intervals: start points by sampling, not every branch is guaranteed";
+  std::vector<VecX> points = find_start_points(tracer, stats);
+  search->time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return points;
+}
+
+}  // namespace ssimarch

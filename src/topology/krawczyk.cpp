@@ -1,0 +1,187 @@
+#include "ssimarch/topology/krawczyk.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <deque>
+
+namespace ssimarch {
+
+namespace {
+
+constexpr double kInflation = 0.02;     // boxes are tested inflated by this fraction per side
+constexpr double kContraction = 0.7;    // K ∩ X at most this wide (relative) is kept and tested again
+constexpr double kMinReciprocalCondition = 1e-14;
+constexpr int kMaxRefinements = 60;
+
+bool excluded_by_value(const SquareSystem& s, const IntervalBox& x) {
+  IntervalNumber g[kMaxSystemDimension];
+  s.value(x.data(), g);
+  for (int i = 0; i < s.dimension; ++i)
+    if (!g[i].contains_zero()) return true;
+  return false;
+}
+
+double max_relative_width(const IntervalBox& x, const std::vector<double>& scale);
+
+// Every side pushed out by kInflation times the box's largest relative width (so a side that
+// contraction made very thin, e.g. against a face of the start box, still gets room), and by a
+// floor above the rounding errors of evaluating g.
+IntervalBox inflate(const IntervalBox& x, const std::vector<double>& scale) {
+  IntervalBox r(x.size());
+  const double rel = max_relative_width(x, scale);
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const double w = kInflation * rel * scale[i] + 1e-14 * std::max(x[i].magnitude(), scale[i]);
+    r[i] = IntervalNumber(x[i].lo() - w, x[i].hi() + w);
+  }
+  return r;
+}
+
+double max_relative_width(const IntervalBox& x, const std::vector<double>& scale) {
+  double w = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) w = std::max(w, x[i].width() / scale[i]);
+  return w;
+}
+
+bool interior(const IntervalBox& k, const IntervalBox& x) {
+  for (std::size_t i = 0; i < x.size(); ++i)
+    if (!k[i].interior_of(x[i])) return false;
+  return true;
+}
+
+// K ∩ X; false when empty.
+bool intersect_box(const IntervalBox& k, IntervalBox* x) {
+  for (std::size_t i = 0; i < x->size(); ++i) {
+    bool empty = false;
+    (*x)[i] = intersect(k[i], (*x)[i], &empty);
+    if (empty) return false;
+  }
+  return true;
+}
+
+// Krawczyk iterations from a box with a proven unique root down to an enclosure of root_width.
+IntervalBox refine(const SquareSystem& s, IntervalBox x, double root_width) {
+  for (int it = 0; it < kMaxRefinements; ++it) {
+    bool small = true;
+    for (const IntervalNumber& c : x)
+      if (c.width() > root_width * std::max(1.0, c.magnitude())) small = false;
+    if (small) break;
+    bool ok = false;
+    IntervalBox k = krawczyk(s, x, &ok);
+    if (!ok) break;
+    IntervalBox next = x;
+    if (!intersect_box(k, &next)) break;  // cannot happen with a root inside; keep the last box
+    bool shrank = false;
+    for (std::size_t i = 0; i < x.size(); ++i)
+      if (next[i].width() < x[i].width()) shrank = true;
+    x = next;
+    if (!shrank) break;
+  }
+  return x;
+}
+
+// Splits x across its widest coordinate (relative to the start box).
+std::pair<IntervalBox, IntervalBox> bisect(const IntervalBox& x, const std::vector<double>& scale) {
+  std::size_t k = 0;
+  for (std::size_t i = 1; i < x.size(); ++i)
+    if (x[i].width() / scale[i] > x[k].width() / scale[k]) k = i;
+  const double m = x[k].mid();
+  IntervalBox a = x, b = x;
+  a[k] = IntervalNumber(x[k].lo(), m);
+  b[k] = IntervalNumber(m, x[k].hi());
+  return {a, b};
+}
+
+bool inside(const IntervalBox& a, const IntervalBox& b) {
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (a[i].lo() < b[i].lo() || a[i].hi() > b[i].hi()) return false;
+  return true;
+}
+
+bool meets(const IntervalBox& a, const IntervalBox& b) {
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (a[i].hi() < b[i].lo() || b[i].hi() < a[i].lo()) return false;
+  return true;
+}
+
+void add_root(const SquareSystem& s, const IntervalBox& unique_in, const IntervalBox& start, double root_width,
+              std::vector<CertifiedRoot>* roots) {
+  IntervalBox e = refine(s, unique_in, root_width);
+  if (!meets(e, start)) return;  // the inflated box's root lies outside the start box
+  for (const CertifiedRoot& r : *roots)  // the same root, proven unique in an overlapping box
+    if (inside(e, r.unique_in) || inside(r.enclosure, unique_in)) return;
+  CertifiedRoot r{e, unique_in, VecX(static_cast<Eigen::Index>(e.size()))};
+  for (std::size_t i = 0; i < e.size(); ++i) r.x[static_cast<Eigen::Index>(i)] = e[i].mid();
+  roots->push_back(std::move(r));
+}
+
+}  // namespace
+
+IntervalBox krawczyk(const SquareSystem& s, const IntervalBox& x, bool* ok) {
+  const int n = s.dimension;
+  IntervalGradient xv[kMaxSystemDimension], gv[kMaxSystemDimension];
+  for (int i = 0; i < n; ++i) xv[i] = IntervalGradient(x[static_cast<std::size_t>(i)], i);
+  s.gradient(xv, gv);
+  IntervalBox m(x.size());
+  Eigen::MatrixXd jm(n, n);
+  for (int i = 0; i < n; ++i) {
+    m[static_cast<std::size_t>(i)] = IntervalNumber(x[static_cast<std::size_t>(i)].mid());
+    for (int j = 0; j < n; ++j) jm(i, j) = gv[i].d[static_cast<std::size_t>(j)].mid();
+  }
+  Eigen::FullPivLU<Eigen::MatrixXd> lu(jm);
+  *ok = jm.allFinite() && lu.isInvertible() && lu.rcond() > kMinReciprocalCondition;
+  if (!*ok) return x;
+  const Eigen::MatrixXd y = lu.inverse();
+  IntervalNumber gm[kMaxSystemDimension];
+  s.value(m.data(), gm);
+  IntervalBox k(x.size());
+  for (int i = 0; i < n; ++i) {
+    IntervalNumber ki = m[static_cast<std::size_t>(i)];
+    for (int j = 0; j < n; ++j) ki = ki - y(i, j) * gm[j];
+    for (int j = 0; j < n; ++j) {
+      IntervalNumber c = IntervalNumber(i == j ? 1.0 : 0.0);  // (I - Y J(X))_ij
+      for (int l = 0; l < n; ++l) c = c - y(i, l) * gv[l].d[static_cast<std::size_t>(j)];
+      ki = ki + c * (x[static_cast<std::size_t>(j)] - m[static_cast<std::size_t>(j)]);
+    }
+    k[static_cast<std::size_t>(i)] = ki;
+  }
+  return k;
+}
+
+RootSearchResult find_all_roots(const SquareSystem& s, const IntervalBox& start, const RootSearchOptions& o) {
+  RootSearchResult out;
+  std::vector<double> scale(start.size());
+  for (std::size_t i = 0; i < start.size(); ++i) scale[i] = std::max(start[i].width(), 1e-300);
+  std::deque<IntervalBox> queue{start};
+  while (!queue.empty()) {
+    if (out.boxes >= o.max_boxes) {
+      for (IntervalBox& b : queue) out.undecided.push_back({std::move(b), true});
+      break;
+    }
+    IntervalBox x = std::move(queue.front());
+    queue.pop_front();
+    ++out.boxes;
+    if (excluded_by_value(s, x)) continue;
+    const IntervalBox xe = inflate(x, scale);
+    bool ok = false;
+    IntervalBox k = krawczyk(s, xe, &ok);
+    if (ok && interior(k, xe)) {
+      add_root(s, xe, start, o.root_width, &out.roots);
+      continue;
+    }
+    if (ok && !intersect_box(k, &x)) continue;  // K(Xe) ∩ X = ∅: no root in X
+    if (max_relative_width(x, scale) < o.min_width) {
+      out.undecided.push_back({x, false});
+      continue;
+    }
+    if (ok && max_relative_width(x, scale) < kContraction * max_relative_width(xe, scale)) {
+      queue.push_back(std::move(x));  // contracted well: test the smaller box again
+      continue;
+    }
+    auto [a, b] = bisect(x, scale);
+    queue.push_back(std::move(a));
+    queue.push_back(std::move(b));
+  }
+  return out;
+}
+
+}  // namespace ssimarch
