@@ -1,0 +1,56 @@
+// Detecting singular points along a trace, as pure functions of two consecutive points (thesis
+// ch. 5 §5.2.1 and Fig. 5.3; rotation-index §6.5), and hunting isolated singular points that no
+// trace passes near (issue 10, "Isolated points").
+//
+// The oriented tangent field T(x) = D point(x) * v(x), where v is the generalised cross product
+// of the rows of J_H (the signed (n-1)-minors; for implicit-implicit pairs v = grad f x grad g,
+// the thesis' N_F x N_G), is continuous along the curve and vanishes exactly at its singular
+// points. Along one branch it keeps its orientation between regular points; stepping over a
+// crossing (a node, a triple point) reverses it relative to the branch (Fig. 5.3), so
+// T(a) . T(b) < 0 between consecutive points a, b means "a crossing was stepped over: go back
+// and locate". Together with sin theta = |N_F x N_G| < 0.01 (thesis ch. 5 §5.2.1) and the rank ratio.
+#pragma once
+
+#include <vector>
+
+#include "ssimarch/march/problem.hpp"
+#include "ssimarch/singular/locate.hpp"
+
+namespace ssimarch {
+
+struct DetectionThresholds {
+  double sine = 0.01;        // sin theta below which a point is near-singular (thesis ch. 5 §5.2.1)
+  double rank_ratio = 1e-3;  // Problem::rank_ratio below which J_H is near rank-deficient
+};
+
+/// The oriented, unnormalised tangent T(x) of the curve of `problem` at x (3D; zero at a singular
+/// point). Its length is the product of the row norms of J_H times sin theta (scale-dependent).
+Vec3 oriented_tangent(const Problem& problem, const VecX& x);
+
+struct StepSignals {
+  double sine_a = 0, sine_b = 0;  // |N_F x N_G| at a and b
+  double rank_a = 0, rank_b = 0;  // Problem::rank_ratio at a and b
+  double tangent_cos = 1;         // cosine of the angle between T(a) and T(b)
+  bool flipped = false;           // tangent_cos < 0: the orientation reversed (a crossing stepped over)
+  bool near_singular = false;     // a sine or rank ratio below its threshold
+  bool suspect() const { return flipped || near_singular; }
+};
+
+/// The detection signals between two consecutive traced points a and b (unknowns).
+StepSignals step_signals(const Problem& problem, const VecX& a, const VecX& b, const DetectionThresholds& thresholds = {});
+
+struct HuntOptions {
+  int grid = 32;                 // samples per parameter direction
+  LocateOptions locate;          // options of each location
+  double merge_distance = 1e-7;  // solutions closer than this (unknowns) are the same point
+};
+
+/// Every singular point of the problem found from a grid: over the first surface's domain (with
+/// the second surface's nearest parameters for parametric-parametric pairs), or over the 3D box
+/// (grid/2 per direction) for implicit-implicit pairs. At each start the local curve h is built
+/// and the start kept when Newton's step towards a critical point of h stays within one grid
+/// cell; each kept start is located by locate_singular_point (h = h_s = h_t = 0). Isolated
+/// points (Ex. 16) included. Throws InputError for grid < 3.
+std::vector<SingularLocation> hunt_singular_points(const Problem& problem, const HuntOptions& options = {});
+
+}  // namespace ssimarch

@@ -1,0 +1,115 @@
+#include "ssimarch/singular/detection.hpp"
+
+#include <Eigen/LU>
+#include <Eigen/QR>
+#include <cmath>
+
+#include "ssimarch/core/error.hpp"
+#include "ssimarch/march/closest_point.hpp"
+
+namespace ssimarch {
+
+Vec3 oriented_tangent(const Problem& problem, const VecX& x) {
+  const Linearization L = problem.linearize(x);
+  const int n = problem.dim();
+  VecX v(n);
+  // v_j = (-1)^j det(J without column j): J v = 0 (Laplace expansion of [J; e_j]).
+  for (int j = 0; j < n; ++j) {
+    MatX minor(n - 1, n - 1);
+    for (int c = 0, k = 0; c < n; ++c)
+      if (c != j) minor.col(k++) = L.jacobian.col(c);
+    v[j] = ((j % 2) ? -1.0 : 1.0) * minor.determinant();
+  }
+  return L.point_jacobian * v;
+}
+
+StepSignals step_signals(const Problem& problem, const VecX& a, const VecX& b, const DetectionThresholds& thresholds) {
+  StepSignals s;
+  const Linearization La = problem.linearize(a), Lb = problem.linearize(b);
+  s.sine_a = La.normal_first.cross(La.normal_second).norm();
+  s.sine_b = Lb.normal_first.cross(Lb.normal_second).norm();
+  s.rank_a = Problem::rank_ratio(La);
+  s.rank_b = Problem::rank_ratio(Lb);
+  const Vec3 ta = oriented_tangent(problem, a), tb = oriented_tangent(problem, b);
+  const double na = ta.norm(), nb = tb.norm();
+  s.tangent_cos = (na > 0 && nb > 0) ? ta.dot(tb) / (na * nb) : 0.0;
+  s.flipped = s.tangent_cos < 0;
+  s.near_singular = std::min(s.sine_a, s.sine_b) < thresholds.sine || std::min(s.rank_a, s.rank_b) < thresholds.rank_ratio;
+  return s;
+}
+
+namespace {
+
+// Starting unknowns spread over the problem: a grid over the first surface's domain (the second
+// surface's nearest parameters added for parametric-parametric pairs) or over the 3D box.
+std::vector<VecX> grid_starts(const Problem& problem, int n, double* cell) {
+  const auto& B = problem.bounds();
+  std::vector<VecX> starts;
+  auto lerp = [&](int k, int i) { return B[static_cast<std::size_t>(k)].lo + B[static_cast<std::size_t>(k)].width() * i / (n - 1); };
+  if (problem.kind() == PairKind::kImplicitImplicit) {
+    const int m = std::max(3, n / 2);  // n^3 would be wasteful: the local curve reaches far
+    *cell = Vec3(B[0].width(), B[1].width(), B[2].width()).norm() / (m - 1);
+    for (int i = 0; i < m; ++i)
+      for (int j = 0; j < m; ++j)
+        for (int k = 0; k < m; ++k) {
+          VecX x(3);
+          x << B[0].lo + B[0].width() * i / (m - 1), B[1].lo + B[1].width() * j / (m - 1), B[2].lo + B[2].width() * k / (m - 1);
+          starts.push_back(x);
+        }
+    return starts;
+  }
+  *cell = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const double u = lerp(0, i), v = lerp(1, j);
+      VecX x(problem.dim());
+      if (problem.kind() == PairKind::kParametricImplicit) {
+        x << u, v;
+      } else {
+        const Vec3T<double> P = problem.first().point(u, v);
+        auto pq = closest_parameters(problem.second(), Vec3(P.x, P.y, P.z));
+        if (!pq) continue;
+        x << u, v, (*pq)[0], (*pq)[1];
+      }
+      starts.push_back(x);
+    }
+  // The 3D size of a cell: the largest image of one grid step (from the middle of the domain).
+  using J = Jet<2, 1>;
+  const Vec3T<J> F = problem.first().point(J::variable(0, lerp(0, n / 2)), J::variable(1, lerp(1, n / 2)));
+  const Vec3 Fu(F.x.d(0), F.y.d(0), F.z.d(0)), Fv(F.x.d(1), F.y.d(1), F.z.d(1));
+  *cell = std::max(Fu.norm() * B[0].width(), Fv.norm() * B[1].width()) / (n - 1);
+  return starts;
+}
+
+}  // namespace
+
+std::vector<SingularLocation> hunt_singular_points(const Problem& problem, const HuntOptions& options) {
+  if (options.grid < 3) throw InputError("hunt_singular_points.grid", "needs at least 3 samples per direction");
+  double cell = 0;
+  const std::vector<VecX> starts = grid_starts(problem, options.grid, &cell);
+  std::vector<SingularLocation> found;
+  for (const VecX& x0 : starts) {
+    // Only where the surfaces come within a cell of each other (first-order distance).
+    if (!(problem.linearize(x0).distance <= cell)) continue;
+    // Newton step towards a critical point of the local curve h; keep starts whose step stays
+    // within about one cell (every critical point of h attracts the grid points around it).
+    const LocalCurve c = local_curve(problem, x0);
+    if (c.status != LocalCurveStatus::kOk) continue;
+    const LocalValue v = evaluate(c.h, Vec2::Zero());
+    Eigen::CompleteOrthogonalDecomposition<Eigen::Matrix2d> cod(v.hessian);
+    const Vec2 step = -cod.solve(v.gradient);
+    if (!step.allFinite() || step.norm() > cell) continue;
+    const VecX x = c.unknowns_at(step);
+    bool known = false;
+    for (const auto& f : found) known = known || (f.point - problem.point(x)).norm() <= 1e-3 * cell;
+    if (known) continue;
+    SingularLocation s = locate_singular_point(problem, x, options.locate);
+    if (s.status != LocateStatus::kConverged || !problem.inside(s.x, 1e-9)) continue;
+    known = false;
+    for (const auto& f : found) known = known || problem.difference(f.x, s.x).norm() <= options.merge_distance;
+    if (!known) found.push_back(s);
+  }
+  return found;
+}
+
+}  // namespace ssimarch

@@ -1,0 +1,218 @@
+// Classification against the oracle (tests/reference/oracle.json: s003.t21.codimensions,
+// s003.sec2.*, s003.alg1.classification, s003.ex12.tangent_slopes, s003.ex13.quartic,
+// s003.ch5.*) and the real forms of docs/math/singular_local_curve.md §3 (Ex. 16 is an isolated point).
+#include "ssimarch/singular/classify.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "singular/pairs.hpp"
+#include "ssimarch/singular/local_curve.hpp"
+#include "ssimarch/singular/locate.hpp"
+
+namespace ssimarch {
+namespace {
+
+using testing::germ;
+using Terms = std::vector<std::tuple<int, int, double>>;
+
+struct GermCase {
+  const char* name;
+  Terms terms;
+  SingularType type;
+  const char* ak;
+  int milnor;
+  int multiplicity;
+};
+
+class ClassifyGerm : public ::testing::TestWithParam<GermCase> {};
+
+TEST_P(ClassifyGerm, TypeMilnorAndName) {
+  const GermCase& c = GetParam();
+  Classification k = classify(germ(c.terms));
+  EXPECT_EQ(k.type, c.type) << to_string(k.type);
+  EXPECT_EQ(k.ak, c.ak);
+  EXPECT_EQ(k.milnor, c.milnor);
+  EXPECT_EQ(k.multiplicity, c.multiplicity);
+}
+
+using T = SingularType;
+INSTANTIATE_TEST_SUITE_P(
+    Oracle, ClassifyGerm,
+    ::testing::Values(
+        // s003.t21.codimensions (Thom's germs; cuspoids with y^2 added): 2, 3, 4, 5, 4, 4, 5
+        GermCase{"t21_x3", {{3, 0, 1}, {0, 2, 1}}, T::kCusp, "A2", 2, 2},
+        GermCase{"t21_x4", {{4, 0, 1}, {0, 2, 1}}, T::kIsolated, "A3", 3, 2},
+        GermCase{"t21_x5", {{5, 0, 1}, {0, 2, 1}}, T::kRamphoidCusp, "A4", 4, 2},
+        GermCase{"t21_x6", {{6, 0, 1}, {0, 2, 1}}, T::kIsolated, "A5", 5, 2},
+        GermCase{"t21_elliptic_umbilic", {{3, 0, 1}, {1, 2, -1}}, T::kTriplePoint, "D4", 4, 3},
+        GermCase{"t21_hyperbolic_umbilic", {{3, 0, 1}, {0, 3, 1}}, T::kTriplePoint, "D4", 4, 3},
+        GermCase{"t21_parabolic_umbilic", {{2, 1, 1}, {0, 4, 1}}, T::kTriplePoint, "D5", 5, 3},
+        // s003.sec2.Ex4, Ex9 (k=4), Ex10, Ex11
+        GermCase{"ex4", {{2, 0, 1}, {1, 1, 2}, {0, 2, 1}, {3, 0, 1}, {2, 1, 1}, {0, 3, 1}, {5, 0, 3}, {0, 6, 1}}, T::kCusp, "A2", 2, 2},
+        GermCase{"ex9_k4", {{5, 0, 1}, {0, 2, 1}}, T::kRamphoidCusp, "A4", 4, 2},
+        GermCase{"ex10", {{2, 1, 1}, {0, 4, 1}}, T::kTriplePoint, "D5", 5, 3},
+        GermCase{"ex11", {{4, 0, 1}, {2, 2, 1}, {2, 1, -2}, {1, 2, -1}, {0, 2, 1}}, T::kRamphoidCusp, "A4", 4, 2},
+        // s003.alg1.classification (Examples 23-30 and two rotated germs)
+        GermCase{"ex23", {{4, 0, -1}, {0, 4, -1}, {0, 2, 1}}, T::kTacnode, "A3", 3, 2},
+        GermCase{"ex24", {{2, 0, 5.99}, {0, 2, -2}}, T::kNode, "A1", 1, 2},
+        GermCase{"ex25", {{3, 0, 1}, {0, 2, -1}}, T::kCusp, "A2", 2, 2},
+        GermCase{"ex26", {{2, 0, -1.24}, {0, 2, 1.6}}, T::kNode, "A1", 1, 2},
+        GermCase{"ex27_node", {{2, 0, 0.55}, {0, 2, -0.18}}, T::kNode, "A1", 1, 2},
+        GermCase{"ex27_tacnode", {{4, 0, 0.2}, {0, 4, 0.1}, {2, 1, -0.3}, {0, 2, 0.1}, {0, 3, -0.2}}, T::kTacnode, "A3", 3, 2},
+        GermCase{"ex28_cardioid", {{4, 0, 1}, {0, 4, 1}, {3, 0, -4}, {1, 2, -4}, {2, 2, 2}, {0, 2, -4}}, T::kCusp, "A2", 2, 2},
+        GermCase{"ex29_ramphoid", {{0, 2, 1}, {2, 1, -2}, {1, 2, -1}, {4, 0, 1}, {2, 2, 1}}, T::kRamphoidCusp, "A4", 4, 2},
+        GermCase{"ex30_a5_isolated", {{2, 0, 0.25}, {3, 0, 1}, {1, 2, 1}, {4, 0, 0.75}, {2, 2, 3.5}, {0, 4, 1}}, T::kIsolated, "A5", 5, 2},
+        // (x+y)^2 + (x-y)^4: a sum of squares, isolated; (x+y)^2 + (x-y)^3: cusp
+        GermCase{"rotated_a3", {{2, 0, 1}, {1, 1, 2}, {0, 2, 1}, {4, 0, 1}, {3, 1, -4}, {2, 2, 6}, {1, 3, -4}, {0, 4, 1}}, T::kIsolated, "A3", 3, 2},
+        GermCase{"rotated_a2", {{2, 0, 1}, {1, 1, 2}, {0, 2, 1}, {3, 0, 1}, {2, 1, -3}, {1, 2, 3}, {0, 3, -1}}, T::kCusp, "A2", 2, 2},
+        // real forms with branches (thesis Fig. 2.6): x^2 - y^4 tacnode, x^2 - y^6 oscnode
+        GermCase{"tacnode", {{2, 0, 1}, {0, 4, -1}}, T::kTacnode, "A3", 3, 2},
+        GermCase{"oscnode", {{2, 0, 1}, {0, 6, -1}}, T::kOscnode, "A5", 5, 2},
+        GermCase{"isolated_a1", {{2, 0, 1}, {0, 2, 2}}, T::kIsolated, "A1", 1, 2},
+        // E6, E7, E8 and the ordinary quadruple point X9
+        GermCase{"e6", {{3, 0, 1}, {0, 4, 1}}, T::kTriplePoint, "E6", 6, 3},
+        GermCase{"e7", {{3, 0, 1}, {1, 3, 1}}, T::kTriplePoint, "E7", 7, 3},
+        GermCase{"e8", {{3, 0, 1}, {0, 5, 1}}, T::kTriplePoint, "E8", 8, 3},
+        GermCase{"x9", {{3, 1, 1}, {1, 3, -1}}, T::kQuadruplePoint, "X9", 9, 4},
+        GermCase{"five_lines", {{5, 0, 1}, {3, 2, -5}, {1, 4, 4}}, T::kMultiplePoint, "", 16, 5},
+        // curves of tangential contact: a double line; crossed by a transversal branch
+        GermCase{"contact", {{2, 0, 1}}, T::kTangentialContact, "", -1, 2},
+        GermCase{"contact_crossed", {{2, 1, 1}}, T::kTangentLineCrossing, "", -1, 3}),
+    [](const ::testing::TestParamInfo<GermCase>& i) { return std::string(i.param.name); });
+
+TEST(Classify, Ex12TriplePointTangents) {
+  // h = (u^2+v^2)^2 + 3u^2 v - v^3: slopes v'/u' = 0, +-sqrt(3) (oracle s003.ex12.tangent_slopes).
+  Classification k = classify(germ({{4, 0, 1}, {2, 2, 2}, {0, 4, 1}, {2, 1, 3}, {0, 3, -1}}));
+  EXPECT_EQ(k.type, SingularType::kTriplePoint);
+  EXPECT_EQ(k.ak, "D4");
+  EXPECT_EQ(k.milnor, 4);
+  ASSERT_EQ(k.tangent_cone.size(), 3u);
+  std::vector<double> angles;
+  for (const auto& l : k.tangent_cone) angles.push_back(std::atan2(l.direction[1], l.direction[0]));
+  EXPECT_NEAR(angles[0], 0.0, 1e-12);
+  EXPECT_NEAR(angles[1], M_PI / 3, 1e-12);
+  EXPECT_NEAR(angles[2], 2 * M_PI / 3, 1e-12);
+  EXPECT_TRUE(k.crossing);
+}
+
+TEST(Classify, Ex13QuadruplePointHasTwoDoubleLines) {
+  // h = (u^2+v^2)^3 - 4u^2v^2: quartic -4 u^2 v^2 (oracle s003.ex13.quartic: |c| = 4), mu = 13.
+  LocalJet h = germ({{6, 0, 1}, {4, 2, 3}, {2, 4, 3}, {0, 6, 1}, {2, 2, -4}});
+  Classification k = classify(h);
+  EXPECT_EQ(k.type, SingularType::kQuadruplePoint);
+  EXPECT_EQ(k.multiplicity, 4);
+  EXPECT_EQ(k.milnor, 13);
+  ASSERT_EQ(k.tangent_cone.size(), 2u);
+  EXPECT_EQ(k.tangent_cone[0].multiplicity, 2);
+  EXPECT_EQ(k.tangent_cone[1].multiplicity, 2);
+  EXPECT_NEAR(std::fabs(k.tangent_cone[0].direction[0]), 1.0, 1e-12);  // v' = 0
+  EXPECT_NEAR(std::fabs(k.tangent_cone[1].direction[1]), 1.0, 1e-12);  // u' = 0
+  EXPECT_NEAR(std::fabs(coef(h, 2, 2)), 4.0, 1e-9);
+}
+
+TEST(Classify, MilnorRowsMatchGibsonPyramid) {
+  // s003.ch5.Ex15/29 cod_k rows [1,1,1,1,0,...]: dims of Q/(J + M^N) are 1, 2, 3, 4, 4.
+  std::vector<int> rows;
+  EXPECT_EQ(milnor_number(germ({{4, 0, 1}, {2, 2, 1}, {2, 1, -2}, {1, 2, -1}, {0, 2, 1}}), 1e-9, &rows), 4);
+  EXPECT_EQ(rows, (std::vector<int>{1, 2, 3, 4, 4}));
+}
+
+// Located thesis points classified from the surfaces (not from the printed polynomials).
+struct PointCase {
+  const char* name;
+  const char* f;
+  const char* level;
+  double u, v;
+  SingularType type;
+  const char* ak;
+  int milnor;
+};
+class ClassifyPoint : public ::testing::TestWithParam<PointCase> {};
+
+TEST_P(ClassifyPoint, FromTheSurfaces) {
+  const PointCase& c = GetParam();
+  for (PairKind kind : {PairKind::kParametricImplicit, PairKind::kParametricParametric}) {
+    Problem pr = kind == PairKind::kParametricImplicit ? testing::graph_vs_plane_pi(c.f, c.level)
+                                                       : testing::graph_vs_plane_pp(c.f, c.level);
+    VecX x = VecX::Zero(pr.dim());
+    x[0] = c.u + 0.01, x[1] = c.v - 0.02;
+    if (pr.dim() == 4) x[2] = x[0], x[3] = x[1];
+    SingularLocation s = locate_singular_point(pr, x);
+    ASSERT_EQ(s.status, LocateStatus::kConverged);
+    Classification k = classify(local_curve(pr, s.x).h);
+    EXPECT_EQ(k.type, c.type) << to_string(k.type) << " " << to_string(kind);
+    EXPECT_EQ(k.ak, c.ak);
+    EXPECT_EQ(k.milnor, c.milnor);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    ThesisCh5, ClassifyPoint,
+    ::testing::Values(PointCase{"ex12", "(u^2+v^2)^2+3*u^2*v-v^3", "0", 0, 0, T::kTriplePoint, "D4", 4},
+                      PointCase{"ex13", "(u^2+v^2)^3-4*u^2*v^2", "0", 0, 0, T::kQuadruplePoint, "", 13},
+                      PointCase{"ex14", "u^4+u^2*v^2-2*u^2*v-u*v^2+v^2", "0", 0, 0, T::kRamphoidCusp, "A4", 4},
+                      PointCase{"ex16", "3*u^4/4+u^3+u^2/4+7*u^2*v^2/2+u*v^2+v^4", "0", 0, 0, T::kIsolated, "A5", 5},
+                      PointCase{"ex19", "-u^4-v^4+v^2", "0", 0, 0, T::kTacnode, "A3", 3},
+                      PointCase{"ex20", "u^4+v^4-4*u^3-4*u*v^2+2*u^2*v^2-4*v^2", "0", 0, 0, T::kCusp, "A2", 2},
+                      PointCase{"ex21", "u^6/6-5*u^4/4+2*u^2+v^2", "11/12", 1, 0, T::kNode, "A1", 1},
+                      PointCase{"ex22", "u^3-v^2", "0", 0, 0, T::kCusp, "A2", 2},
+                      PointCase{"ex40", "u^4-u^2+v^4-v^2", "-0.25", 0, 0.70710678118654752, T::kNode, "A1", 1}),
+    [](const ::testing::TestParamInfo<PointCase>& i) { return std::string(i.param.name); });
+
+TEST(ClassifyPoint, Ex17EllipsoidNodeQuadraticForm) {
+  // oracle s003.ex17: (d^2G - d^2F).N in (du, dv) = -1.24444 du^2 + 0.576 dv^2 (no 1/2), a node.
+  Problem pr(testing::param("1.2*cos(u)*sin(v)", "1.6*sin(u)*sin(v)", "2*cos(v)", {0, 2 * M_PI}, {0, M_PI}, true),
+             testing::param("0.9*cos(u)*sin(v)", "1.6*sin(u)*sin(v)", "2.5*cos(v)", {0, 2 * M_PI}, {0, M_PI}, true),
+             PairKind::kParametricParametric);
+  const double h = M_PI / 2;
+  VecX x(4);
+  x << h + 0.02, h - 0.01, h, h + 0.02;
+  SingularLocation s = locate_singular_point(pr, x);
+  ASSERT_EQ(s.status, LocateStatus::kConverged);
+  LocalCurve c = local_curve(pr, s.x);
+  Classification k = classify(c.h);
+  EXPECT_EQ(k.type, SingularType::kNode);
+  // Back to (du, dv): (s, t) = M (du, dv), M = [e_i . F_u, e_i . F_v].
+  Eigen::Matrix2d M = c.unknowns_jacobian().topRows(2).inverse();
+  LocalJet huv = linear_substitution(c.h, M);
+  // h = (F - G).N = -(1/2)(d^2G - d^2F).N up to the orientation of N.
+  const double a = 2 * coef(huv, 2, 0), b = 2 * coef(huv, 1, 1), d = 2 * coef(huv, 0, 2);
+  const double sign = a > 0 ? -1.0 : 1.0;
+  EXPECT_NEAR(sign * a, -1.24444444444, 1e-9);
+  EXPECT_NEAR(b, 0.0, 1e-9);
+  EXPECT_NEAR(sign * d, 0.576, 1e-9);
+}
+
+}  // namespace
+}  // namespace ssimarch
+
+namespace ssimarch {
+namespace {
+
+// Curves of tangential contact (issue 10 item 5): a cylinder lying on a plane (h = v^2), and the
+// same contact curve crossed by a transversal branch (h = v^2 (u - 0.1)).
+TEST(ClassifyPoint, TangentialContactAndTangentLineCrossing) {
+  Problem contact = testing::graph_vs_plane_pi("v^2");
+  VecX x(2);
+  x << 0.3, 0.02;
+  SingularLocation s = locate_singular_point(contact, x);
+  ASSERT_EQ(s.status, LocateStatus::kConverged);
+  EXPECT_LE(std::fabs(s.x[1]), 1e-12);
+  EXPECT_EQ(classify(local_curve(contact, s.x).h).type, SingularType::kTangentialContact);
+
+  Problem crossed = testing::graph_vs_plane_pi("v^2*(u-0.1)");
+  x << 0.13, 0.02;
+  s = locate_singular_point(crossed, x);
+  ASSERT_EQ(s.status, LocateStatus::kConverged);
+  EXPECT_LE(std::fabs(s.x[1]), 1e-12);  // on the contact line v = 0
+  VecX at(2);
+  at << 0.1, 0.0;
+  EXPECT_EQ(classify(local_curve(crossed, at).h).type, SingularType::kTangentLineCrossing);
+  at << 0.3, 0.0;
+  EXPECT_EQ(classify(local_curve(crossed, at).h).type, SingularType::kTangentialContact);
+}
+
+}  // namespace
+}  // namespace ssimarch
