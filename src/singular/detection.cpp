@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "ssimarch/core/error.hpp"
-#include "ssimarch/march/closest_point.hpp"
+#include "ssimarch/problem/closest_point.hpp"
 
 namespace ssimarch {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numeric>
 
-#include "ssimarch/geometry/curve_jet.hpp"
+#include "ssimarch/problem/curve_jet.hpp"
 
 namespace ssimarch {
 

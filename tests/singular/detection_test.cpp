@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "singular/pairs.hpp"
-#include "ssimarch/geometry/curve_jet.hpp"
+#include "ssimarch/problem/curve_jet.hpp"
 
 namespace ssimarch {
 namespace {

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "ssimarch/expr/program.hpp"
-#include "ssimarch/march/problem.hpp"
+#include "ssimarch/problem/problem.hpp"
 #include "ssimarch/singular/local_jet.hpp"
 #include "ssimarch/surface/surface.hpp"
 

@@ -13,7 +13,7 @@
 
 #include <vector>
 
-#include "ssimarch/march/problem.hpp"
+#include "ssimarch/problem/problem.hpp"
 #include "ssimarch/singular/locate.hpp"
 
 namespace ssimarch {

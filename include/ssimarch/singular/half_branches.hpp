@@ -20,7 +20,7 @@
 
 #include <vector>
 
-#include "ssimarch/march/problem.hpp"
+#include "ssimarch/problem/problem.hpp"
 #include "ssimarch/singular/classify.hpp"
 #include "ssimarch/singular/local_curve.hpp"
 

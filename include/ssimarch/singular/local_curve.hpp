@@ -19,7 +19,7 @@
 #include <array>
 #include <vector>
 
-#include "ssimarch/march/problem.hpp"
+#include "ssimarch/problem/problem.hpp"
 #include "ssimarch/singular/local_jet.hpp"
 
 namespace ssimarch {

@@ -12,7 +12,7 @@
 // system stopped 3e-3 from a tacnode (thesis Ex. 18; oracle s003.ch5.Ex18/27); this reaches 1e-12 there.
 #pragma once
 
-#include "ssimarch/march/problem.hpp"
+#include "ssimarch/problem/problem.hpp"
 #include "ssimarch/singular/local_curve.hpp"
 
 namespace ssimarch {
