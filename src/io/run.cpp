@@ -3,6 +3,7 @@
 #include <charconv>
 #include <iomanip>
 
+#include "ssimarch/io/singular_json.hpp"
 #include "ssimarch/topology/trace_all.hpp"
 
 namespace ssimarch {
@@ -74,6 +75,8 @@ json to_json(const IntersectionRun& run, const PointDecorator& decorate) {
                 {"step_length", run.spec.options.step_length},
                 {"tolerance", run.spec.options.tolerance}}},
               {"curves", std::move(curves)},
+              {"singular_points", singular_points_to_json(run.result.singular_points)},
+              {"isolated_points", singular_points_to_json(run.result.isolated_points)},
               {"stats", stats_to_json(run.result.stats)},
               {"warnings", run.result.warnings}};
 }
