@@ -9,6 +9,7 @@
 #include "ssimarch/march/corrector.hpp"
 #include "ssimarch/march/predictor.hpp"
 #include "ssimarch/march/step_control.hpp"
+#include "ssimarch/problem/singular_tolerances.hpp"
 
 namespace ssimarch {
 
@@ -172,6 +173,24 @@ Event budget_event(BudgetBound bound, const std::string& message) {
   return e;
 }
 
+// The watch on a step from cur (jet `here`) to the attempt's point (MarchLimits::watch_crossings):
+// kSingularSuspected with Event::beyond = the attempt's point when the tangent orientation reverses
+// (a crossing of branches passed) or the rank ratio of J_H has a local minimum below
+// kWatchRankRatio at cur (a tacnode passed near); kBudget (no event) otherwise.
+Event watch_event(const CurvePoint& cur, double previous_rank, const DynamicCurveJet& here, const Marcher::Attempt& a) {
+  const double r1 = here.rank_ratio, r2 = a.next.rank_ratio;
+  if (a.next.orientation != here.orientation)
+    return Event{EventKind::kSingularSuspected, BudgetBound::kNone,
+                 "the tangent orientation reverses between " + describe_point(cur.p) + " and " + describe_point(a.p1) +
+                     ": a crossing of branches lies between",
+                 a.corrected.x};
+  if (r1 < kWatchRankRatio && r1 < previous_rank && r1 <= r2)
+    return Event{EventKind::kSingularSuspected, BudgetBound::kNone,
+                 "the rank ratio of the Jacobian has a local minimum " + std::to_string(r1) + " at " + describe_point(cur.p),
+                 a.corrected.x};
+  return Event{};
+}
+
 }  // namespace
 
 MarchResult Tracer::march_until_event(const CurvePoint& start_point, Direction direction, const MarchLimits& limits,
@@ -195,6 +214,7 @@ MarchResult Tracer::march_until_event(const CurvePoint& start_point, Direction d
   // A target other than the start may lie on the very first chord (just past a singular point).
   const std::size_t first_closing = (target.p - start.p).norm() > 0 ? 1 : 3;
   bool watch = limits.watch_crossings && !limits.skip_first_watch;
+  double previous_rank = 0;  // rank ratio at the point before m.cur (0: none, no minimum at the start)
   while (true) {
     if (static_cast<long>(r.points.size()) >= limits.max_points) {
       r.event = budget_event(BudgetBound::kPoints, "reached max_points = " + std::to_string(limits.max_points));
@@ -223,14 +243,15 @@ MarchResult Tracer::march_until_event(const CurvePoint& start_point, Direction d
       r.event = Event{EventKind::kClosed, BudgetBound::kNone, "closed loop", VecX{}};
       return r;
     }
-    if (watch && a.next.orientation != m.state.here.orientation) {
-      r.event = Event{EventKind::kSingularSuspected, BudgetBound::kNone,
-                      "the tangent orientation reverses between " + describe_point(m.cur.p) + " and " +
-                          describe_point(a.p1) + ": a crossing of branches lies between",
-                      a.corrected.x};
-      return r;
+    if (watch) {
+      Event e = watch_event(m.cur, previous_rank, m.state.here, a);
+      if (e.kind == EventKind::kSingularSuspected) {
+        r.event = std::move(e);
+        return r;
+      }
     }
     watch = limits.watch_crossings;
+    previous_rank = m.state.here.rank_ratio;
     m.accept(a, &r);
     if (limits.traced && near_traced_curve(m.cur.p, *limits.traced, limits.traced_radius)) {
       r.event = Event{EventKind::kReachedTracedCurve, BudgetBound::kNone,

@@ -116,26 +116,40 @@ void expect_own_side(const TraceResult& r, double tol) {
 }
 
 TEST(ThroughSingular, TacnodeCurvesStayOnTheirOwnSide) {
+  // Ex. 19: branches v = +-u^2 (approximately) touching at the origin: two closed curves, each on
+  // its own side, both through the tacnode.
   const TraceResult r = run_example("thesis_ex19_tacnode.json").result;
-  std::printf("ex19: %zu curves, %zu singular\n", r.curves.size(), r.singular_points.size());
-  for (const auto& c : r.curves) std::printf("  closed %d length %.10g ends %s / %s\n", c.closed, c.length, c.start_message.c_str(), c.end_message.c_str());
-  for (const auto& s : r.singular_points) std::printf("  %s at %s\n", s.type.c_str(), describe_point(s.p).c_str());
+  ASSERT_EQ(r.curves.size(), 2u);
+  for (const auto& c : r.curves) {
+    EXPECT_TRUE(c.closed);
+    EXPECT_TRUE(has_point(c, Vec3::Zero(), 1e-10));
+  }
   expect_own_side(r, 1e-9);
+  ASSERT_EQ(r.singular_points.size(), 1u);
+  EXPECT_EQ(r.singular_points[0].type, "tacnode");
+  EXPECT_EQ(r.singular_points[0].curves, (std::vector<int>{0, 1}));
 }
 
 TEST(ThroughSingular, TacnodeAndNodeOfExample18) {
+  // Ex. 18: a tacnode at (0, 0) and a node at (0, 1), both output points of the curves.
   const TraceResult r = run_example("thesis_ex18_tacnode_node.json").result;
-  std::printf("ex18: %zu curves, %zu singular\n", r.curves.size(), r.singular_points.size());
-  for (const auto& c : r.curves) std::printf("  closed %d length %.10g ends %s / %s\n", c.closed, c.length, c.start_message.c_str(), c.end_message.c_str());
-  for (const auto& s : r.singular_points) std::printf("  %s at %s\n", s.type.c_str(), describe_point(s.p).c_str());
+  ASSERT_EQ(r.singular_points.size(), 2u);
+  const SingularPointReport* tacnode = singular_at(r, Vec3::Zero(), 1e-10);
+  const SingularPointReport* node = singular_at(r, Vec3(0, 1, 0.1), 1e-10);
+  ASSERT_NE(tacnode, nullptr);
+  ASSERT_NE(node, nullptr);
+  EXPECT_EQ(tacnode->type, "tacnode");
+  EXPECT_EQ(node->type, "node");
+  for (const SingularPointReport* s : {tacnode, node})
+    for (int i : s->curves) EXPECT_TRUE(has_point(r.curves[static_cast<std::size_t>(i)], s->p, 1e-10));
 }
 
 TEST(ThroughSingular, IsolatedPointIsReported) {
+  // Ex. 16: the origin is an isolated real point (A5 of real form x^2 + y^6).
   const TraceResult r = run_example("thesis_ex16_isolated_point.json").result;
-  std::printf("ex16: %zu curves, %zu singular %zu isolated\n", r.curves.size(), r.singular_points.size(), r.isolated_points.size());
-  for (const auto& s : r.isolated_points) std::printf("  %s %s at %s\n", s.type.c_str(), s.ak.c_str(), describe_point(s.p).c_str());
   ASSERT_EQ(r.isolated_points.size(), 1u);
   EXPECT_EQ(r.isolated_points[0].type, "isolated");
+  EXPECT_EQ(r.isolated_points[0].ak, "A5");
   EXPECT_LE(r.isolated_points[0].p.norm(), 1e-10);
 }
 
