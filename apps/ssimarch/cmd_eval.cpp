@@ -36,7 +36,7 @@ std::vector<double> parse_point(const std::string& text, const expr::Constants& 
 template <int NV>
 nlohmann::json derivative_list(const std::function<std::array<double, 3>(const std::array<int, NV>&)>& d, int order, int components) {
   nlohmann::json list = nlohmann::json::array();
-  const auto& layout = detail::JetLayout<NV, kMaxEvalOrder>::get();
+  const auto& layout = internal::JetLayout<NV, kMaxEvalOrder>::get();
   for (int i = 0; i < Jet<NV, kMaxEvalOrder>::kSize; ++i) {
     const auto& e = layout.exponents[static_cast<std::size_t>(i)];
     if (layout.degree[static_cast<std::size_t>(i)] > order) break;

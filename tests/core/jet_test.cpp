@@ -212,7 +212,7 @@ TEST(Jet, ProductMatchesNaivePolynomialProduct) {
     b[i] = U(rng);
   }
   J p = a * b;
-  const auto& L = detail::JetLayout<2, 5>::get();
+  const auto& L = internal::JetLayout<2, 5>::get();
   for (int k = 0; k < J::kSize; ++k) {
     double s = 0;
     for (int i = 0; i < J::kSize; ++i)
