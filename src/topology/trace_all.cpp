@@ -90,7 +90,11 @@ TracedCurve trace_from_half_branch(const Tracer& tracer, SingularRegistry* regis
 std::vector<SingularPointReport> isolated_points(const Problem& P, const SingularRegistry& registry) {
   std::vector<SingularPointReport> out;
   if (P.kind() != PairKind::kParametricImplicit) return out;
-  for (const SingularLocation& s : hunt_singular_points(P)) {
+  HuntOptions hunt;
+  // Tangent surfaces only: a grid cell from an isolated point sin(theta) is about a cell's
+  // fraction of the scale; 0.2 leaves room while skipping the transversal rest of the curve.
+  hunt.max_sine = 0.2;
+  for (const SingularLocation& s : hunt_singular_points(P, hunt)) {
     bool known = false;
     for (const auto& n : registry.nodes()) known = known || (n.location.point - s.point).norm() <= 1e-7 * std::max(1.0, P.scale());
     if (known) continue;

@@ -146,7 +146,12 @@ TEST(ThroughSingular, TacnodeAndNodeOfExample18) {
 
 TEST(ThroughSingular, IsolatedPointIsReported) {
   // Ex. 16: the origin is an isolated real point (A5 of real form x^2 + y^6).
-  const TraceResult r = run_example("thesis_ex16_isolated_point.json").result;
+  const Scene scene = load_scene(std::string(SSIMARCH_SOURCE_DIR) + "/examples/thesis_ex16_isolated_point.json");
+  const IntersectionSpec& spec = scene.intersections.at(0);
+  TraceAllOptions all;
+  EXPECT_TRUE(trace_all(scene.problem(spec), spec.options, spec.starts, all).isolated_points.empty());  // off by default
+  all.hunt_isolated_points = true;
+  const TraceResult r = trace_all(scene.problem(spec), spec.options, spec.starts, all);
   ASSERT_EQ(r.isolated_points.size(), 1u);
   EXPECT_EQ(r.isolated_points[0].type, "isolated");
   EXPECT_EQ(r.isolated_points[0].ak, "A5");
