@@ -21,6 +21,7 @@ struct Panel {
   // parameter wraps.
   std::vector<std::pair<int, std::vector<Vec2>>> lines;
   std::vector<std::pair<int, Vec2>> ends;  // open ends
+  std::vector<std::pair<std::string, Vec2>> marks;  // singular and isolated points with their type
   double xmin = 0, xmax = 1, ymin = 0, ymax = 1;
   bool fixed_range = false;
 };
@@ -68,6 +69,18 @@ void draw(SvgCanvas& svg, const Panel& p, double ox, int size) {
   }
   for (const auto& [c, q] : p.ends)
     svg.circle(box.px(q.x()), box.py(q.y()), 3.5, std::string("fill='none' stroke='") + kColors[c % 8] + "'");
+  for (const auto& [type, q] : p.marks) {
+    svg.rect(box.px(q.x()) - 3, box.py(q.y()) - 3, 6, 6, "fill='black'");
+    svg.text(box.px(q.x()) + 6, box.py(q.y()) - 6, "font-size='11'") << type;
+    svg.end_text();
+  }
+}
+
+// The singular and isolated points of the run, mapped into a panel by `map`.
+template <class Map>
+void mark_singular_points(const TraceResult& r, Panel* p, Map map) {
+  for (const auto* list : {&r.singular_points, &r.isolated_points})
+    for (const SingularPointReport& s : *list) p->marks.push_back({s.type, map(s)});
 }
 
 }  // namespace
@@ -106,7 +119,7 @@ void write_svg(std::ostream& out, const IntersectionRun& run, const SvgOptions& 
       view_title = "3D view along " + fmt(look);
     }
   }
-  Panel view{view_title, "screen x", "screen y", {}, {}};
+  Panel view{view_title, "screen x", "screen y", {}, {}, {}};
   for (std::size_t ci = 0; ci < curves.size(); ++ci) {
     std::vector<Vec2> l;
     for (const auto& p : curves[ci].points) l.emplace_back(p.p.dot(right), p.p.dot(up));
@@ -116,6 +129,7 @@ void write_svg(std::ostream& out, const IntersectionRun& run, const SvgOptions& 
     }
     view.lines.push_back({static_cast<int>(ci), std::move(l)});
   }
+  mark_singular_points(run.result, &view, [&](const SingularPointReport& s) { return Vec2(s.p.dot(right), s.p.dot(up)); });
   fit(&view);
   panels.push_back(std::move(view));
 
@@ -164,6 +178,7 @@ void write_svg(std::ostream& out, const IntersectionRun& run, const SvgOptions& 
       }
       p.lines.push_back({static_cast<int>(ci), std::move(l)});
     }
+    mark_singular_points(run.result, &p, [&](const SingularPointReport& s) { return Vec2(s.x[a], s.x[b]); });
     fit(&p);
     panels.push_back(std::move(p));
   }

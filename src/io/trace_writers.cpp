@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iomanip>
 
+#include "ssimarch/io/singular_json.hpp"
 namespace ssimarch {
 
 using nlohmann::json;
@@ -93,6 +94,8 @@ json to_json(const IntersectionRun& run) {
                 {"step_length", run.spec.options.trace.step_length},
                 {"tolerance", run.spec.options.trace.tolerance}}},
               {"curves", std::move(curves)},
+              {"singular_points", singular_points_to_json(run.result.singular_points)},
+              {"isolated_points", singular_points_to_json(run.result.isolated_points)},
               {"stats", stats_to_json(run.result.stats)},
               {"certified", run.result.start_search.certified},
               {"start_points", start_search_to_json(run.result.start_search)},

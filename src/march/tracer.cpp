@@ -9,6 +9,7 @@
 #include "ssimarch/march/corrector.hpp"
 #include "ssimarch/march/predictor.hpp"
 #include "ssimarch/march/step_control.hpp"
+#include "ssimarch/problem/singular_tolerances.hpp"
 
 namespace ssimarch {
 
@@ -172,6 +173,24 @@ Event budget_event(BudgetBound bound, const std::string& message) {
   return e;
 }
 
+// The watch on a step from cur (jet `here`) to the attempt's point (MarchLimits::watch_crossings):
+// kSingularSuspected with Event::beyond = the attempt's point when the tangent orientation reverses
+// (a crossing of branches passed) or the rank ratio of J_H has a local minimum below
+// kWatchRankRatio at cur (a tacnode passed near); kBudget (no event) otherwise.
+Event watch_event(const CurvePoint& cur, double previous_rank, const DynamicCurveJet& here, const Marcher::Attempt& a) {
+  const double r1 = here.rank_ratio, r2 = a.next.rank_ratio;
+  if (a.next.orientation != here.orientation)
+    return Event{EventKind::kSingularSuspected, BudgetBound::kNone,
+                 "the tangent orientation reverses between " + describe_point(cur.p) + " and " + describe_point(a.p1) +
+                     ": a crossing of branches lies between",
+                 a.corrected.x};
+  if (r1 < kWatchRankRatio && r1 < previous_rank && r1 <= r2)
+    return Event{EventKind::kSingularSuspected, BudgetBound::kNone,
+                 "the rank ratio of the Jacobian has a local minimum " + std::to_string(r1) + " at " + describe_point(cur.p),
+                 a.corrected.x};
+  return Event{};
+}
+
 }  // namespace
 
 MarchResult Tracer::march_until_event(const CurvePoint& start_point, Direction direction, const MarchLimits& limits,
@@ -186,11 +205,16 @@ MarchResult Tracer::march_until_event(const CurvePoint& start_point, Direction d
   m.cur = start;
   if (m.state.here.status != CurveJetStatus::kOk) {
     r.event = Event{EventKind::kSingularSuspected, BudgetBound::kNone,
-                    "the start point " + describe_point(start.p) + " is a singular point of the curve"};
+                    "the start point " + describe_point(start.p) + " is a singular point of the curve", VecX{}};
     return r;
   }
   std::visit([&](auto& s) { s.start(frenet_from_jet(m.state.here, problem_.scale())); }, m.rule);
   const double sagitta_slack = 1e-8 * problem_.scale() + 10 * options_.tolerance;
+  const CurvePoint& target = limits.close_at ? *limits.close_at : start;
+  // A target other than the start may lie on the very first chord (just past a singular point).
+  const std::size_t first_closing = (target.p - start.p).norm() > 0 ? 1 : 3;
+  bool watch = limits.watch_crossings && !limits.skip_first_watch;
+  double previous_rank = 0;  // rank ratio at the point before m.cur (0: none, no minimum at the start)
   while (true) {
     if (static_cast<long>(r.points.size()) >= limits.max_points) {
       r.event = budget_event(BudgetBound::kPoints, "reached max_points = " + std::to_string(limits.max_points));
@@ -212,17 +236,26 @@ MarchResult Tracer::march_until_event(const CurvePoint& start_point, Direction d
       r.event = internal::land_on_domain_edge(problem_, m.cur, a.corrected.x, m.co, stats, &r);
       return r;
     }
-    if (limits.detect_closure && r.points.size() >= 3 &&
-        internal::closes_loop(start, m.cur, a.p1, a.next.tangent(), sagitta_slack)) {
-      r.length += arc_length_estimate(m.cur.p, m.cur.t, start.p, start.t);
-      r.points.push_back(start);
-      r.event = Event{EventKind::kClosed, BudgetBound::kNone, "closed loop"};
+    if (limits.detect_closure && r.points.size() >= first_closing &&
+        internal::closes_loop(target, m.cur, a.p1, a.next.tangent(), sagitta_slack)) {
+      r.length += arc_length_estimate(m.cur.p, m.cur.t, target.p, target.t);
+      r.points.push_back(target);
+      r.event = Event{EventKind::kClosed, BudgetBound::kNone, "closed loop", VecX{}};
       return r;
     }
+    if (watch) {
+      Event e = watch_event(m.cur, previous_rank, m.state.here, a);
+      if (e.kind == EventKind::kSingularSuspected) {
+        r.event = std::move(e);
+        return r;
+      }
+    }
+    watch = limits.watch_crossings;
+    previous_rank = m.state.here.rank_ratio;
     m.accept(a, &r);
     if (limits.traced && near_traced_curve(m.cur.p, *limits.traced, limits.traced_radius)) {
       r.event = Event{EventKind::kReachedTracedCurve, BudgetBound::kNone,
-                      "reached a traced curve at " + describe_point(m.cur.p)};
+                      "reached a traced curve at " + describe_point(m.cur.p), VecX{}};
       return r;
     }
   }

@@ -90,7 +90,8 @@ std::vector<SingularLocation> hunt_singular_points(const Problem& problem, const
   std::vector<SingularLocation> found;
   for (const VecX& x0 : starts) {
     // Only where the surfaces come within a cell of each other (first-order distance).
-    if (!(problem.linearize(x0).distance <= cell)) continue;
+    const Linearization L0 = problem.linearize(x0);
+    if (!(L0.distance <= cell) || L0.normal_first.cross(L0.normal_second).norm() > options.max_sine) continue;
     // Newton step towards a critical point of the local curve h; keep starts whose step stays
     // within about one cell (every critical point of h attracts the grid points around it).
     const LocalCurve c = local_curve(problem, x0);

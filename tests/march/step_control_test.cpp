@@ -116,6 +116,9 @@ TEST(StepRulesTraced, ChordalKeepsEverySagittaBelowDeltaWithFewPoints) {
     double worst = 0, minimum = 0;
     const auto& pts = t.curve.points;
     for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
+      // Chords at the exact node (0, -2, 0), an output point since issue 10: there the lap of
+      // the parameter is undefined and so is the curvature.
+      if ((pts[i].p - Vec3(0, -2, 0)).norm() <= 1e-9 || (pts[i + 1].p - Vec3(0, -2, 0)).norm() <= 1e-9) continue;
       Vec3 mid = 0.5 * (pts[i].p + pts[i + 1].p);
       double s = viviani_param_guess(pts[i].p) + 0.5 * (pts[i + 1].p - pts[i].p).norm() / std::hypot(1.0, std::cos(0.5 * viviani_param_guess(pts[i].p)));
       worst = std::max(worst, testing::distance_to_curve(f, mid, s));

@@ -63,7 +63,7 @@ const BadValue kBadValues[] = {
     {"max_points", "1e300", "got 1e+300"},
     {"max_length", "0", "must be a finite number > 0, got 0"},
     {"start_samples", "1001", "must be an integer in [2, 1000], got 1001"},
-    {"certified_start_points", "1", "must be true or false, got 1"},
+    {"certified_start_points", "1", "expected a yes/no name (true or false), got a number"},
     {"certified_start_points", "\"maybe\"", "maybe"},
     {"start_box_budget", "0", "must be an integer in [1, 1e+09], got 0"},
     {"geometry", "\"guesswork\"", "unknown geometry method \"guesswork\" (known: exact, ye-maekawa, willmore, stoyanov, estimate, barnhill-kersey, mixed)"},

@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "march/cases.hpp"
+#include "testing/surface_pairs.hpp"
 #include "ssimarch/topology/trace_all.hpp"
 
 namespace ssimarch {

@@ -24,13 +24,20 @@ double viviani_param(const Vec3& p) {
   return (testing::viviani(s) - p).norm() <= (testing::viviani(s + 2 * M_PI) - p).norm() ? s : s + 2 * M_PI;
 }
 
+// Points where the parameter is defined: not the exact node (0, -2, 0) of Viviani's curve, an
+// output point since issue 10, where both laps meet.
+bool off_node(const CurvePoint& p) { return (p.p - Vec3(0, -2, 0)).norm() > 1e-9; }
+
 // Total advance of the curve parameter with every step forward (a branch jump or a retraced
 // stretch breaks it).
 template <class Param>
 double total_advance(const TracedCurve& c, Param param, double period) {
   double total = 0, sign = 0;
-  for (std::size_t i = 1; i < c.points.size(); ++i) {
-    double d = param(c.points[i].p) - param(c.points[i - 1].p);
+  std::vector<CurvePoint> pts;
+  for (const auto& p : c.points)
+    if (off_node(p)) pts.push_back(p);
+  for (std::size_t i = 1; i < pts.size(); ++i) {
+    double d = param(pts[i].p) - param(pts[i - 1].p);
     d -= period * std::round(d / period);
     if (sign == 0) sign = d > 0 ? 1 : -1;
     if (d * sign <= 0) return -1;
@@ -67,7 +74,11 @@ void expect_complete(const Problem& P, const TraceOptions& o, const Vec3& start,
   // 1e-12 from both surfaces is up to 1e-12 / sin(theta) from the curve: 1.6e-10 was seen next
   // to Viviani's node, where the surfaces are tangent.
   EXPECT_LE(worst, 1e-9);
-  EXPECT_EQ(r.stats.points + 1, static_cast<long>(c.points.size()));
+  // Marched points, plus the closing point, plus per pass through a node the node itself and the
+  // exit point the march goes on from (topology/through_singular.hpp).
+  long passes = 0;
+  for (const auto& p : c.points) passes += off_node(p) ? 0 : 1;
+  EXPECT_EQ(r.stats.points + 1 + 2 * passes, static_cast<long>(c.points.size()));
   EXPECT_GT(r.stats.surface_evaluations[0], 0);
   EXPECT_GT(r.stats.surface_evaluations[1], 0);
 }

@@ -83,8 +83,30 @@ struct StartPointSearch {
   std::string note;         // why sampling was used, or what the certificate does not cover
 };
 
+/// A singular point met by the trace (or hunted), as found by singular/ (docs/singular.md).
+struct SingularPointReport {
+  VecX x;                 // the unknowns of H
+  Vec3 p = Vec3::Zero();  // the 3D point
+  std::string type;       // "node", "cusp", "tacnode", ... (singular/classify.hpp)
+  std::string ak;         // "A1", "D4", ...; empty where none applies
+  int multiplicity = 0;
+  int milnor = -1;        // -1 where infinite or beyond the local jet
+  struct HalfBranch {
+    Vec3 tangent = Vec3::Zero();  // unit 3D tangent leaving the point
+    VecX param_tangent;           // the same in the unknowns (per unit length)
+    // Leading term of the offset from the tangent line, w = coefficient X^exponent (model units;
+    // exponent 0: straight within resolution).
+    double coefficient = 0, exponent = 0;
+    int continuation = -1;  // index of the half-branch that continues this one through the point
+  };
+  std::vector<HalfBranch> half_branches;
+  std::vector<int> curves;  // indices of the curves through the point
+};
+
 struct TraceResult {
   std::vector<TracedCurve> curves;
+  std::vector<SingularPointReport> singular_points;  // met by the curves (thesis ch. 5-6)
+  std::vector<SingularPointReport> isolated_points;  // no real branch through them (hunted)
   TraceStats stats;
   StartPointSearch start_search;
   std::vector<std::string> warnings;  // e.g. a start point that could not be put on the curve

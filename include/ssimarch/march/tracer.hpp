@@ -34,7 +34,9 @@ enum class EventKind {
                         // tangents agreeing; the last point is the start itself
   kDomainEdge,          // a non-periodic unknown reached its bound; the last point lies on it
   kSingularSuspected,   // no step >= min_step could be taken and the rank ratio of J_H or the
-                        // sine of the angle between the normals is < kSuspectSingularRankRatio
+                        // sine of the angle between the normals is < kSuspectSingularRankRatio;
+                        // or (MarchLimits::watch_crossings) the next step would have reversed the
+                        // tangent orientation: Event::beyond holds that step's end
   kReachedTracedCurve,  // the last point is within MarchLimits::traced_radius of a traced curve
   kBudget,              // MarchLimits::max_points or max_length reached (Event::bound says which)
   kStepUnderflow,       // no step >= min_step could be taken at a regular point
@@ -48,6 +50,8 @@ struct Event {
   EventKind kind = EventKind::kBudget;
   BudgetBound bound = BudgetBound::kNone;
   std::string message;  // details for people: the point, the rank ratio, the edge, ...
+  VecX beyond;          // kSingularSuspected by a reversed orientation: the end of the step not
+                        // taken (a crossing lies between the last point and it); else empty
 };
 /// How a curve end reports the event (result.hpp).
 Termination to_termination(const Event& event);
@@ -64,6 +68,13 @@ struct MarchLimits {
   // of one of these curves' polylines; null: never.
   const std::vector<TracedCurve>* traced = nullptr;
   double traced_radius = 0;
+  // Stop with kSingularSuspected before a step whose ends have opposite tangent orientations
+  // (CurveJet::orientation): the step passed a crossing of branches (thesis ch. 5 §5.2.1).
+  bool watch_crossings = false;
+  bool skip_first_watch = false;  // the first step is not watched (a restart after a near miss)
+  // The point whose return closes the curve (a march continuing a curve through a singular
+  // point); null: the march's own start.
+  const CurvePoint* close_at = nullptr;
 };
 
 struct MarchResult {

@@ -41,6 +41,7 @@ struct CurveJet {
   std::array<VecX, K + 1> x;      // x(s) = sum_k x[k] s^k (unknowns of H)
   std::array<Vec3, K + 1> alpha;  // alpha(s) = sum_k alpha[k] s^k (3D curve, unit speed)
   double rank_ratio = 0;          // sigma_min / sigma_max of J_H (0 at a singular point)
+  int orientation = 0;            // +1 / -1: x' along / against the cross product of the rows of J_H (0 if not regular)
 
   /// d^k alpha / ds^k at s = 0.
   Vec3 derivative(int k) const {
@@ -106,6 +107,16 @@ CurveJet<K> curve_jet_n(const Problem& problem, const VecX& x0, const Vec3* hint
   double sign = (hint && speed.dot(*hint) < 0) ? -1.0 : 1.0;
   jet.x[1] = null * (sign / speed.norm());
   jet.alpha[1] = D * jet.x[1];
+  {
+    // The sign of det [J; x'] says whether the tangent runs along the generalised cross product
+    // of the rows of J_H, a field that is continuous along the curve and vanishes only at its
+    // singular points: it changes between consecutive points exactly when a step passed a
+    // crossing of branches (thesis ch. 5 §5.2.1, Fig. 5.3).
+    MatX M(N, N);
+    M.topRows(N - 1) = J;
+    M.row(N - 1) = jet.x[1].transpose();
+    jet.orientation = M.determinant() >= 0 ? 1 : -1;
+  }
   if constexpr (K >= 2) {
     MatX A(N, N);
     A.topRows(N - 1) = J;
@@ -175,6 +186,7 @@ struct DynamicCurveJet {
   std::array<VecX, kMaxCurveJetOrder + 1> x;
   std::array<Vec3, kMaxCurveJetOrder + 1> alpha;
   double rank_ratio = 0;
+  int orientation = 0;  // as CurveJet::orientation
 
   VecX x_at(double s) const {
     VecX r = x[static_cast<std::size_t>(order)];
@@ -198,6 +210,7 @@ DynamicCurveJet to_dynamic(const CurveJet<K>& j, int n) {
   d.order = K;
   d.status = j.status;
   d.rank_ratio = j.rank_ratio;
+  d.orientation = j.orientation;
   for (int k = 0; k <= kMaxCurveJetOrder; ++k) {
     d.x[static_cast<std::size_t>(k)] = k <= K ? j.x[static_cast<std::size_t>(k)] : VecX::Zero(n);
     d.alpha[static_cast<std::size_t>(k)] = k <= K ? j.alpha[static_cast<std::size_t>(k)] : Vec3::Zero();

@@ -38,4 +38,11 @@ inline constexpr double kTangentialSinTheta = 1e-7;
 /// default step lengths (scale / 10 .. scale / 100).
 inline constexpr double kSuspectSingularRankRatio = 1e-4;
 
+/// Rank ratio below which a local minimum of the rank ratio along a watched march is located as a
+/// possible singular point (MarchLimits::watch_crossings): at a tacnode or an oscnode the tangent
+/// orientation does not reverse, but the ratio falls like the squared distance to the point
+/// (A3: |grad h| ~ 2 x^2 along y = x^2), below 1e-3 for a pass within ~0.02 model units. The
+/// thesis' own threshold sin(theta) < 0.01 (ch. 5 §5.2.1) fires far more often.
+inline constexpr double kWatchRankRatio = 1e-3;
+
 }  // namespace ssimarch

@@ -11,6 +11,7 @@
 // and locate". Together with sin theta = |N_F x N_G| < 0.01 (thesis ch. 5 §5.2.1) and the rank ratio.
 #pragma once
 
+#include <limits>
 #include <vector>
 
 #include "ssimarch/problem/problem.hpp"
@@ -43,6 +44,9 @@ struct HuntOptions {
   int grid = 32;                 // samples per parameter direction
   LocateOptions locate;          // options of each location
   double merge_distance = 1e-7;  // solutions closer than this (unknowns) are the same point
+  // Only starts where sin(theta) = |N_F x N_G| is at most this (a singular point has sin theta = 0
+  // and it grows about linearly with the distance); infinity: every start near the curve.
+  double max_sine = std::numeric_limits<double>::infinity();
 };
 
 /// Every singular point of the problem found from a grid: over the first surface's domain (with

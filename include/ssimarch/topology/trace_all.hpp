@@ -5,19 +5,37 @@
 #include <vector>
 
 #include "ssimarch/march/tracer.hpp"
+#include "ssimarch/topology/singular_registry.hpp"
 
 namespace ssimarch {
 
+/// How trace_all treats singular points (issue 10).
+struct TraceAllOptions {
+  // Locate the singular points the curves meet, pass through them along the continuing
+  // half-branch (topology/through_singular.hpp) and trace every half-branch once; report them in
+  // TraceResult::singular_points. Off: curves stop next to singular points (the plain tracer).
+  bool through_singular_points = true;
+  // Hunt isolated points (parametric-implicit pairs) for TraceResult::isolated_points: a grid
+  // over the domain, local curves where the surfaces are nearly tangent. Off by default: it can
+  // cost 20x a smooth trace (ruled surface x implicit torus: 12 ms -> 250 ms).
+  bool hunt_isolated_points = false;
+};
+
 /// The curve through the solution x0, marched forward until an event and, unless it closed,
-/// backward from x0 too; points wrapped into the domain, ordered along x0's tangent.
-TracedCurve trace_curve_through(const Tracer& tracer, const VecX& x0, TraceStats* stats);
+/// backward from x0 too; points wrapped into the domain, ordered along x0's tangent. With a
+/// registry, the curve passes through the singular points it meets (recorded there as met by
+/// curve `index`).
+TracedCurve trace_curve_through(const Tracer& tracer, const VecX& x0, TraceStats* stats,
+                                SingularRegistry* registry = nullptr, int index = 0);
 
 /// Traces every curve through the 3D points `starts` (each near the curve); with no start
 /// points, finds start points by sampling the domain (find_start_points) and traces a curve
-/// through each one not on a curve already traced (within 0.2 tracer.spacing()).
-TraceResult trace_all(const Tracer& tracer, const std::vector<Vec3>& starts = {});
+/// through each one not on a curve already traced (within 0.2 tracer.spacing()); then (options)
+/// every half-branch leaving a singular point that no curve followed yet.
+TraceResult trace_all(const Tracer& tracer, const std::vector<Vec3>& starts = {}, const TraceAllOptions& options = {});
 
 /// The same with a tracer of these options; throws InputError when they are invalid.
-TraceResult trace_all(const Problem& problem, const TraceOptions& options, const std::vector<Vec3>& starts = {});
+TraceResult trace_all(const Problem& problem, const TraceOptions& options, const std::vector<Vec3>& starts = {},
+                      const TraceAllOptions& all = {});
 
 }  // namespace ssimarch

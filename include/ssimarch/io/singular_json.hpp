@@ -1,0 +1,18 @@
+// The singular points of a trace as JSON (docs/output-format.md: "singular_points",
+// "isolated_points"; issue 10 "Output").
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "ssimarch/march/result.hpp"
+
+namespace ssimarch {
+
+/// [{"xyz", "params", "type", "ak", "multiplicity", "milnor", "half_branches": [{"tangent",
+/// "param_tangent", "expansion": {"coefficient", "exponent"}, "continuation"}], "curves"}]:
+/// expansion is the leading term w = coefficient X^exponent of the half-branch's offset from its
+/// tangent line at distance X (model units).
+nlohmann::json singular_points_to_json(const std::vector<SingularPointReport>& points);
+
+}  // namespace ssimarch
