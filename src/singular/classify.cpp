@@ -71,7 +71,15 @@ SplittingLemma splitting_lemma(const LocalJet& h) {
   const int big = std::fabs(es.eigenvalues()[1]) >= std::fabs(es.eigenvalues()[0]) ? 1 : 0;
   r.axes.col(0) = es.eigenvectors().col(big);
   r.axes.col(1) = es.eigenvectors().col(1 - big);
-  const LocalJet g = linear_substitution(h, r.axes);
+  const SplittingLemma e = eliminate_first_variable(linear_substitution(h, r.axes));
+  r.lambda = e.lambda;
+  r.x_of_y = e.x_of_y;
+  r.phi = e.phi;
+  return r;
+}
+
+SplittingLemma eliminate_first_variable(const LocalJet& g) {
+  SplittingLemma r;
   r.lambda = 2 * coef(g, 2, 0);
   const LocalJet gx = partial(g, 0);
   using T = Taylor<kLocalOrder>;

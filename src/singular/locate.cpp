@@ -118,15 +118,7 @@ Vec2 refine_corank_one(const LocalJet& h, const Vec2& z, double radius) {
   if (!(std::fabs(x0) <= radius)) return z;
   g = shifted(g, Vec2(x0, 0));
   const SplittingLemma s = [&] {
-    SplittingLemma r;
-    r.lambda = 2 * coef(g, 2, 0);
-    const LocalJet gx = partial(g, 0);
-    using T = Taylor<kLocalOrder>;
-    const T Y = T::variable(0, 0.0);
-    T X(0.0);
-    for (int it = 0; it <= kLocalOrder; ++it) X -= compose<2, 1, kLocalOrder>(gx, std::array<T, 2>{X, Y}) / r.lambda;
-    r.x_of_y = X;
-    r.phi = compose<2, 1, kLocalOrder>(g, std::array<T, 2>{X, Y});
+    SplittingLemma r = eliminate_first_variable(g);
     r.phi[0] = g[0];
     return r;
   }();

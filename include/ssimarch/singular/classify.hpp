@@ -83,5 +83,8 @@ struct SplittingLemma {
   Taylor<kLocalOrder> phi;     // h(X(Y), Y)
 };
 SplittingLemma splitting_lemma(const LocalJet& h);
+/// The elimination step of the splitting lemma for a jet g already in its axes (g_XX(0) != 0):
+/// X(Y) solving g_X(X(Y), Y) = 0 and phi(Y) = g(X(Y), Y); `axes` is left unset.
+SplittingLemma eliminate_first_variable(const LocalJet& g);
 
 }  // namespace ssimarch
