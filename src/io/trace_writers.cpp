@@ -47,6 +47,10 @@ json stats_to_json(const TraceStats& s) {
                {{"1", s.iterations[0]}, {"2", s.iterations[1]}, {"3", s.iterations[2]}, {"4", s.iterations[3]}, {"5+", s.iterations[4]}}},
               {"linearizations", s.linearizations},
               {"jet_evaluations", s.jet_evaluations},
+              {"surface_evaluations", {s.surface_evaluations[0], s.surface_evaluations[1]}},
+              // work per accepted point (issue 12 item 4): both surfaces' calls over the points
+              {"evaluations_per_point",
+               s.points > 0 ? static_cast<double>(s.surface_evaluations[0] + s.surface_evaluations[1]) / static_cast<double>(s.points) : 0.0},
               {"corrector_failures", s.corrector_failures},
               {"time_ms", s.time_ms}};
 }

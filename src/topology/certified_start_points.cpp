@@ -6,6 +6,7 @@
 
 #include "ssimarch/problem/gauss_newton.hpp"
 #include "ssimarch/topology/krawczyk.hpp"
+#include "ssimarch/topology/saddle_box.hpp"
 #include "ssimarch/topology/start_points.hpp"
 
 namespace ssimarch {
@@ -45,6 +46,18 @@ void turning_residual(const Problem& P, int k, const T* x, T* g) {
   g[n - 1] = determinant(minor, n - 1);
 }
 
+}  // namespace
+
+SquareSystem face_system(const Problem& P, int i, double at) {
+  SquareSystem e;
+  e.dimension = P.dim() - 1;
+  e.value = [&P, i, at](const IntervalNumber* y, IntervalNumber* g) { boundary_residual(P, i, at, y, g); };
+  e.gradient = [&P, i, at](const IntervalGradient* y, IntervalGradient* g) { boundary_residual(P, i, at, y, g); };
+  return e;
+}
+
+namespace {
+
 struct System {
   SquareSystem equations;
   IntervalBox box;
@@ -67,11 +80,7 @@ std::vector<System> boundary_systems(const Problem& P) {
       char value[32];
       std::snprintf(value, sizeof value, "%.9g", at);
       s.name = "boundary " + names[static_cast<std::size_t>(i)] + " = " + value;
-      s.equations.dimension = P.dim() - 1;
-      s.equations.value = [&P, i, at](const IntervalNumber* y, IntervalNumber* g) { boundary_residual(P, i, at, y, g); };
-      s.equations.gradient = [&P, i, at](const IntervalGradient* y, IntervalGradient* g) {
-        boundary_residual(P, i, at, y, g);
-      };
+      s.equations = face_system(P, i, at);
       for (int j = 0; j < P.dim(); ++j)
         if (j != i) s.box.emplace_back(P.bounds()[static_cast<std::size_t>(j)].lo, P.bounds()[static_cast<std::size_t>(j)].hi);
       out.push_back(std::move(s));
@@ -180,6 +189,45 @@ struct Collector {
   }
 };
 
+// The box S of a singular cluster tried as a saddle box (topology/saddle_box.hpp): the region
+// grown by `factor` times its half-widths plus a floor of kSaddleFloor of the domain, clipped to
+// the bounds.
+constexpr double kSaddleFloor = 1e-6;
+IntervalBox grown(const Problem& P, const IntervalBox& region, double factor) {
+  IntervalBox out;
+  for (std::size_t i = 0; i < region.size(); ++i) {
+    const Interval& b = P.bounds()[i];
+    const double w = factor * 0.5 * region[i].width() + kSaddleFloor * (b.hi - b.lo);
+    out.emplace_back(std::max(b.lo, region[i].mid() - w), std::min(b.hi, region[i].mid() + w));
+  }
+  return out;
+}
+
+// Every undecided region of a turning system decided as a saddle box (no closed branch inside,
+// every arc through it crossing its certified faces, whose roots become start points); tries a
+// few sizes per region. Returns whether all were.
+bool decide_by_saddle_boxes(const System& s, const RootSearchResult& r, const RootSearchOptions& ro, Collector* out,
+                            long* saddle_boxes) {
+  const Problem& P = out->tracer.problem();
+  if (P.dim() > 3) return false;  // saddle boxes need a reduction to two variables (saddle_box.hpp)
+  for (bool budget : {false, true})
+    for (const IntervalBox& y : merge_touching(r.undecided, budget)) {
+      const IntervalBox region = to_unknowns(s, y);
+      bool decided = false;
+      for (double factor : {2.0, 5.0, 20.0}) {
+        SaddleBoxResult b = decide_saddle_box(P, grown(P, region, factor), ro);
+        out->search->boxes += b.boxes;
+        if (!b.decided) continue;
+        for (const VecX& x : b.crossings) out->add(x, false);
+        ++*saddle_boxes;
+        decided = true;
+        break;
+      }
+      if (!decided) return false;
+    }
+  return true;
+}
+
 RootSearchResult in_unknowns(const System& s, RootSearchResult r) {
   for (CertifiedRoot& root : r.roots) {
     root.enclosure = to_unknowns(s, root.enclosure);
@@ -225,11 +273,12 @@ std::vector<VecX> certified_start_points(const Tracer& tracer, TraceStats* stats
     boundary_decided = out.take(s, find_all_roots(s.equations, s.box, ro), true) && boundary_decided;
   // One turning system decided everywhere suffices for the loops; the others' roots still help.
   bool loops_decided = false;
+  long saddle_boxes = 0;
   std::vector<std::pair<System, RootSearchResult>> undecided_turning;
   for (int k = 0; k < P.dim() && !loops_decided; ++k) {
     System s = turning_system(P, k);
     RootSearchResult r = find_all_roots(s.equations, s.box, ro);
-    loops_decided = out.take(s, r, false);
+    loops_decided = out.take(s, r, false) || decide_by_saddle_boxes(s, r, ro, &out, &saddle_boxes);
     if (loops_decided) break;
     const bool budget_spent = std::any_of(r.undecided.begin(), r.undecided.end(), [](const UndecidedBox& u) { return u.budget; });
     undecided_turning.emplace_back(std::move(s), std::move(r));
@@ -247,6 +296,8 @@ std::vector<VecX> certified_start_points(const Tracer& tracer, TraceStats* stats
     search->note = std::string(boundary_decided ? "" : "a boundary system ") +
                    (boundary_decided || loops_decided ? "" : "and ") + (loops_decided ? "" : "every turning system ") +
                    "left undecided boxes (uncertain_regions)";
+  if (search->certified && saddle_boxes > 0)
+    search->note = std::to_string(saddle_boxes) + " singular cluster(s) of a turning system decided as saddle boxes";
   search->time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return std::move(out.points);
 }

@@ -38,6 +38,10 @@ RootSearchResult boundary_roots(const Problem& P, int i, bool upper, const RootS
 /// undecided boxes.
 RootSearchResult turning_points(const Problem& P, int k, const RootSearchOptions& options);
 
+/// The boundary system of the face x_i = at: H = 0 in the n-1 unknowns other than x_i (in their
+/// order). Captures `problem` by reference.
+SquareSystem face_system(const Problem& problem, int i, double at);
+
 /// Start points found by the certified search; fills *search (method "certified") and adds the
 /// Newton work to *stats. Requires both surfaces to evaluate on intervals.
 std::vector<VecX> certified_start_points(const Tracer& tracer, TraceStats* stats, StartPointSearch* search);

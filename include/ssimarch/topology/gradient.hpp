@@ -164,6 +164,17 @@ Gradient<S, N> abs(const Gradient<S, N>& a) {
   if constexpr (requires { a.v.contains_zero(); }) {
     if (a.v.contains_zero()) sign = S(-1.0, 1.0);
     else sign = a.v.lo() > 0 ? S(1.0) : S(-1.0);
+  } else if constexpr (requires { a.v.v.contains_zero(); }) {
+    // Nested over intervals (second derivatives): sign(a) is a step where a may vanish, so its
+    // own derivatives there are unbounded (entire), not 0 — or the Hessian of |u| + v^2 + 3uv
+    // would miss the kink that makes the origin a minimum (topology/saddle_box.hpp).
+    using I = decltype(a.v.v);
+    if (a.v.v.contains_zero()) {
+      sign.v = I(-1.0, 1.0);
+      sign.d.fill(I::entire());
+    } else {
+      sign = a.v.v.lo() > 0 ? S(1.0) : S(-1.0);
+    }
   }
   return Gradient<S, N>::chain(a, s, sign);
 }
@@ -173,6 +184,20 @@ Gradient<S, N> atan2(const Gradient<S, N>& y, const Gradient<S, N>& x) {
   r.v = atan2(y.v, x.v);
   const S den = x.v * x.v + y.v * y.v;
   for (std::size_t i = 0; i < N; ++i) r.d[i] = (x.v * y.d[i] - y.v * x.d[i]) / den;
+  if constexpr (requires { y.v.contains_zero(); }) {
+    // A box across the branch cut (x <= 0, y = 0): atan2 jumps by 2 pi there, which no bound on
+    // the smooth derivative covers; the mean-value and Krawczyk tests need an enclosure of every
+    // difference quotient, so the derivative is unbounded.
+    if (y.v.contains_zero() && x.v.lo() <= 0)
+      for (std::size_t i = 0; i < N; ++i) r.d[i] = S::entire();
+  } else if constexpr (requires { y.v.v.contains_zero(); }) {
+    using I = decltype(y.v.v);
+    if (y.v.v.contains_zero() && x.v.v.lo() <= 0)
+      for (std::size_t i = 0; i < N; ++i) {
+        r.d[i].v = I::entire();
+        r.d[i].d.fill(I::entire());
+      }
+  }
   return r;
 }
 template <class S, int N>

@@ -15,6 +15,8 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -38,12 +40,25 @@ class IntervalNumber {
   }
   /// [lo, hi] pushed `ulps` units outward (the result of a computation rounded to nearest).
   static IntervalNumber outward(double lo, double hi, int ulps = 1) {
+    if (std::isnan(lo) || std::isnan(hi)) return entire();
     for (int i = 0; i < ulps; ++i) {
-      lo = std::nextafter(lo, -std::numeric_limits<double>::infinity());
-      hi = std::nextafter(hi, std::numeric_limits<double>::infinity());
+      lo = next_down(lo);
+      hi = next_up(hi);
     }
-    return {lo, hi};
+    IntervalNumber r;
+    r.lo_ = lo;
+    r.hi_ = hi;
+    return r;
   }
+  /// The next double above x (x itself for +inf): std::nextafter(x, +inf) without the libm call
+  /// and its errno handling, which dominated interval products (docs/benchmarks.md, profiles).
+  static double next_up(double x) {
+    if (!(x < std::numeric_limits<double>::infinity())) return x;
+    if (x == 0.0) return std::numeric_limits<double>::denorm_min();
+    const auto bits = std::bit_cast<std::uint64_t>(x);
+    return std::bit_cast<double>(x > 0.0 ? bits + 1 : bits - 1);
+  }
+  static double next_down(double x) { return -next_up(-x); }
 
   double lo() const { return lo_; }
   double hi() const { return hi_; }
