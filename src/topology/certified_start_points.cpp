@@ -30,10 +30,12 @@ T determinant(const T (&m)[3][3], int size) {
 }
 
 // (H(x), det of J_H without column k): the tangent's x_k component vanishes (see the header).
-template <class T>
-void turning_residual(const Problem& P, int k, const T* x, T* g) {
-  using D = Gradient<T, kMaxSystemDimension>;
-  const int n = P.dim();
+// N = n derivatives exactly: the nested interval gradients' cost grows with N squared, and
+// kMaxSystemDimension where n = 2 did three times the work (docs/benchmarks.md, profiles).
+template <int N, class T>
+void turning_residual_n(const Problem& P, int k, const T* x, T* g) {
+  using D = Gradient<T, N>;
+  const int n = N;
   D xd[kMaxSystemDimension], h[kMaxSystemDimension - 1];
   for (int i = 0; i < n; ++i) xd[i] = D(x[i], i);
   P.residual(xd, h);
@@ -44,6 +46,15 @@ void turning_residual(const Problem& P, int k, const T* x, T* g) {
       if (c != k) minor[r][j++] = h[r].d[static_cast<std::size_t>(c)];
   }
   g[n - 1] = determinant(minor, n - 1);
+}
+
+template <class T>
+void turning_residual(const Problem& P, int k, const T* x, T* g) {
+  switch (P.dim()) {
+    case 2: return turning_residual_n<2>(P, k, x, g);
+    case 3: return turning_residual_n<3>(P, k, x, g);
+    default: return turning_residual_n<4>(P, k, x, g);
+  }
 }
 
 }  // namespace
