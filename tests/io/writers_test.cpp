@@ -50,6 +50,12 @@ TEST(Writers, JsonHasTheDocumentedKeys) {
   EXPECT_EQ(total, v["stats"]["points"].get<long>());
   EXPECT_TRUE(v["stats"].contains("time_ms"));
   EXPECT_TRUE(v["stats"].contains("rejected_steps"));
+  // The work per accepted point is the two surfaces' evaluation counts over the points.
+  const auto& e = v["stats"]["surface_evaluations"];
+  ASSERT_EQ(e.size(), 2u);
+  EXPECT_GT(e[0].get<long>(), 0);
+  EXPECT_DOUBLE_EQ(v["stats"]["evaluations_per_point"].get<double>(),
+                   static_cast<double>(e[0].get<long>() + e[1].get<long>()) / v["stats"]["points"].get<double>());
   const auto& o = j["intersections"][1]["curves"][0];
   EXPECT_FALSE(o["closed"].get<bool>());
   EXPECT_EQ(o["ends"]["start"]["reason"], "domain_edge");

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace ssimarch {
@@ -45,6 +46,36 @@ TEST(IntervalNumber, EnclosesTheRangeOfEachOperation) {
   // Outward rounding: 0.1 + 0.2 holds the real sum, which no double equals.
   IntervalNumber s = IntervalNumber(0.1) + IntervalNumber(0.2);
   EXPECT_LT(s.lo(), s.hi());
+}
+
+TEST(IntervalNumber, NextUpAndDownAgreeWithNextafter) {
+  const double inf = std::numeric_limits<double>::infinity();
+  for (double x : {1.0, -1.0, 0.1, -3e-310, 5e-324, -5e-324, 1e308, -1e308, std::numeric_limits<double>::max()}) {
+    EXPECT_EQ(IntervalNumber::next_up(x), std::nextafter(x, inf)) << x;
+    EXPECT_EQ(IntervalNumber::next_down(x), std::nextafter(x, -inf)) << x;
+  }
+  EXPECT_EQ(IntervalNumber::next_up(0.0), std::numeric_limits<double>::denorm_min());
+  EXPECT_EQ(IntervalNumber::next_down(-0.0), -std::numeric_limits<double>::denorm_min());
+  EXPECT_EQ(IntervalNumber::next_up(inf), inf);
+  EXPECT_EQ(IntervalNumber::next_up(-inf), -std::numeric_limits<double>::max());
+}
+
+TEST(IntervalNumber, IntegerPowersEncloseTheExactPower) {
+  // The exact power of the double, computed in long double (64-bit significand: x^n of a 53-bit
+  // x to within 2^-60 relative for these n), lies in the interval, which is a few ulps wide.
+  for (double x : {1.1, -1.1, 0.3, -0.7, 3.7e-20, 12345.678})
+    for (int n = 2; n <= 12; ++n) {
+      long double exact = 1;
+      for (int i = 0; i < n; ++i) exact *= static_cast<long double>(x);
+      const IntervalNumber p = pow(IntervalNumber(x), n);
+      EXPECT_LE(static_cast<long double>(p.lo()), exact) << x << "^" << n;
+      EXPECT_GE(static_cast<long double>(p.hi()), exact) << x << "^" << n;
+      EXPECT_LE(p.width(), 32 * std::abs(static_cast<double>(exact)) * std::numeric_limits<double>::epsilon()) << x << "^" << n;
+    }
+  // An interval across 0: the odd power keeps the sign, the even one starts at 0.
+  expect_encloses(pow(IntervalNumber(-1.5, 2.0), 3), -3.375, 8.0);
+  EXPECT_EQ(pow(IntervalNumber(-1.5, 2.0), 4).lo(), 0.0);
+  expect_encloses(pow(IntervalNumber(-1.5, 2.0), 4), 0.0, 16.0);
 }
 
 TEST(Krawczyk, CertifiesBothRootsOfCircleAndLineTo1e12) {
