@@ -55,18 +55,6 @@ IntervalNumber intersect(const IntervalNumber& a, const IntervalNumber& b, bool*
   return *empty ? a : IntervalNumber(lo, hi);
 }
 
-IntervalNumber operator/(const IntervalNumber& a, const IntervalNumber& b) {
-  if (b.contains_zero()) return IntervalNumber::entire();
-  const std::array<double, 4> p{a.lo() / b.lo(), a.lo() / b.hi(), a.hi() / b.lo(), a.hi() / b.hi()};
-  double lo = p[0], hi = p[0];
-  for (double x : p) {
-    if (std::isnan(x)) return IntervalNumber::entire();
-    lo = std::min(lo, x);
-    hi = std::max(hi, x);
-  }
-  return IntervalNumber::outward(lo, hi);
-}
-
 IntervalNumber sqrt(const IntervalNumber& a) {
   bool empty = false;
   IntervalNumber c = clip(a, 0.0, kInf, &empty);

@@ -89,7 +89,13 @@ class IntervalNumber {
     if (std::isnan(p0) || std::isnan(p1) || std::isnan(p2) || std::isnan(p3)) return entire();
     return outward(std::min(std::min(p0, p1), std::min(p2, p3)), std::max(std::max(p0, p1), std::max(p2, p3)));
   }
-  friend IntervalNumber operator/(const IntervalNumber& a, const IntervalNumber& b);
+  /// Inline like the product; a divisor that may vanish gives the entire line.
+  friend IntervalNumber operator/(const IntervalNumber& a, const IntervalNumber& b) {
+    if (b.contains_zero()) return entire();
+    const double p0 = a.lo_ / b.lo_, p1 = a.lo_ / b.hi_, p2 = a.hi_ / b.lo_, p3 = a.hi_ / b.hi_;
+    if (std::isnan(p0) || std::isnan(p1) || std::isnan(p2) || std::isnan(p3)) return entire();
+    return outward(std::min(std::min(p0, p1), std::min(p2, p3)), std::max(std::max(p0, p1), std::max(p2, p3)));
+  }
   friend IntervalNumber operator+(const IntervalNumber& a, double b) { return a + IntervalNumber(b); }
   friend IntervalNumber operator+(double a, const IntervalNumber& b) { return IntervalNumber(a) + b; }
   friend IntervalNumber operator-(const IntervalNumber& a, double b) { return a - IntervalNumber(b); }
