@@ -204,6 +204,7 @@ struct Collector {
 // grown by `factor` times its half-widths plus a floor of kSaddleFloor of the domain, clipped to
 // the bounds.
 constexpr double kSaddleFloor = 1e-6;
+constexpr long kSaddleFaceBoxes = 100;  // least box budget of each face system of a saddle box
 IntervalBox grown(const Problem& P, const IntervalBox& region, double factor) {
   IntervalBox out;
   for (std::size_t i = 0; i < region.size(); ++i) {
@@ -221,12 +222,16 @@ bool decide_by_saddle_boxes(const System& s, const RootSearchResult& r, const Ro
                             long* saddle_boxes) {
   const Problem& P = out->tracer.problem();
   if (P.dim() > 3) return false;  // saddle boxes need a reduction to two variables (saddle_box.hpp)
+  // The faces of a small box need few boxes; a tenth of the budget bounds what a box that fails
+  // (a face through a tangency) can cost, tried at three sizes per region.
+  RootSearchOptions faces = ro;
+  faces.max_boxes = std::max(kSaddleFaceBoxes, ro.max_boxes / 10);
   for (bool budget : {false, true})
     for (const IntervalBox& y : merge_touching(r.undecided, budget)) {
       const IntervalBox region = to_unknowns(s, y);
       bool decided = false;
       for (double factor : {2.0, 5.0, 20.0}) {
-        SaddleBoxResult b = decide_saddle_box(P, grown(P, region, factor), ro);
+        SaddleBoxResult b = decide_saddle_box(P, grown(P, region, factor), faces);
         out->search->boxes += b.boxes;
         if (!b.decided) continue;
         for (const VecX& x : b.crossings) out->add(x, false);
