@@ -43,9 +43,8 @@ TracedCurve trace_curve_through(const Tracer& tracer, const VecX& x0, TraceStats
 /// that reaches a loose end of a curve traced before (an open end that stopped away from the
 /// boundary and from located singular points) stops there and continues that curve (closing it
 /// when it reaches both of its loose ends): one branch is one curve.
-/// Start points are taken in the lexicographic order of their 3D points and each curve starts
-/// along the tangent whose largest component is positive, so that the curves do not depend on
-/// the order of the two surfaces. Every march is bounded by max_length and by the run-away bound
+/// Each curve starts along the tangent whose largest component is positive, so that its
+/// direction does not depend on the order of the two surfaces. Every march is bounded by max_length and by the run-away bound
 /// branch_length_bound(problem, kResolutionFraction spacing); an end stopped by the latter says
 /// so in its message (Termination::kMaxLength) and is a failure of the curve network.
 TraceResult trace_all(const Tracer& tracer, const std::vector<Vec3>& starts = {}, const TraceAllOptions& options = {});
