@@ -70,9 +70,13 @@ RotationIndex rotation_index(const Problem& P, const TracedCurve& c, const std::
   for (std::size_t k = 0; k < chords.size(); ++k) {
     const auto& [a, at] = chords[k];
     const Vec2& b = chords[(k + 1) % chords.size()].first;
-    const double theta = signed_angle(a, b);
+    double theta = signed_angle(a, b);
     const std::size_t vertex = at % (q.size() - 1);
     const bool at_corner = vertex < corner.size() && corner[vertex];
+    // A reversal at a singular point (a cusp) is the exterior angle pi of Def. 2, whose range
+    // (-pi, pi] takes the reversal as +pi; the polygon's chords give +-pi by which side they
+    // approach from, which is rounding, not geometry.
+    if (std::abs(theta) > kRotationMaxChordTurn && at_corner) theta = M_PI;
     if (std::abs(theta) > kRotationMaxChordTurn && !at_corner) {
       r.note = "the curve folds in the " + r.plane + " plane near point " + std::to_string(at) +
                " (its tangent there has no direction in the plane)";
