@@ -11,6 +11,7 @@
 
 #include "ssimarch/io/scene.hpp"
 #include "ssimarch/pipeline/trace_job.hpp"
+#include "ssimarch/topology/branch_length_bound.hpp"
 #include "ssimarch/topology/curve_network.hpp"
 #include "ssimarch/topology/rotation_index.hpp"
 
@@ -190,6 +191,29 @@ TEST(CurveNetwork, ParamsOfBothSurfaces) {
       EXPECT_NEAR((Vec3(a.x, a.y, a.z) - q.p).norm(), 0, tol);
       EXPECT_NEAR((Vec3(b.x, b.y, b.z) - q.p).norm(), 0, tol);
     }
+}
+
+// The run-away bound on closed forms: a flat square patch of area 4 (the grid is exact on a
+// plane): 2 A / r + D; implicit spheres in the box [-1, 1]^3: 4 V / (pi r^2) + D with the box
+// grown by r.
+TEST(BranchLengthBound, ClosedForms) {
+  const Scene scene = parse_scene(R"({"surfaces": {
+      "square": {"parametric": ["u", "v", "0"], "u": [0, 2], "v": [0, 2]},
+      "ball": {"sphere": {"center": [1, 1, 0], "radius": 0.5}},
+      "ball2": {"sphere": {"center": [0, 0, 0], "radius": 1}},
+      "ball3": {"sphere": {"center": [0, 0, 0.5], "radius": 1}}},
+    "intersections": [{"name": "a", "surfaces": ["square", "ball"]},
+                      {"name": "b", "surfaces": ["ball2", "ball3"]}]})",
+                                  "bound test");
+  const double r = 0.1;
+  const Problem a = scene.problem(scene.intersections[0]);
+  EXPECT_NEAR(branch_length_bound(a, r), 2 * 4 / r + a.scale(), 1e-9);
+  const Problem b = scene.problem(scene.intersections[1]);
+  ASSERT_EQ(b.kind(), PairKind::kImplicitImplicit);
+  double volume = 1;
+  for (const Interval& i : b.bounds()) volume *= i.width() + r;
+  EXPECT_NEAR(branch_length_bound(b, r), 4 * volume / (M_PI * r * r) + b.scale(), 1e-6);
+  EXPECT_GT(volume, 1.0);  // the box of the two balls, not empty
 }
 
 // An open curve that stops inside the domain is a failure, with its curve and end named.
