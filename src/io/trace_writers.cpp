@@ -5,6 +5,7 @@
 #include <iomanip>
 
 #include "ssimarch/io/singular_json.hpp"
+#include "ssimarch/io/topology_json.hpp"
 namespace ssimarch {
 
 using nlohmann::json;
@@ -80,7 +81,11 @@ json to_json(const IntersectionRun& run) {
     json ends = c.closed ? json{{"start", end_json(Termination::kClosedLoop, "closed loop")},
                                 {"end", end_json(Termination::kClosedLoop, "closed loop")}}
                          : json{{"start", end_json(c.start_end, c.start_message)}, {"end", end_json(c.end_end, c.end_message)}};
+    const auto& b = run.network.branches;
+    const NetworkBranch* branch = ci < b.size() && b[ci].curve == static_cast<int>(ci) ? &b[ci] : nullptr;
+    const json index = branch && branch->rotation.index ? json(*branch->rotation.index) : json(nullptr);
     curves.push_back(json{{"closed", c.closed}, {"length", c.length}, {"num_points", c.points.size()}, {"ends", ends},
+                          {"rotation_index", index},
                           {"points", std::move(points)}});
   }
   json names = json::array();
@@ -100,6 +105,7 @@ json to_json(const IntersectionRun& run) {
               {"curves", std::move(curves)},
               {"singular_points", singular_points_to_json(run.result.singular_points)},
               {"isolated_points", singular_points_to_json(run.result.isolated_points)},
+              {"topology", curve_network_to_json(run.network)},
               {"stats", stats_to_json(run.result.stats)},
               {"certified", run.result.start_search.certified},
               {"start_points", start_search_to_json(run.result.start_search)},

@@ -14,7 +14,7 @@ bool TraceJobResult::complete() const {
                         // No curve is a result when the start-point search proved there is none
                         // (issue 11 item 6); otherwise an empty trace is incomplete.
                         const bool proven_empty = r.result.curves.empty() && r.result.start_search.certified;
-                        return (r.result.curves.empty() && !proven_empty) || r.result.failed_starts > 0;
+                        return (r.result.curves.empty() && !proven_empty) || r.result.failed_starts > 0 || !r.network.complete();
                       });
 }
 
@@ -38,8 +38,12 @@ std::vector<IntersectionSpec> select_intersections(const Scene& scene, const Tra
 }
 
 IntersectionRun run_intersection(const Scene& scene, const IntersectionSpec& spec) {
-  IntersectionRun run{spec, scene.problem(spec), {}, {}};
+  IntersectionRun run{spec, scene.problem(spec), {}, {}, {}};
   run.result = trace_all(run.problem, spec.options.trace, spec.starts);
+  run.network = build_curve_network(run.problem, run.result);
+  for (const NetworkFailure& f : run.network.failures)
+    run.result.warnings.push_back("curve " + std::to_string(f.curve) + " " + f.end + " stops away from the domain boundary (" +
+                                  f.reason + "): " + f.message);
   if (spec.options.geometry)
     for (const TracedCurve& c : run.result.curves)
       run.geometry.push_back(geometry_along_curve(run.problem, c, *spec.options.geometry));

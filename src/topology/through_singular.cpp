@@ -1,6 +1,7 @@
 #include "ssimarch/topology/through_singular.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace ssimarch {
 
@@ -34,11 +35,29 @@ bool locate_near(const Tracer& tracer, const CurvePoint& last, const Event& even
   return loc->status == LocateStatus::kConverged && P.inside(loc->x, 1e-9) && (loc->point - last.p).norm() <= reach;
 }
 
+// Whether the curve's start lies on the stretch from the last accepted point to the singular point
+// where the march stopped: the tracer tests closure on accepted chords only, and the step that
+// would have crossed the singular point was not accepted. A start placed next to a singular
+// point (regular_start moves starts half a step off them) is passed there on the way back. The
+// allowance is the chord's sagitta bound for the turning of the tangent over it, and the
+// tangents must agree (the other half-branch at a cusp runs the opposite way).
+bool closes_before(const CurvePoint& start, const CurvePoint& last, const Vec3& s, double tol) {
+  const Vec3 seg = s - last.p;
+  const double L2 = seg.squaredNorm();
+  if (!(L2 > 0)) return false;
+  const double tau = (start.p - last.p).dot(seg) / L2;
+  if (!(tau >= 0 && tau <= 1)) return false;
+  const double turn = std::acos(std::clamp(last.t.dot(seg.normalized()), -1.0, 1.0));
+  const double allowance = 0.5 * std::sqrt(L2) * std::sin(std::min(turn, M_PI / 2)) + tol;
+  return (start.p - (last.p + tau * seg)).norm() <= allowance && start.t.dot(last.t) > 0.5;
+}
+
 }  // namespace
 
 BranchMarch march_branch(const Tracer& tracer, const CurvePoint& start, const CurvePoint* close_at,
-                         SingularRegistry* registry, int curve, TraceStats* stats, int from_node, int from_half) {
-  const MarchLimits base = tracer.limits();
+                         SingularRegistry* registry, int curve, TraceStats* stats, int from_node, int from_half,
+                         const MarchLimits* base_limits) {
+  const MarchLimits base = base_limits ? *base_limits : tracer.limits();
   BranchMarch out;
   out.points.push_back(start);
   CurvePoint from = start;
@@ -67,6 +86,14 @@ BranchMarch march_branch(const Tracer& tracer, const CurvePoint& start, const Cu
     }
     near_miss = false;
     trim_beyond(loc.point, begin, &out);
+    if (close_at && closes_before(*close_at, out.points.back(), loc.point, 1e-9 * std::max(1.0, tracer.problem().scale()))) {
+      const CurvePoint& last = out.points.back();
+      out.length += arc_length_estimate(last.p, last.t, close_at->p, close_at->t);
+      out.points.push_back(*close_at);
+      out.closed = true;
+      out.event = stop(EventKind::kClosed, "closed at its start, passed just before a singular point");
+      return out;
+    }
     const int n = registry->add(loc);
     const CurvePoint last = out.points.back();
     const int in = registry->arriving_half_branch(n, last);
@@ -94,6 +121,13 @@ BranchMarch march_branch(const Tracer& tracer, const CurvePoint& start, const Cu
     registry->mark(n, k, curve);
     const HalfBranch& b = node.branches[static_cast<std::size_t>(k)];
     from = CurvePoint{b.exit_x, b.exit_point, b.direction};
+    if (close_at && closes_before(*close_at, CurvePoint{loc.x, loc.point, b.tangent_3d}, from.p, 1e-9 * std::max(1.0, tracer.problem().scale()))) {
+      out.length += arc_length_estimate(loc.point, b.tangent_3d, close_at->p, close_at->t);
+      out.points.push_back(*close_at);
+      out.closed = true;
+      out.event = stop(EventKind::kClosed, "closed at its start, just after the " + what);
+      return out;
+    }
     out.length += arc_length_estimate(loc.point, b.tangent_3d, from.p, from.t);
     out.points.push_back(from);
   }

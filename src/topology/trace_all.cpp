@@ -1,9 +1,13 @@
 #include "ssimarch/topology/trace_all.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <limits>
 
 #include "ssimarch/march/predictor.hpp"
 #include "ssimarch/problem/curve_jet.hpp"
+#include "ssimarch/topology/branch_length_bound.hpp"
 #include "ssimarch/topology/certified_start_points.hpp"
 #include "ssimarch/singular/detection.hpp"
 #include "ssimarch/topology/start_points.hpp"
@@ -13,33 +17,53 @@ namespace ssimarch {
 
 namespace {
 
-// The curve of the backward part (points reversed, tangents turned) followed by the forward part
-// from its second point on: both parts start at the same point.
-void join(const BranchMarch& backward, const BranchMarch& forward, TracedCurve* curve) {
-  for (auto it = backward.points.rbegin(); it != backward.points.rend(); ++it)
-    curve->points.push_back({it->x, it->p, -it->t});
-  curve->points.insert(curve->points.end(), forward.points.begin() + 1, forward.points.end());
-  curve->length = forward.length + backward.length;
-  curve->start_end = to_termination(backward.event);
-  curve->start_message = backward.event.message;
-}
-
-// The curve through the seed start, followed through the singular points it meets.
-TracedCurve trace_branch_through(const Tracer& tracer, const CurvePoint& start, SingularRegistry* registry, int index,
-                                 TraceStats* stats) {
+// The one place where marches become a curve: the backward half (if any; points reversed,
+// tangents turned) followed by the forward half, which starts at the backward half's first
+// point (its own first point is then dropped); a forward half that closed is the whole curve.
+TracedCurve join(const BranchMarch* backward, BranchMarch forward) {
   TracedCurve curve;
-  BranchMarch forward = march_branch(tracer, start, &start, registry, index, stats);
-  if (forward.closed) {
-    curve.points = std::move(forward.points);
-    curve.closed = true;
-    curve.length = forward.length;
-  } else {
-    const CurvePoint back{start.x, start.p, -start.t};
-    join(march_branch(tracer, back, nullptr, registry, index, stats), forward, &curve);
+  if (backward) {
+    for (auto it = backward->points.rbegin(); it != backward->points.rend(); ++it)
+      curve.points.push_back({it->x, it->p, -it->t});
+    curve.length = backward->length;
+    curve.start_end = to_termination(backward->event);
+    curve.start_message = backward->event.message;
   }
+  curve.points.insert(curve.points.end(), forward.points.begin() + (backward ? 1 : 0), forward.points.end());
+  curve.length += forward.length;
+  curve.closed = forward.closed;
   curve.end_end = to_termination(forward.event);
   curve.end_message = forward.event.message;
   return curve;
+}
+
+// One march from `start` along its tangent until an event: through the singular points it meets
+// with a registry (march_branch), else the plain tracer, which stops next to them. `close_at`:
+// the point whose return closes the curve (null: no closure test).
+BranchMarch march_half(const Tracer& tracer, const CurvePoint& start, const CurvePoint* close_at,
+                       SingularRegistry* registry, int index, TraceStats* stats, const MarchLimits& base) {
+  if (registry) return march_branch(tracer, start, close_at, registry, index, stats, -1, -1, &base);
+  MarchLimits limits = base;
+  limits.detect_closure = close_at != nullptr;
+  limits.close_at = close_at;
+  MarchResult r = tracer.march_until_event(start, Direction::kForward, limits, stats);
+  BranchMarch m;
+  m.points = std::move(r.points);
+  m.length = r.length;
+  m.closed = r.event.kind == EventKind::kClosed;
+  m.event = std::move(r.event);
+  return m;
+}
+
+// The curve through the regular point `start`: forward until it closes or stops, then, unless
+// it closed, backward from the start.
+TracedCurve trace_branch_through(const Tracer& tracer, const CurvePoint& start, SingularRegistry* registry, int index,
+                                 TraceStats* stats, const MarchLimits& base) {
+  BranchMarch forward = march_half(tracer, start, &start, registry, index, stats, base);
+  if (forward.closed) return join(nullptr, std::move(forward));
+  const CurvePoint back{start.x, start.p, -start.t};
+  const BranchMarch backward = march_half(tracer, back, nullptr, registry, index, stats, base);
+  return join(&backward, std::move(forward));
 }
 
 // The curve leaving node n along its unused half-branch k, and, unless it closes, the same branch
@@ -63,27 +87,30 @@ TracedCurve trace_from_half_branch(const Tracer& tracer, SingularRegistry* regis
     return m;
   };
   registry->mark(n, k, index);
-  TracedCurve curve;
   BranchMarch forward = from_node(k);
   const int c = registry->node(n).branches[static_cast<std::size_t>(k)].continuation;
-  if (forward.closed) {
-    curve.points = std::move(forward.points);
-    curve.closed = true;
-    curve.length = forward.length;
-  } else if (c >= 0 && !registry->node(n).used[static_cast<std::size_t>(c)] &&
-             registry->node(n).branches[static_cast<std::size_t>(c)].exit_ok) {
+  if (forward.closed) return join(nullptr, std::move(forward));
+  if (c >= 0 && !registry->node(n).used[static_cast<std::size_t>(c)] &&
+      registry->node(n).branches[static_cast<std::size_t>(c)].exit_ok) {
     registry->mark(n, c, index);
-    join(from_node(c), forward, &curve);
-  } else {
-    curve.points = std::move(forward.points);
-    curve.length = forward.length;
-    curve.start_end = Termination::kSingularPoint;
-    curve.start_message = "starts at the " + std::string(to_string(registry->node(n).kind.type)) + " at " +
-                          describe_point(registry->node(n).location.point);
+    const BranchMarch backward = from_node(c);
+    return join(&backward, std::move(forward));
   }
-  curve.end_end = to_termination(forward.event);
-  curve.end_message = forward.event.message;
+  TracedCurve curve = join(nullptr, std::move(forward));
+  curve.start_end = Termination::kSingularPoint;
+  curve.start_message = "starts at the " + std::string(to_string(registry->node(n).kind.type)) + " at " +
+                        describe_point(registry->node(n).location.point);
   return curve;
+}
+
+// The start tangent's orientation fixed by the curve alone: its largest component positive (the
+// sign of the jet's tangent follows the order of the equations, which swapping the surfaces
+// changes; issue 11 item 4).
+Vec3 canonical_direction(const Vec3& t) {
+  int k = 0;
+  for (int i = 1; i < 3; ++i)
+    if (std::abs(t[i]) > std::abs(t[k]) + 1e-12) k = i;
+  return t[k] < 0 ? Vec3(-t) : t;
 }
 
 // Isolated singular points (no real branch through them), hunted over the domain for
@@ -110,13 +137,13 @@ std::vector<SingularPointReport> isolated_points(const Problem& P, const Singula
 }  // namespace
 
 TracedCurve trace_curve_through(const Tracer& tracer, const VecX& x0, TraceStats* stats, SingularRegistry* registry,
-                                int index) {
+                                int index, const std::vector<TracedCurve>* join_at, double join_radius) {
   const Problem& P = tracer.problem();
   TracedCurve curve;
   DynamicCurveJet j = curve_jet_dynamic(P, x0, 1);
   ++stats->jet_evaluations;
   stats->add_surface_evaluations(jet_evaluation_cost(P, 1));
-  CurvePoint start{x0, P.point(x0), j.tangent()};
+  CurvePoint start{x0, P.point(x0), canonical_direction(j.tangent())};
   if (j.status != CurveJetStatus::kOk) {
     curve.points.push_back(start);
     curve.start_end = curve.end_end = Termination::kSingularPoint;
@@ -125,53 +152,178 @@ TracedCurve trace_curve_through(const Tracer& tracer, const VecX& x0, TraceStats
   }
   ++stats->points;
   stats->record_iterations(1);
-  if (registry) {
-    curve = trace_branch_through(tracer, start, registry, index, stats);
-    for (auto& p : curve.points) p.x = P.wrap(p.x);
-    return curve;
-  }
-  MarchResult forward = tracer.march_until_event(start, Direction::kForward, tracer.limits(), stats);
-  if (forward.event.kind == EventKind::kClosed) {
-    curve.points = std::move(forward.points);
-    curve.closed = true;
-    curve.length = forward.length;
-  } else {
-    MarchLimits open = tracer.limits();
-    open.detect_closure = false;
-    MarchResult backward = tracer.march_until_event(start, Direction::kBackward, open, stats);
-    for (auto it = backward.points.rbegin(); it != backward.points.rend(); ++it)
-      curve.points.push_back({it->x, it->p, -it->t});
-    curve.points.insert(curve.points.end(), forward.points.begin() + 1, forward.points.end());
-    curve.length = forward.length + backward.length;
-    curve.start_end = to_termination(backward.event);
-    curve.start_message = backward.event.message;
-  }
-  curve.end_end = to_termination(forward.event);
-  curve.end_message = forward.event.message;
+  MarchLimits base = tracer.limits();
+  base.traced = join_at;
+  base.traced_radius = join_radius;
+  curve = trace_branch_through(tracer, start, registry, index, stats, base);
   for (auto& p : curve.points) p.x = P.wrap(p.x);
   return curve;
 }
 
-TraceResult trace_all(const Tracer& tracer, const std::vector<Vec3>& starts, const TraceAllOptions& options) {
+namespace {
+
+// The tracer's options with max_length no more than the run-away bound (branch_length_bound.hpp);
+// *bound: that bound when it is the binding one, else 0.
+TraceOptions bounded_options(const Tracer& tracer, double* bound) {
+  TraceOptions o = tracer.options();
+  const double b = branch_length_bound(tracer.problem(), kResolutionFraction * tracer.spacing());
+  *bound = b < o.max_length ? b : 0;
+  o.max_length = std::min(o.max_length, b);
+  return o;
+}
+
+// A curve end stopped by the run-away bound says so (it is a failure, not a result).
+void explain_bound(double bound, TracedCurve* c) {
+  if (bound <= 0) return;
+  const std::string why = "reached the run-away bound: " + std::to_string(bound) +
+                          " model units, the longest branch the domain holds at the tracer's resolution (docs/topology.md)";
+  if (c->start_end == Termination::kMaxLength) c->start_message = why;
+  if (c->end_end == Termination::kMaxLength) c->end_message = why;
+}
+
+// An unfinished end of a traced curve: an open end that stopped away from the boundary and from
+// located singular points (no step could be taken, or stuck next to a suspected singular point).
+// A later trace that reaches it is the same branch: it stops there and continues that curve.
+struct LooseEnd {
+  int curve;
+  bool at_start;
+};
+
+std::vector<LooseEnd> loose_ends(const std::vector<TracedCurve>& curves, const SingularRegistry& registry, double tol) {
+  std::vector<LooseEnd> out;
+  auto at_node = [&](const Vec3& p) {
+    for (const SingularNode& n : registry.nodes())
+      if ((n.location.point - p).norm() <= tol) return true;
+    return false;
+  };
+  auto loose = [](Termination t) { return t == Termination::kStepUnderflow || t == Termination::kSingularPoint; };
+  for (std::size_t i = 0; i < curves.size(); ++i) {
+    const TracedCurve& c = curves[i];
+    if (c.closed || c.points.size() < 2) continue;
+    if (loose(c.start_end) && !at_node(c.points.front().p)) out.push_back({static_cast<int>(i), true});
+    if (loose(c.end_end) && !at_node(c.points.back().p)) out.push_back({static_cast<int>(i), false});
+  }
+  return out;
+}
+
+// The last segment of each loose end, as curves for MarchLimits::traced.
+std::vector<TracedCurve> stubs(const std::vector<TracedCurve>& curves, const std::vector<LooseEnd>& ends) {
+  std::vector<TracedCurve> out;
+  for (const LooseEnd& e : ends) {
+    const auto& pts = curves[static_cast<std::size_t>(e.curve)].points;
+    TracedCurve s;
+    s.points = e.at_start ? std::vector<CurvePoint>{pts[0], pts[1]} : std::vector<CurvePoint>{pts[pts.size() - 2], pts.back()};
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+// The curve run the other way: points reversed, tangents turned, ends swapped.
+TracedCurve reversed(TracedCurve c) {
+  std::reverse(c.points.begin(), c.points.end());
+  for (CurvePoint& p : c.points) p.t = -p.t;
+  std::swap(c.start_end, c.end_end);
+  std::swap(c.start_message, c.end_message);
+  return c;
+}
+
+// Curve b continues curve *a at a's end (or start): b is oriented to run on from there and the
+// two are joined by the segment between their touching points (shorter than the join radius).
+void continue_curve(TracedCurve* a, bool at_a_start, TracedCurve b, bool b_touches_at_start) {
+  if (at_a_start) {
+    *a = reversed(std::move(*a));
+    continue_curve(a, false, std::move(b), b_touches_at_start);
+    *a = reversed(std::move(*a));
+    return;
+  }
+  if (!b_touches_at_start) b = reversed(std::move(b));
+  const CurvePoint& last = a->points.back();
+  a->length += arc_length_estimate(last.p, last.t, b.points.front().p, b.points.front().t) + b.length;
+  a->points.insert(a->points.end(), b.points.begin(), b.points.end());
+  a->end_end = b.end_end;
+  a->end_message = b.end_message;
+}
+
+// The loose end nearest p.
+const LooseEnd& nearest(const std::vector<TracedCurve>& curves, const std::vector<LooseEnd>& ends, const Vec3& p) {
+  std::size_t best = 0;
+  double d = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < ends.size(); ++i) {
+    const auto& pts = curves[static_cast<std::size_t>(ends[i].curve)].points;
+    const double di = ((ends[i].at_start ? pts.front().p : pts.back().p) - p).norm();
+    if (di < d) d = di, best = i;
+  }
+  return ends[best];
+}
+
+// Adds the traced curve c to *curves, or, when one of its ends reached a loose end, continues
+// that curve with it (closing it when c's other end reached the curve's other loose end).
+// Curve indices recorded at singular nodes follow c into the curve it joined.
+void add_or_join(TracedCurve c, const std::vector<LooseEnd>& ends, std::vector<TracedCurve>* curves, SingularRegistry* registry) {
+  const bool at_start = c.start_end == Termination::kReachedTracedCurve;
+  if (ends.empty() || (!at_start && c.end_end != Termination::kReachedTracedCurve)) {
+    curves->push_back(std::move(c));
+    return;
+  }
+  const LooseEnd e = nearest(*curves, ends, at_start ? c.points.front().p : c.points.back().p);
+  const bool other_reached = (at_start ? c.end_end : c.start_end) == Termination::kReachedTracedCurve;
+  const Vec3 other = at_start ? c.points.back().p : c.points.front().p;
+  TracedCurve& a = (*curves)[static_cast<std::size_t>(e.curve)];
+  continue_curve(&a, e.at_start, std::move(c), at_start);
+  if (other_reached) {
+    const LooseEnd f = nearest(*curves, ends, other);
+    if (f.curve == e.curve && f.at_start != e.at_start) {  // both ends of one curve: a loop
+      a.length += arc_length_estimate(a.points.back().p, a.points.back().t, a.points.front().p, a.points.front().t);
+      a.points.push_back(a.points.front());
+      a.closed = true;
+    }
+  }
+  const int added = static_cast<int>(curves->size());
+  for (std::size_t n = 0; registry && n < registry->nodes().size(); ++n) {
+    std::vector<int>& on = registry->node(static_cast<int>(n)).curves;
+    std::replace(on.begin(), on.end(), added, e.curve);
+    std::sort(on.begin(), on.end());
+    on.erase(std::unique(on.begin(), on.end()), on.end());
+  }
+}
+
+}  // namespace
+
+TraceResult trace_all(const Tracer& unbounded, const std::vector<Vec3>& starts, const TraceAllOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
-  const Problem& P = tracer.problem();
+  const Problem& P = unbounded.problem();
   TraceResult result;
-  if (tracer.problem().disjoint()) {  // no intersection is a result (issue 11 item 6)
+  if (P.disjoint()) {  // no intersection is a result (issue 11 item 6)
     result.start_search = {"box", true, 0, 0, {}, "no intersection: the boxes of the two implicit surfaces do not overlap"};
     result.warnings.push_back(result.start_search.note);
     return result;
   }
+  double bound = 0;
+  const Tracer tracer(P, bounded_options(unbounded, &bound));
   if (!starts.empty()) result.start_search.method = "given";
   std::vector<VecX> seeds = starts.empty() ? automatic_start_points(tracer, &result.stats, &result.start_search)
                                            : start_points_near(tracer, starts, &result.stats, &result.warnings,
                                                                &result.failed_starts);
   SingularRegistry registry(P, 1e-7 * std::max(1.0, P.scale()));
+  const double registry_tol = 1e-9 * std::max(1.0, P.scale());  // a curve point on a located node
   SingularRegistry* reg = options.through_singular_points ? &registry : nullptr;
-  const double radius = 0.2 * tracer.spacing();
+  const double radius = kResolutionFraction * tracer.spacing();
+  // Regular start points first: a start that had to be moved off a singular point lies within a
+  // step of it, where closing the loop again is delicate (thesis ch. 6: start away from singular
+  // points); such starts are usually on curves traced by then and skipped.
+  std::vector<VecX> starts_regular, starts_moved;
   for (const VecX& seed : seeds) {
-    const VecX x = regular_start(tracer, seed, &result.warnings);
+    VecX x = regular_start(tracer, seed, &result.warnings);
+    ((x - seed).norm() == 0 ? starts_regular : starts_moved).push_back(std::move(x));
+  }
+  starts_regular.insert(starts_regular.end(), starts_moved.begin(), starts_moved.end());
+  for (const VecX& x : starts_regular) {
     if (near_traced_curve(P.point(x), result.curves, radius)) continue;
-    result.curves.push_back(trace_curve_through(tracer, x, &result.stats, reg, static_cast<int>(result.curves.size())));
+    const std::vector<LooseEnd> ends = loose_ends(result.curves, registry, registry_tol);
+    const std::vector<TracedCurve> stub = stubs(result.curves, ends);
+    TracedCurve c = trace_curve_through(tracer, x, &result.stats, reg, static_cast<int>(result.curves.size()),
+                                        ends.empty() ? nullptr : &stub, radius);
+    add_or_join(std::move(c), ends, &result.curves, reg);
   }
   // Every half-branch leaving a singular point is traced once (nodes may be added meanwhile).
   for (std::size_t n = 0; reg && n < registry.nodes().size(); ++n)
@@ -182,6 +334,7 @@ TraceResult trace_all(const Tracer& tracer, const std::vector<Vec3>& starts, con
       for (auto& p : c.points) p.x = P.wrap(p.x);
       result.curves.push_back(std::move(c));
     }
+  for (TracedCurve& c : result.curves) explain_bound(bound, &c);
   if (reg) {
     result.singular_points = registry.reports();
     if (options.hunt_isolated_points) result.isolated_points = isolated_points(P, registry);

@@ -10,6 +10,7 @@
 #include "ssimarch/geometry/curve_geometry.hpp"
 #include "ssimarch/march/result.hpp"
 #include "ssimarch/pipeline/scene.hpp"
+#include "ssimarch/topology/curve_network.hpp"
 
 namespace ssimarch {
 
@@ -18,6 +19,7 @@ struct IntersectionRun {
   IntersectionSpec spec;  // as traced (overrides applied)
   Problem problem;        // refers to the scene's surfaces: the Scene must outlive the run
   TraceResult result;
+  CurveNetwork network;  // vertices, edges, branches, components of result (docs/topology.md)
   /// With the "geometry" option: geometry[c][i] is the differential geometry at
   /// result.curves[c].points[i]; empty without it.
   std::vector<std::vector<CurveGeometry>> geometry;
@@ -38,7 +40,8 @@ struct TraceRequest {
 
 struct TraceJobResult {
   std::vector<IntersectionRun> runs;
-  /// False when an intersection found no curve or a given start point could not be put on it.
+  /// False when an intersection found no curve, a given start point could not be put on it, or
+  /// its curve network has a failure (an open curve ending away from the domain boundary).
   bool complete() const;
 };
 

@@ -24,8 +24,10 @@ struct BranchMarch {
 /// singular point passed through. `from_node` / `from_half`: the branch left that node along
 /// that half-branch (start is then its exit point), and arriving back through its continuation
 /// closes the curve. `close_at`: the point whose return closes the curve (null: no closure test
-/// against a point). `curve`: the index the curve will have (recorded at each node).
+/// against a point). `curve`: the index the curve will have (recorded at each node). `base`: the
+/// limits of every march (null: tracer.limits()), e.g. traced curves to stop at.
 BranchMarch march_branch(const Tracer& tracer, const CurvePoint& start, const CurvePoint* close_at,
-                         SingularRegistry* registry, int curve, TraceStats* stats, int from_node = -1, int from_half = -1);
+                         SingularRegistry* registry, int curve, TraceStats* stats, int from_node = -1, int from_half = -1,
+                         const MarchLimits* base = nullptr);
 
 }  // namespace ssimarch
