@@ -38,12 +38,31 @@ std::vector<IntersectionSpec> select_intersections(const Scene& scene, const Tra
 }
 
 IntersectionRun run_intersection(const Scene& scene, const IntersectionSpec& spec) {
-  IntersectionRun run{spec, scene.problem(spec), {}, {}};
+  IntersectionRun run{spec, scene.problem(spec), {}, {}, {}};
   run.result = trace_all(run.problem, spec.options.trace, spec.starts);
   if (spec.options.geometry)
     for (const TracedCurve& c : run.result.curves)
       run.geometry.push_back(geometry_along_curve(run.problem, c, *spec.options.geometry));
+  if (spec.options.bspline)
+    for (const TracedCurve& c : run.result.curves) run.splines.push_back(spline_of_curve(run.problem, c, spec.options.spline));
   return run;
+}
+
+std::optional<CurveSpline> spline_of_curve(const Problem& problem, const TracedCurve& curve, const CurveSplineOptions& options) {
+  std::vector<VecX> x;
+  std::vector<Vec3> t;
+  // A closed curve's last point is its first (march/result.hpp): it is added back below.
+  const std::size_t m = curve.closed && curve.points.size() > 1 ? curve.points.size() - 1 : curve.points.size();
+  for (std::size_t i = 0; i < m; ++i) {
+    x.push_back(curve.points[i].x);
+    t.push_back(curve.points[i].t);
+  }
+  if (curve.closed && x.size() > 1) {
+    x.push_back(curve.points.front().x);
+    t.push_back(curve.points.front().t);
+  }
+  if (x.size() < 2) return std::nullopt;
+  return fit_curve_spline(problem, x, t, curve.closed, options);
 }
 
 TraceJobResult trace_scene(const Scene& scene, const TraceRequest& request) {
