@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "ssimarch/problem/curve_jet.hpp"
+#include "ssimarch/problem/gauss_newton.hpp"
 #include "ssimarch/surface/derivatives.hpp"
 
 namespace ssimarch {
@@ -87,8 +88,9 @@ std::optional<VecX> project_in_normal_plane(const Problem& problem, VecX x, cons
     const VecX dx = J.partialPivLu().solve(-F);
     if (!dx.allFinite()) return std::nullopt;
     x = problem.wrap(x + dx);
-    if (dx.norm() <= 1e-15 * (1 + x.norm()) || (it >= 2 && dx.norm() <= 1e-13 * scale)) break;
-    if (it == 15) return std::nullopt;
+    // Converged when the update moves the 3D point by rounding only (the unknowns themselves may
+    // move more where the parameterisation is slow, e.g. a rational one near its range's end).
+    if ((L.point_jacobian * dx).norm() <= 1e-14 * scale) break;
   }
   const Linearization L = problem.linearize(x);
   if (!(L.distance <= 1e-11 * scale)) return std::nullopt;
@@ -111,7 +113,14 @@ struct Fit {
     const VecX y = q.at(u);
     const Vec3 P = y.head<3>();
     const VecX X = y.tail(n);
-    const std::optional<VecX> x = project_in_normal_plane(problem, problem.wrap(X), P, q.derivative(u).head<3>().normalized());
+    const Vec3 T = q.derivative(u).head<3>().normalized();
+    std::optional<VecX> x = project_in_normal_plane(problem, problem.wrap(X), P, T);
+    if (!x) {
+      // Far from the curve in the unknowns (a parameterisation with a large speed, e.g. a rational
+      // one near the end of its range): start from the curve point Gauss-Newton finds instead.
+      const CorrectorResult g = gauss_newton(problem, problem.wrap(X), CorrectorOptions{1e-13 * problem.scale(), 30});
+      if (g.status == CorrectorStatus::kConverged) x = project_in_normal_plane(problem, g.x, P, T);
+    }
     if (!x) return kInf;
     *on_curve = X + problem.difference(problem.wrap(X), *x);  // unwrapped like X
     const Vec3 c = problem.point(*x);
