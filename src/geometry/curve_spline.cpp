@@ -23,7 +23,15 @@ struct Node {
   HermiteEnd end;     // order 2 at a regular point: y, dy/ds, d2y/ds2 from the exact curve jet
   bool regular = true;
   VecX x;             // the unknowns, wrapped (for evaluating the problem)
+  // At a singular point: the half-branch tangents (unit, pointing away) with their dx/ds.
+  std::vector<std::pair<Vec3, VecX>> branches;
 };
+
+// A one-sided tangent is used only when the chord to the piece's other end lies within this
+// angle of it (cosine): a chord of length h turns from the tangent by about kappa h / 2, while a
+// tangent of another half-branch (a node, a rose's petals) makes a finite angle with it. Beyond,
+// the piece keeps only the position at the singular point (docs/math/curve_spline.md §1).
+constexpr double kOneSidedTangentCosine = 0.9;
 
 // dx/ds for the 3D unit direction d at x: least squares of [J_H; D] x' = [0; d], where D is the
 // point's Jacobian; at a singular point of the curve J_H drops rank but [J_H; D] does not while
@@ -64,12 +72,26 @@ Node make_node(const Problem& problem, const VecX& x, const Vec3& hint) {
 }
 
 // The end data of `node` for a piece leaving it towards `other` (leaving = true) or arriving
-// from it: at a singular point the tangent points along the piece (a cusp reverses it).
+// from it. At a singular point: the half-branch (or, without them, the tangent line) closest to
+// the chord, oriented along the piece (a cusp reverses it); none when the chord is far from all.
 HermiteEnd side(const Node& node, const Vec3& other, bool leaving) {
   HermiteEnd e = node.end;
   if (node.regular || e.order == 0) return e;
-  const Vec3 chord = other - Vec3(e.value.head<3>());
-  if ((e.first.head<3>().dot(chord) < 0) == leaving) e.first = -e.first;
+  const Vec3 chord = (other - Vec3(e.value.head<3>())).normalized();
+  std::vector<std::pair<Vec3, VecX>> candidates = node.branches;
+  if (candidates.empty()) {
+    candidates.emplace_back(e.first.head<3>(), e.first.tail(e.first.size() - 3));
+    candidates.emplace_back(-e.first.head<3>(), -e.first.tail(e.first.size() - 3));
+  }
+  const auto best = std::max_element(candidates.begin(), candidates.end(),
+                                     [&](const auto& a, const auto& b) { return a.first.dot(chord) < b.first.dot(chord); });
+  if (best->first.dot(chord) < kOneSidedTangentCosine) {
+    e.order = 0;
+    return e;
+  }
+  // The half-branch points away from the node: a piece arriving along it moves against it.
+  const double sign = leaving ? 1.0 : -1.0;
+  e.first << sign * best->first, sign * best->second;
   return e;
 }
 
@@ -186,13 +208,19 @@ void start_at_singular_point(std::vector<Node>* nodes) {
 }  // namespace
 
 CurveSpline fit_curve_spline(const Problem& problem, const std::vector<VecX>& points, const std::vector<Vec3>& tangents,
-                             bool closed, const CurveSplineOptions& options) {
+                             bool closed, const CurveSplineOptions& options,
+                             const std::vector<std::vector<Vec3>>* half_branches) {
   if (points.size() < 2 || tangents.size() != points.size())
     throw std::invalid_argument("fit_curve_spline: needs >= 2 points, each with a tangent");
   const auto started = std::chrono::steady_clock::now();
   const int n = problem.dim();
   std::vector<Node> nodes;
-  for (std::size_t i = 0; i < points.size(); ++i) nodes.push_back(make_node(problem, points[i], tangents[i]));
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    nodes.push_back(make_node(problem, points[i], tangents[i]));
+    if (nodes.back().regular || !half_branches || i >= half_branches->size()) continue;
+    for (const Vec3& h : (*half_branches)[i])
+      nodes.back().branches.emplace_back(h.normalized(), parameter_direction(problem, points[i], h.normalized()));
+  }
   if (closed) start_at_singular_point(&nodes);
   // Unwrap the periodic unknowns along the branch.
   for (std::size_t i = 1; i < nodes.size(); ++i)

@@ -45,9 +45,12 @@ struct CurveSpline {
 /// The certified spline of a traced branch. `points`: the unknowns of H at the branch's points
 /// in order (periodic ones wrapped; closed: the last point repeats the first); `tangents`: the
 /// 3D unit tangent along the direction of travel at each (at a singular point, the half-branch's).
-/// Points where the curve jet is singular get a C0 knot. A closed branch without singular
-/// points becomes one periodic spline. Requires at least two points.
+/// `half_branches` (optional, one list per point): at a singular point, the unit 3D tangents of
+/// its half-branches, pointing away from it (singular/half_branches); each piece ending there
+/// takes the one along its chord. Points where the curve jet is singular get a C0 knot. A closed
+/// branch without singular points becomes one periodic spline. Requires at least two points.
 CurveSpline fit_curve_spline(const Problem& problem, const std::vector<VecX>& points, const std::vector<Vec3>& tangents,
-                             bool closed, const CurveSplineOptions& options);
+                             bool closed, const CurveSplineOptions& options,
+                             const std::vector<std::vector<Vec3>>* half_branches = nullptr);
 
 }  // namespace ssimarch

@@ -60,7 +60,10 @@ TraceJobResult trace_scene(const Scene& scene, const TraceRequest& request = {})
 /// The differential geometry at every point of a traced curve by `method`, each point with its
 /// neighbours along the curve as the estimate methods' samples (closed curves wrap).
 /// The certified B-spline of a traced curve (geometry/curve_spline.hpp); empty for a single point.
-std::optional<CurveSpline> spline_of_curve(const Problem& problem, const TracedCurve& curve, const CurveSplineOptions& options);
+/// `singular` (optional): the trace's singular points; those listing curve `index` give their
+/// half-branch tangents to the pieces that end there.
+std::optional<CurveSpline> spline_of_curve(const Problem& problem, const TracedCurve& curve, const CurveSplineOptions& options,
+                                           const std::vector<SingularPointReport>* singular = nullptr, int index = -1);
 
 std::vector<CurveGeometry> geometry_along_curve(const Problem& problem, const TracedCurve& curve,
                                                           GeometryMethod method);
