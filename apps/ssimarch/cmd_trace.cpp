@@ -1,4 +1,5 @@
 // ssimarch trace SCENE.json: traces the scene's intersections and writes the curves.
+#include <algorithm>
 #include <iostream>
 #include <memory>
 
@@ -39,8 +40,14 @@ void run_trace(const TraceArgs& a) {
   }
   if (a.scene.empty()) throw CliError("trace: a scene file is required (ssimarch trace SCENE.json; --help)");
   const Scene scene = load_scene(a.scene);
-  const TraceJobResult job = trace_scene(scene, request_of(a));
   OutputFormat f = a.format.empty() ? (a.output == "-" ? OutputFormat::kJson : format_from_path(a.output)) : parse_format(a.format);
+  TraceRequest request = request_of(a);
+  // STEP holds the certified B-splines: the format turns the option on unless a flag sets it.
+  const TraceOptionSpec* bspline = find_trace_option("bspline");
+  const bool bspline_set = std::any_of(request.overrides.begin(), request.overrides.end(),
+                                       [&](const OptionOverride& o) { return o.option == bspline; });
+  if (f == OutputFormat::kStep && !bspline_set) request.overrides.push_back({bspline, std::string("true"), "--format step"});
+  const TraceJobResult job = trace_scene(scene, request);
   write_runs(job.runs, f, a.output);
   if (!a.quiet) print_summary(job.runs);
   if (!job.complete()) g_exit_status = 1;
@@ -66,14 +73,15 @@ void add_trace_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("trace", "Trace the intersection curves of a scene file");
   cmd->footer(
       "Output: JSON {\"intersections\": [...]} (default; schema in docs/output-format.md), CSV (one row per point), "
-      "OBJ (polylines) or SVG (pictures). A summary goes to stderr.\n"
+      "OBJ (polylines), SVG (pictures) or STEP AP242 (the certified B-splines and p-curves of the option bspline, "
+      "which --format step turns on). A summary goes to stderr.\n"
       "Option values may be numbers or expressions of the scene's constants; each option is a key of a scene's "
       "\"options\" (docs/scene-format.md; --list-options prints the table).\n"
       "Exit status: 0 traced; 1 an intersection found no curve or a start point could not be put on the curve; "
       "2 invalid input.");
   cmd->add_option("scene", args->scene, "Scene file (JSON, docs/scene-format.md)");
   cmd->add_option("-o,--output", args->output, "Output file; '-' for standard output (default)");
-  cmd->add_option("--format", args->format, "json | csv | obj | svg (default: from the output file's extension, else json)");
+  cmd->add_option("--format", args->format, "json | csv | obj | svg | step (default: from the output file's extension, else json)");
   cmd->add_option("--intersection", args->only, "Trace only the intersection(s) with this name (repeatable)");
   add_option_flags(cmd, args.get());
   cmd->add_flag("-q,--quiet", args->quiet, "No summary on stderr");

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "ssimarch/io/step_writer.hpp"
 #include "ssimarch/io/svg_plot.hpp"
 #include "ssimarch/io/trace_writers.hpp"
 
@@ -15,7 +16,8 @@ OutputFormat parse_format(const std::string& s) {
   if (s == "csv") return OutputFormat::kCsv;
   if (s == "obj") return OutputFormat::kObj;
   if (s == "svg") return OutputFormat::kSvg;
-  throw CliError("--format: unknown format \"" + s + "\" (known: json, csv, obj, svg)");
+  if (s == "step") return OutputFormat::kStep;
+  throw CliError("--format: unknown format \"" + s + "\" (known: json, csv, obj, svg, step)");
 }
 
 OutputFormat format_from_path(const std::filesystem::path& p) {
@@ -23,6 +25,7 @@ OutputFormat format_from_path(const std::filesystem::path& p) {
   if (e == ".csv") return OutputFormat::kCsv;
   if (e == ".obj") return OutputFormat::kObj;
   if (e == ".svg") return OutputFormat::kSvg;
+  if (e == ".step" || e == ".stp") return OutputFormat::kStep;
   return OutputFormat::kJson;
 }
 
@@ -59,6 +62,7 @@ void write_runs(const std::vector<IntersectionRun>& runs, OutputFormat format, c
     case OutputFormat::kJson: write_json(*out, runs); break;
     case OutputFormat::kCsv: write_csv(*out, runs); break;
     case OutputFormat::kObj: write_obj(*out, runs); break;
+    case OutputFormat::kStep: write_step(*out, runs); break;
     case OutputFormat::kSvg: break;
   }
   out->flush();

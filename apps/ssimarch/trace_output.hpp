@@ -9,9 +9,9 @@
 
 namespace ssimarch::cli {
 
-enum class OutputFormat { kJson, kCsv, kObj, kSvg };
+enum class OutputFormat { kJson, kCsv, kObj, kSvg, kStep };
 
-/// "json", "csv", "obj", "svg"; throws CliError otherwise.
+/// "json", "csv", "obj", "svg", "step"; throws CliError otherwise.
 OutputFormat parse_format(const std::string& s);
 /// From a file name's extension; json when it has none of the known ones.
 OutputFormat format_from_path(const std::filesystem::path& p);

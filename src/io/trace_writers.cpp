@@ -39,7 +39,37 @@ void add_geometry(const CurveGeometry& g, json* point) {
   (*point)["theta"] = s(g.theta);
   (*point)["geometry_status"] = std::string(to_string(g.status));
 }
+json bspline_json(const BSplineCurve& b) {
+  json cps = json::array();
+  for (const VecX& c : b.control_points) cps.push_back(vec(c));
+  return json{{"degree", b.degree}, {"periodic", b.periodic}, {"knots", b.knots}, {"control_points", std::move(cps)}};
+}
+// The curve's certified B-spline, its p-curves (named by surface) and the measured bound.
+void add_spline(const CurveSpline& s, const std::array<std::string, 2>& parametric, json* curve) {
+  json b = bspline_json(s.curve);
+  b["tolerance"] = s.tolerance;
+  b["within_tolerance"] = s.within_tolerance;
+  b["pieces"] = s.pieces;
+  b["inserted_points"] = s.inserted_points;
+  b["c0_knots"] = s.c0_knots;
+  b["time_ms"] = s.time_ms;
+  (*curve)["bspline"] = std::move(b);
+  json pcurves = json::array();
+  for (std::size_t k = 0; k < s.pcurves.size(); ++k) {
+    json p = bspline_json(s.pcurves[k]);
+    p["surface"] = parametric[k];
+    pcurves.push_back(std::move(p));
+  }
+  (*curve)["pcurves"] = std::move(pcurves);
+  (*curve)["max_deviation"] = s.max_deviation;
+}
 }  // namespace
+
+std::array<std::string, 2> parametric_surface_names(const IntersectionRun& run) {
+  // The problem's first surface is the parametric one of a mixed pair (IntersectionSpec::swapped).
+  const auto& s = run.spec.surfaces;
+  return run.spec.swapped ? std::array<std::string, 2>{s[1], s[0]} : std::array<std::string, 2>{s[0], s[1]};
+}
 
 json stats_to_json(const TraceStats& s) {
   return json{{"points", s.points},
@@ -84,9 +114,10 @@ json to_json(const IntersectionRun& run) {
     const auto& b = run.network.branches;
     const NetworkBranch* branch = ci < b.size() && b[ci].curve == static_cast<int>(ci) ? &b[ci] : nullptr;
     const json index = branch && branch->rotation.index ? json(*branch->rotation.index) : json(nullptr);
-    curves.push_back(json{{"closed", c.closed}, {"length", c.length}, {"num_points", c.points.size()}, {"ends", ends},
-                          {"rotation_index", index},
-                          {"points", std::move(points)}});
+    json curve{{"closed", c.closed}, {"length", c.length}, {"num_points", c.points.size()}, {"ends", ends},
+               {"rotation_index", index}, {"points", std::move(points)}};
+    if (ci < run.splines.size() && run.splines[ci]) add_spline(*run.splines[ci], parametric_surface_names(run), &curve);
+    curves.push_back(std::move(curve));
   }
   json names = json::array();
   for (const auto& n : run.problem.unknown_names()) names.push_back(n);

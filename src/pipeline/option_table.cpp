@@ -132,6 +132,37 @@ Row geometry_row() {
              {}};
 }
 
+// The certified B-spline output (geometry/curve_spline.hpp): opt-in, and its tolerance.
+Row bspline_row() {
+  TraceOptionSpec spec = describe("bspline", "", "false",
+                                  "add to each curve a degree-5 B-spline, its p-curves and `max_deviation`, the measured "
+                                  "bound on their distance from the true curve (docs/math/curve_spline.md); "
+                                  "`--format step` turns it on",
+                                  "yes/no");
+  spec.type = TraceOptionSpec::Type::kChoice;
+  spec.choices = {"true", "false"};
+  spec.rule = "true or false";
+  return Row{std::move(spec), {}, {},
+             [](TraceJobOptions* o, std::string_view s) {
+               if (s != "true" && s != "false") return false;
+               o->bspline = s == "true";
+               return true;
+             },
+             [](const TraceJobOptions& o) { return std::string(o.bspline ? "true" : "false"); }, {}};
+}
+
+Row bspline_tolerance_row() {
+  TraceOptionSpec spec = describe("bspline_tolerance", "model length", "0 = 1e-9 extent",
+                                  "the B-spline and each p-curve's image stay within this of the true curve; pieces "
+                                  "whose measured distance exceeds it are halved at an exact curve point");
+  const Range range{0, kInf, false, false, true, {}};
+  spec.type = TraceOptionSpec::Type::kReal;
+  spec.rule = range_rule(range, false);
+  return Row{std::move(spec), range, [](TraceJobOptions* o, double x) { o->spline.tolerance = x; }, {},
+             [](const TraceJobOptions& o) { return shortest(o.spline.tolerance); },
+             [](const TraceJobOptions& o) { return o.spline.tolerance; }};
+}
+
 std::vector<Row> make_rows() {
   using P = PredictorKind;
   using C = CorrectorKind;
@@ -184,6 +215,8 @@ std::vector<Row> make_rows() {
                                      "as `uncertain_regions`"),
                             Range{1, 1e9, false, false, false, {}}, &TraceOptions::start_box_budget));
   rows.push_back(geometry_row());
+  rows.push_back(bspline_row());
+  rows.push_back(bspline_tolerance_row());
   return rows;
 }
 

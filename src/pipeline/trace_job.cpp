@@ -38,7 +38,7 @@ std::vector<IntersectionSpec> select_intersections(const Scene& scene, const Tra
 }
 
 IntersectionRun run_intersection(const Scene& scene, const IntersectionSpec& spec) {
-  IntersectionRun run{spec, scene.problem(spec), {}, {}, {}};
+  IntersectionRun run{spec, scene.problem(spec), {}, {}, {}, {}};
   run.result = trace_all(run.problem, spec.options.trace, spec.starts);
   run.network = build_curve_network(run.problem, run.result);
   for (const NetworkFailure& f : run.network.failures)
@@ -47,7 +47,42 @@ IntersectionRun run_intersection(const Scene& scene, const IntersectionSpec& spe
   if (spec.options.geometry)
     for (const TracedCurve& c : run.result.curves)
       run.geometry.push_back(geometry_along_curve(run.problem, c, *spec.options.geometry));
+  if (spec.options.bspline)
+    for (std::size_t c = 0; c < run.result.curves.size(); ++c)
+      run.splines.push_back(spline_of_curve(run.problem, run.result.curves[c], spec.options.spline,
+                                            &run.result.singular_points, static_cast<int>(c)));
   return run;
+}
+
+std::optional<CurveSpline> spline_of_curve(const Problem& problem, const TracedCurve& curve, const CurveSplineOptions& options,
+                                           const std::vector<SingularPointReport>* singular, int index) {
+  std::vector<VecX> x;
+  std::vector<Vec3> t;
+  // The half-branch tangents of the singular points this curve passes (exact points of it).
+  std::vector<std::vector<Vec3>> branches;
+  auto branches_at = [&](const CurvePoint& p) {
+    std::vector<Vec3> h;
+    if (!singular) return h;
+    for (const SingularPointReport& r : *singular)
+      if (std::find(r.curves.begin(), r.curves.end(), index) != r.curves.end() &&
+          (r.p - p.p).norm() <= 1e-9 * problem.scale())
+        for (const auto& b : r.half_branches) h.push_back(b.tangent);
+    return h;
+  };
+  // A closed curve's last point is its first (march/result.hpp): it is added back below.
+  const std::size_t m = curve.closed && curve.points.size() > 1 ? curve.points.size() - 1 : curve.points.size();
+  for (std::size_t i = 0; i < m; ++i) {
+    x.push_back(curve.points[i].x);
+    t.push_back(curve.points[i].t);
+    branches.push_back(branches_at(curve.points[i]));
+  }
+  if (curve.closed && x.size() > 1) {
+    x.push_back(curve.points.front().x);
+    t.push_back(curve.points.front().t);
+    branches.push_back(branches.front());
+  }
+  if (x.size() < 2) return std::nullopt;
+  return fit_curve_spline(problem, x, t, curve.closed, options, &branches);
 }
 
 TraceJobResult trace_scene(const Scene& scene, const TraceRequest& request) {

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -60,6 +61,30 @@ TEST(Cli, TraceFormatsAndOverrides) {
   CliRun s = run("trace " + kExamples + "thesis_pair1_ruled_torus.json --intersection torus_curve --format svg");
   ASSERT_EQ(s.status, 0);
   EXPECT_THAT(s.out, HasSubstr("<svg"));
+}
+
+TEST(Cli, StepOutputTurnsTheBSplinesOn) {
+  // A .step output file picks the format; the format turns the option bspline on.
+  const std::string out = (scratch() / "curves.step").string();
+  CliRun r = run("trace " + kExamples + "viviani.json --intersection viviani -q -o " + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ifstream in(out);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(text.rfind("ISO-10303-21;", 0), 0u);
+  // One 3D curve and its p-curve on the cylinder.
+  std::size_t curves = 0;
+  for (std::size_t at = text.find("B_SPLINE_CURVE_WITH_KNOTS("); at != std::string::npos;
+       at = text.find("B_SPLINE_CURVE_WITH_KNOTS(", at + 1))
+    ++curves;
+  EXPECT_EQ(curves, 2u);
+  CliRun j = run("trace " + kExamples + "viviani.json --intersection viviani -q --bspline true --bspline-tolerance 1e-8");
+  ASSERT_EQ(j.status, 0) << j.err;
+  const auto c = nlohmann::json::parse(j.out)["intersections"][0]["curves"][0];
+  EXPECT_LE(c["max_deviation"].get<double>(), 1e-8);
+  EXPECT_EQ(c["pcurves"].size(), 1u);
+  CliRun bad = run("trace " + kExamples + "viviani.json --bspline-tolerance -1");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_THAT(bad.err, HasSubstr("--bspline-tolerance"));
 }
 
 TEST(Cli, BadInputGivesAClearErrorAndStatus2) {

@@ -68,6 +68,9 @@ const BadValue kBadValues[] = {
     {"start_box_budget", "0", "must be an integer in [1, 1e+09], got 0"},
     {"geometry", "\"guesswork\"", "unknown geometry method \"guesswork\" (known: exact, ye-maekawa, willmore, stoyanov, estimate, barnhill-kersey, mixed)"},
     {"geometry", "true", "must be one of exact, ye-maekawa, willmore, stoyanov, estimate, barnhill-kersey, mixed, got a boolean"},
+    {"bspline", "\"yes\"", "yes"},
+    {"bspline", "1", "expected a yes/no name (true or false), got a number"},
+    {"bspline_tolerance", "-1e-9", "must be a finite number >= 0 (0 = automatic), got -1e-09"},
 };
 
 TEST(OptionTable, EveryBadValueNamesTheFileThePathAndTheRule) {

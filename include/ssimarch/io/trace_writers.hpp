@@ -1,7 +1,9 @@
 // Writing the results of a trace job (pipeline/trace_job.hpp): JSON, CSV, OBJ.
 #pragma once
 
+#include <array>
 #include <nlohmann/json.hpp>
+#include <string>
 #include <ostream>
 #include <vector>
 
@@ -13,7 +15,12 @@ namespace ssimarch {
 /// [{"xyz", "params"}]}], "stats": {"points", "rejected_steps", "iterations": {"1".."5+"}, ...},
 /// "warnings"}; with the geometry option every point also has t, n, b, kappa, tau,
 /// kappa_prime, theta (null where undetermined) and geometry_status. Schema: docs/output-format.md.
+/// With the bspline option each curve also has "bspline" {degree, periodic, knots,
+/// control_points, tolerance, within_tolerance, pieces, inserted_points, c0_knots}, "pcurves"
+/// [{surface, degree, periodic, knots, control_points}] and "max_deviation".
 nlohmann::json to_json(const IntersectionRun& run);
+/// The scene names of the problem's first and second surface (the parametric one first).
+std::array<std::string, 2> parametric_surface_names(const IntersectionRun& run);
 nlohmann::json stats_to_json(const TraceStats& stats);
 
 /// {"intersections": [...]} for every run.

@@ -11,6 +11,7 @@
 
 #include "ssimarch/expr/program.hpp"
 #include "ssimarch/geometry/curve_geometry.hpp"
+#include "ssimarch/geometry/curve_spline.hpp"
 #include "ssimarch/march/options.hpp"
 
 namespace ssimarch {
@@ -19,6 +20,8 @@ namespace ssimarch {
 struct TraceJobOptions {
   TraceOptions trace;                      // how the curve is marched (march/options.hpp)
   std::optional<GeometryMethod> geometry;  // differential geometry at every output point, by this method
+  bool bspline = false;                    // a certified B-spline and p-curves per curve (geometry/curve_spline.hpp)
+  CurveSplineOptions spline;               // its tolerance
 };
 
 /// A value as the user wrote it: a JSON number, or text (a name such as "taylor", or a number

@@ -4,6 +4,7 @@
 // the results (io/trace_writers.hpp).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,9 @@ struct IntersectionRun {
   /// With the "geometry" option: geometry[c][i] is the differential geometry at
   /// result.curves[c].points[i]; empty without it.
   std::vector<std::vector<CurveGeometry>> geometry;
+  /// With the "bspline" option: splines[c] is curve c's certified B-spline and p-curves (empty
+  /// optional for a curve of one point); empty without it.
+  std::vector<std::optional<CurveSpline>> splines;
 };
 
 /// An option set for the whole job (e.g. a command-line flag) over every intersection's own.
@@ -58,6 +62,12 @@ TraceJobResult trace_scene(const Scene& scene, const TraceRequest& request = {})
 
 /// The differential geometry at every point of a traced curve by `method`, each point with its
 /// neighbours along the curve as the estimate methods' samples (closed curves wrap).
+/// The certified B-spline of a traced curve (geometry/curve_spline.hpp); empty for a single point.
+/// `singular` (optional): the trace's singular points; those listing curve `index` give their
+/// half-branch tangents to the pieces that end there.
+std::optional<CurveSpline> spline_of_curve(const Problem& problem, const TracedCurve& curve, const CurveSplineOptions& options,
+                                           const std::vector<SingularPointReport>* singular = nullptr, int index = -1);
+
 std::vector<CurveGeometry> geometry_along_curve(const Problem& problem, const TracedCurve& curve,
                                                           GeometryMethod method);
 

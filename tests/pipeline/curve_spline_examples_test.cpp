@@ -1,0 +1,112 @@
+// The certified B-splines of the examples (issue 14 item 5): every curve's `max_deviation` is
+// checked against a dense projection of its B-spline onto both true surfaces, independently of
+// the fit (closest points on parametric surfaces, Newton along the gradient on implicit ones),
+// and every p-curve mapped through its surface lands on the 3D curve.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "ssimarch/core/jet.hpp"
+#include "ssimarch/io/scene.hpp"
+#include "ssimarch/pipeline/trace_job.hpp"
+#include "ssimarch/problem/closest_point.hpp"
+#include "ssimarch/surface/derivatives.hpp"
+
+namespace ssimarch {
+namespace {
+
+// Distance from P to the implicit surface f = 0: Newton steps along the gradient (the foot of
+// the perpendicular for the small distances checked here).
+double distance_to_implicit(const Surface& s, const Vec3& P) {
+  using J = Jet<3, 1>;
+  Vec3 x = P;
+  for (int it = 0; it < 20; ++it) {
+    const J f = s.value(Vec3T<J>(J::variable(0, x.x()), J::variable(1, x.y()), J::variable(2, x.z())));
+    const Vec3 g(f.d(0), f.d(1), f.d(2));
+    const Vec3 step = f.value() / g.squaredNorm() * g;
+    x -= step;
+    if (step.norm() <= 1e-17) break;
+  }
+  return (x - P).norm();
+}
+
+double distance_to_surface(const Surface& s, const Vec3& P, const VecX* pcurve_guess) {
+  if (pcurve_guess) {
+    const Vec2 uv = refine_closest_parameters(s, P, Vec2((*pcurve_guess)[0], (*pcurve_guess)[1]));
+    return (to_vec3(s.point(uv[0], uv[1])) - P).norm();
+  }
+  return distance_to_implicit(s, P);
+}
+
+struct Measured {
+  double to_surfaces = 0;  // largest distance of a B-spline sample from either surface
+  double pcurve_gap = 0;   // largest |S(pcurve(t)) - C(t)|
+};
+
+Measured measure(const IntersectionRun& run, const CurveSpline& sp) {
+  const Problem& pr = run.problem;
+  const Surface* surfaces[2] = {&pr.first(), &pr.second()};
+  Measured m;
+  const int samples = 16 * sp.pieces;
+  for (int k = 0; k <= samples; ++k) {
+    const double t = sp.curve.start() + (sp.curve.end() - sp.curve.start()) * k / samples;
+    const Vec3 P = sp.curve.at(t);
+    for (int i = 0; i < 2; ++i) {
+      const bool parametric = static_cast<std::size_t>(i) < sp.pcurves.size();
+      VecX w;
+      if (parametric) {
+        w = sp.pcurves[static_cast<std::size_t>(i)].at(t);
+        m.pcurve_gap = std::max(m.pcurve_gap, (to_vec3(surfaces[i]->point(w[0], w[1])) - P).norm());
+      }
+      m.to_surfaces = std::max(m.to_surfaces, distance_to_surface(*surfaces[i], P, parametric ? &w : nullptr));
+    }
+  }
+  return m;
+}
+
+class ExampleSplines : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ExampleSplines, MaxDeviationBoundsTheDenseDistanceFromBothSurfaces) {
+  const Scene scene = load_scene(std::string(SSIMARCH_SOURCE_DIR) + "/examples/" + GetParam() + ".json");
+  TraceRequest request;
+  request.overrides.push_back({find_trace_option("bspline"), std::string("true"), "test"});
+  const TraceJobResult job = trace_scene(scene, request);
+  int checked = 0;
+  for (const IntersectionRun& run : job.runs) {
+    ASSERT_EQ(run.splines.size(), run.result.curves.size());  // one spline per branch
+    for (std::size_t c = 0; c < run.splines.size(); ++c) {
+      if (!run.splines[c]) continue;
+      const CurveSpline& sp = *run.splines[c];
+      const double floor = 1e-13 * run.problem.scale();  // rounding of the projections
+      const Measured m = measure(run, sp);
+      EXPECT_LE(m.to_surfaces, sp.max_deviation + floor) << run.spec.name << " curve " << c;
+      EXPECT_LE(m.pcurve_gap, 2 * sp.max_deviation + floor) << run.spec.name << " curve " << c;
+      // A closed branch is one spline, periodic unless it passes a singular point.
+      if (run.result.curves[c].closed) {
+        EXPECT_EQ(sp.curve.periodic, sp.c0_knots == 0) << run.spec.name;
+      }
+      EXPECT_EQ(sp.curve.knots.size(), sp.curve.control_points.size() + 6);
+      // Every example meets the default tolerance (1e-9 x scale) with the traced points and at
+      // most a few halvings.
+      EXPECT_TRUE(sp.within_tolerance) << run.spec.name << " curve " << c << ": " << sp.max_deviation;
+      EXPECT_LE(sp.max_deviation, sp.tolerance);
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Examples, ExampleSplines,
+    ::testing::Values("viviani", "s000_ex2_cubic_surfaces", "s000_ex3_paraboloid_cylinder", "s000_ex4_plane_ellipsoid",
+                      "s000_ex5_two_cylinders", "s004_viviani_implicit", "thesis_pair1_ruled_torus",
+                      "thesis_pair2_cylinder_sphere", "thesis_ex12_three_petals", "thesis_ex13_four_petals",
+                      "thesis_ex14_ramphoid_cusp", "thesis_ex17_ellipsoids", "thesis_ex18_tacnode_node",
+                      "thesis_ex19_tacnode", "thesis_ex20_cardioid", "thesis_ex21_double_eight", "thesis_ex22_cusp",
+                      "thesis_ex35_tacnode_loops", "thesis_ex38_two_loops", "thesis_ex39_paraboloid_sine",
+                      "thesis_ex40_four_nodes", "thesis_ex41_devils_curve"),
+    [](const ::testing::TestParamInfo<std::string>& i) { return i.param; });
+
+}  // namespace
+}  // namespace ssimarch
