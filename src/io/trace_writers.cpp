@@ -38,6 +38,16 @@ void add_geometry(const CurveGeometry& g, json* point) {
   (*point)["theta"] = s(g.theta);
   (*point)["geometry_status"] = std::string(to_string(g.status));
 }
+// The exact conic of a closed-form curve (analytic/conic.hpp): its parameterisation is
+// centre + a cos t axes[0] + b sin t axes[1] (circle, ellipse), ... (docs/output-format.md).
+json conic_to_json(const Conic& c) {
+  return json{{"type", std::string(to_string(c.type))},
+              {"center", vec(c.center)},
+              {"axes", json::array({vec(c.e0), vec(c.e1)})},
+              {"semi_axes", json::array({c.a, c.b})},
+              {"parameter_range", json::array({c.range.lo, c.range.hi})},
+              {"contact", std::string(to_string(c.contact))}};
+}
 }  // namespace
 
 json stats_to_json(const TraceStats& s) {
@@ -76,8 +86,10 @@ json to_json(const IntersectionRun& run) {
     json ends = c.closed ? json{{"start", end_json(Termination::kClosedLoop, "closed loop")},
                                 {"end", end_json(Termination::kClosedLoop, "closed loop")}}
                          : json{{"start", end_json(c.start_end, c.start_message)}, {"end", end_json(c.end_end, c.end_message)}};
-    curves.push_back(json{{"closed", c.closed}, {"length", c.length}, {"num_points", c.points.size()}, {"ends", ends},
-                          {"points", std::move(points)}});
+    json curve{{"closed", c.closed}, {"length", c.length}, {"num_points", c.points.size()}, {"ends", ends},
+               {"points", std::move(points)}};
+    if (ci < run.conics.size()) curve["conic"] = conic_to_json(run.conics[ci]);
+    curves.push_back(std::move(curve));
   }
   json names = json::array();
   for (const auto& n : run.problem.unknown_names()) names.push_back(n);

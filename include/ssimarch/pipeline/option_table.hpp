@@ -19,6 +19,7 @@ namespace ssimarch {
 struct TraceJobOptions {
   TraceOptions trace;                      // how the curve is marched (march/options.hpp)
   std::optional<GeometryMethod> geometry;  // differential geometry at every output point, by this method
+  bool closed_form = true;  // answer primitive pairs with a closed form exactly (analytic/closed_form.hpp)
 };
 
 /// A value as the user wrote it: a JSON number, or text (a name such as "taylor", or a number

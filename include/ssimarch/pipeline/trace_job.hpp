@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "ssimarch/analytic/conic.hpp"
 #include "ssimarch/geometry/curve_geometry.hpp"
 #include "ssimarch/march/result.hpp"
 #include "ssimarch/pipeline/scene.hpp"
@@ -21,6 +22,9 @@ struct IntersectionRun {
   /// With the "geometry" option: geometry[c][i] is the differential geometry at
   /// result.curves[c].points[i]; empty without it.
   std::vector<std::vector<CurveGeometry>> geometry;
+  /// When the closed form answered (option "closed_form"): conics[c] is result.curves[c]'s conic;
+  /// empty when the curves were traced.
+  std::vector<Conic> conics;
 };
 
 /// An option set for the whole job (e.g. a command-line flag) over every intersection's own.
