@@ -79,21 +79,32 @@ void run_once(Loaded* l, bool first) {
   }
 }
 
+// One cell: "curves[+isolated points p]/closed, dL, res, ms[, x ratio][ (note)]".
+std::string cell(const Outcome& o, double exact_length, double ms, double ratio) {
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "%d", o.curves);
+  std::string s = buf;
+  if (o.isolated) {
+    std::snprintf(buf, sizeof buf, "+%dp", o.isolated);
+    s += buf;
+  }
+  std::snprintf(buf, sizeof buf, "/%d, dL %.1e, res %.0e, %.3g ms", o.closed, std::fabs(o.length - exact_length), o.residual, ms);
+  s += buf;
+  if (std::isfinite(ratio)) {
+    std::snprintf(buf, sizeof buf, ", x%.3g", ratio);
+    s += buf;
+  }
+  if (!o.note.empty()) s.append(" (").append(o.note).append(")");
+  return s;
+}
+
 void print(const Loaded& l) {
   const double occt = median(l.rows[kOcctAnalytic].ms);
   std::printf("| %s | %.10g (%d) |", l.c->name, l.c->exact_length, l.c->exact_components);
   for (int e = 0; e < kEngines; ++e) {
-    const Row& r = l.rows[e];
-    const Outcome& o = r.outcome;
-    const double t = median(r.ms);
-    if (!std::isfinite(t)) {
-      std::printf(" - |");
-      continue;
-    }
-    std::printf(" %d%s/%d, dL %.1e, res %.0e, %.3g ms%s%s |", o.curves, o.isolated ? ("+" + std::to_string(o.isolated) + "p").c_str() : "",
-                o.closed, std::fabs(o.length - l.c->exact_length), o.residual, t,
-                (e >= kSsimarch && std::isfinite(occt)) ? (", x" + std::to_string(occt / t).substr(0, 5)).c_str() : "",
-                o.note.empty() ? "" : (" (" + o.note + ")").c_str());
+    const double t = median(l.rows[e].ms);
+    const double ratio = e >= kSsimarch ? occt / t : NAN;
+    std::printf(" %s |", std::isfinite(t) ? cell(l.rows[e].outcome, l.c->exact_length, t, ratio).c_str() : "-");
   }
   std::printf("\n");
 }

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "ssimarch/problem/singular_tolerances.hpp"
+#include "ssimarch/analytic/closed_form_tolerances.hpp"
 
 namespace ssimarch {
 

@@ -45,12 +45,4 @@ inline constexpr double kSuspectSingularRankRatio = 1e-4;
 /// thesis' own threshold sin(theta) < 0.01 (ch. 5 §5.2.1) fires far more often.
 inline constexpr double kWatchRankRatio = 1e-3;
 
-/// Relative size (of the largest coefficient of the conic or of the axial polynomial) below which
-/// a closed-form section (analytic/, docs/math/closed_form_quadrics.md) counts a discriminant, a
-/// quadratic term or a squared radius as zero: the surfaces touch (a double line, a double
-/// circle, a single point) rather than cross or miss. The coefficients come from a few products
-/// of the inputs, so they carry ~1e-15 relative rounding; 1e-10 leaves five orders of margin and
-/// is the order at which kCurveJetRankTolerance stops trusting the jets of a near-tangency.
-inline constexpr double kClosedFormDegeneracy = 1e-10;
-
 }  // namespace ssimarch
