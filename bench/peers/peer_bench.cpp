@@ -74,7 +74,10 @@ void run_once(Loaded* l, bool first) {
       case kSsimarch: o = run_ssimarch(l->scene, l->spec, &ms); break;
       default: o = run_ssimarch(l->scene, l->traced, &ms); break;
     }
-    if (first) l->rows[e].outcome = o;
+    if (first) {
+      l->rows[e].outcome = o;
+      std::fprintf(stderr, "%s / %s: %.3g ms\n", l->c->name, kEngineNames[e], ms);
+    }
     if (std::isfinite(ms)) l->rows[e].ms.push_back(ms);
   }
 }
@@ -104,7 +107,8 @@ void print(const Loaded& l) {
   for (int e = 0; e < kEngines; ++e) {
     const double t = median(l.rows[e].ms);
     const double ratio = e >= kSsimarch ? occt / t : NAN;
-    std::printf(" %s |", std::isfinite(t) ? cell(l.rows[e].outcome, l.c->exact_length, t, ratio).c_str() : "-");
+    const std::string none = l.rows[e].outcome.note.empty() ? "-" : l.rows[e].outcome.note;
+    std::printf(" %s |", std::isfinite(t) ? cell(l.rows[e].outcome, l.c->exact_length, t, ratio).c_str() : none.c_str());
   }
   std::printf("\n");
 }

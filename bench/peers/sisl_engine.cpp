@@ -2,6 +2,9 @@
 #include <cmath>
 #include <vector>
 
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <Geom_BSplineSurface.hxx>
 #include <TColStd_Array1OfReal.hxx>
 
@@ -58,7 +61,9 @@ void measure(SISLCurve* c, const Surface& a, const Surface& b, Outcome* out) {
 
 }  // namespace
 
-Outcome run_sisl(const OcctPair& pair, const Surface& a, const Surface& b, double* ms) {
+namespace {
+
+Outcome sisl_in_process(const OcctPair& pair, const Surface& a, const Surface& b, double* ms) {
   Outcome out;
   *ms = NAN;
   SISLSurf* s1 = pair.first.IsNull() ? nullptr : to_sisl(pair.first);
@@ -86,6 +91,45 @@ Outcome run_sisl(const OcctPair& pair, const Surface& a, const Surface& b, doubl
   free(par2);
   freeSurf(s1);
   freeSurf(s2);
+  return out;
+}
+
+}  // namespace
+
+// SISL's subdivision can run for minutes on a singular case: it runs in a child process that is
+// killed after kSislSeconds (the outcome then says so).
+constexpr unsigned kSislSeconds = 20;
+
+Outcome run_sisl(const OcctPair& pair, const Surface& a, const Surface& b, double* ms) {
+  int fd[2];
+  if (pipe(fd) != 0) return sisl_in_process(pair, a, b, ms);
+  const pid_t child = fork();
+  if (child == 0) {
+    close(fd[0]);
+    alarm(kSislSeconds);
+    double t = NAN;
+    const Outcome o = sisl_in_process(pair, a, b, &t);
+    const double nums[6] = {t, double(o.curves), double(o.isolated), double(o.closed), o.length, o.residual};
+    if (write(fd[1], nums, sizeof nums) != static_cast<ssize_t>(sizeof nums)) _exit(1);
+    _exit(0);
+  }
+  close(fd[1]);
+  double nums[6];
+  const bool got = read(fd[0], nums, sizeof nums) == static_cast<ssize_t>(sizeof nums);
+  close(fd[0]);
+  waitpid(child, nullptr, 0);
+  Outcome out;
+  *ms = NAN;
+  if (!got) {
+    out.note = "killed after " + std::to_string(kSislSeconds) + " s";
+    return out;
+  }
+  *ms = nums[0];
+  out.curves = int(nums[1]);
+  out.isolated = int(nums[2]);
+  out.closed = int(nums[3]);
+  out.length = nums[4];
+  out.residual = nums[5];
   return out;
 }
 
