@@ -4,7 +4,7 @@ JOBS ?= $(shell nproc)
 PRESET ?= release
 BUILD_DIR = build
 
-.PHONY: deps configure build test demo asan bench clean
+.PHONY: deps configure build test demo asan bench bench-peers clean
 
 deps:
 	./scripts/install-deps
@@ -31,5 +31,12 @@ bench: deps
 	cmake --build build-bench -j $(JOBS)
 	./bench/run-benchmarks
 
+# Side-by-side with OpenCASCADE and SISL (docs/benchmarks.md, "Peers"): an optional build of its own.
+bench-peers:
+	./scripts/install-deps --peers
+	cmake -S . -B build-peers -G Ninja -DCMAKE_BUILD_TYPE=Release -DSSIMARCH_BUILD_TESTS=OFF -DSSIMARCH_BENCH_PEERS=ON
+	cmake --build build-peers -j $(JOBS) --target peer_bench
+	build-peers/bench/peers/peer_bench --reps 7
+
 clean:
-	rm -rf build build-asan build-bench out
+	rm -rf build build-asan build-bench build-peers out

@@ -63,6 +63,17 @@ void add_spline(const CurveSpline& s, const std::array<std::string, 2>& parametr
   (*curve)["pcurves"] = std::move(pcurves);
   (*curve)["max_deviation"] = s.max_deviation;
 }
+
+// The exact conic of a closed-form curve (analytic/conic.hpp): its parameterisation is
+// centre + a cos t axes[0] + b sin t axes[1] (circle, ellipse), ... (docs/output-format.md).
+json conic_to_json(const Conic& c) {
+  return json{{"type", std::string(to_string(c.type))},
+              {"center", vec(c.center)},
+              {"axes", json::array({vec(c.e0), vec(c.e1)})},
+              {"semi_axes", json::array({c.a, c.b})},
+              {"parameter_range", json::array({c.range.lo, c.range.hi})},
+              {"contact", std::string(to_string(c.contact))}};
+}
 }  // namespace
 
 std::array<std::string, 2> parametric_surface_names(const IntersectionRun& run) {
@@ -116,6 +127,7 @@ json to_json(const IntersectionRun& run) {
     const json index = branch && branch->rotation.index ? json(*branch->rotation.index) : json(nullptr);
     json curve{{"closed", c.closed}, {"length", c.length}, {"num_points", c.points.size()}, {"ends", ends},
                {"rotation_index", index}, {"points", std::move(points)}};
+    if (ci < run.conics.size()) curve["conic"] = conic_to_json(run.conics[ci]);
     if (ci < run.splines.size() && run.splines[ci]) add_spline(*run.splines[ci], parametric_surface_names(run), &curve);
     curves.push_back(std::move(curve));
   }

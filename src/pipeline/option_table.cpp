@@ -97,17 +97,29 @@ Row choice_row(TraceOptionSpec spec, std::initializer_list<E> values, E TraceOpt
 }
 
 // A yes/no option: a choice between "true" and "false" (a scene may write JSON true/false).
-Row flag_row(TraceOptionSpec spec, bool TraceOptions::*field) {
+// `field(options)` is the flag's reference in a const or non-const TraceJobOptions.
+template <class Field>
+Row yes_no_row(TraceOptionSpec spec, Field field) {
   spec.type = TraceOptionSpec::Type::kChoice;
   spec.choices = {"true", "false"};
   spec.rule = "true or false";
   return Row{std::move(spec), {}, {},
              [field](TraceJobOptions* o, std::string_view s) {
                if (s != "true" && s != "false") return false;
-               o->trace.*field = s == "true";
+               field(*o) = s == "true";
                return true;
              },
-             [field](const TraceJobOptions& o) { return std::string(o.trace.*field ? "true" : "false"); }, {}};
+             [field](const TraceJobOptions& o) { return std::string(field(o) ? "true" : "false"); }, {}};
+}
+
+// A flag of the marching (TraceOptions).
+Row flag_row(TraceOptionSpec spec, bool TraceOptions::*field) {
+  return yes_no_row(std::move(spec), [field](auto& o) -> auto& { return o.trace.*field; });
+}
+
+// A flag of the job (TraceJobOptions itself): which engine answers.
+Row job_flag_row(TraceOptionSpec spec, bool TraceJobOptions::*field) {
+  return yes_no_row(std::move(spec), [field](auto& o) -> auto& { return o.*field; });
 }
 
 Row geometry_row() {
@@ -214,6 +226,12 @@ std::vector<Row> make_rows() {
                                      "boxes the certified search examines per square system before it reports the rest "
                                      "as `uncertain_regions`"),
                             Range{1, 1e9, false, false, false, {}}, &TraceOptions::start_box_budget));
+  rows.push_back(job_flag_row(describe("closed_form", "", "true",
+                                       "answer pairs of primitives with an exact intersection (a plane and a quadric, "
+                                       "coaxial surfaces of revolution, two spheres) in closed form, as conics with "
+                                       "exact points (docs/math/closed_form_quadrics.md); false: trace them",
+                                       "yes/no"),
+                              &TraceJobOptions::closed_form));
   rows.push_back(geometry_row());
   rows.push_back(bspline_row());
   rows.push_back(bspline_tolerance_row());

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "ssimarch/analytic/closed_form.hpp"
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/geometry/intersection_geometry.hpp"
 #include "ssimarch/topology/trace_all.hpp"
@@ -38,8 +39,17 @@ std::vector<IntersectionSpec> select_intersections(const Scene& scene, const Tra
 }
 
 IntersectionRun run_intersection(const Scene& scene, const IntersectionSpec& spec) {
-  IntersectionRun run{spec, scene.problem(spec), {}, {}, {}, {}};
-  run.result = trace_all(run.problem, spec.options.trace, spec.starts);
+  IntersectionRun run{spec, scene.problem(spec), {}, {}, {}, {}, {}};
+  // Pairs with a closed form are answered exactly (docs/math/closed_form_quadrics.md); given start
+  // points ask for the curves through them, which the tracer answers.
+  std::optional<ClosedFormResult> exact;
+  if (spec.options.closed_form && spec.starts.empty()) exact = closed_form_intersection(run.problem, spec.options.trace);
+  if (exact) {
+    run.result = std::move(exact->result);
+    run.conics = std::move(exact->conics);
+  } else {
+    run.result = trace_all(run.problem, spec.options.trace, spec.starts);
+  }
   run.network = build_curve_network(run.problem, run.result);
   for (const NetworkFailure& f : run.network.failures)
     run.result.warnings.push_back("curve " + std::to_string(f.curve) + " " + f.end + " stops away from the domain boundary (" +

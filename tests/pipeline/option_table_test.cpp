@@ -65,6 +65,8 @@ const BadValue kBadValues[] = {
     {"start_samples", "1001", "must be an integer in [2, 1000], got 1001"},
     {"certified_start_points", "1", "expected a yes/no name (true or false), got a number"},
     {"certified_start_points", "\"maybe\"", "maybe"},
+    {"closed_form", "0", "expected a yes/no name (true or false), got a number"},
+    {"closed_form", "\"exact\"", "exact"},
     {"start_box_budget", "0", "must be an integer in [1, 1e+09], got 0"},
     {"geometry", "\"guesswork\"", "unknown geometry method \"guesswork\" (known: exact, ye-maekawa, willmore, stoyanov, estimate, barnhill-kersey, mixed)"},
     {"geometry", "true", "must be one of exact, ye-maekawa, willmore, stoyanov, estimate, barnhill-kersey, mixed, got a boolean"},

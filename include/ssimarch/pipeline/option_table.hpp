@@ -22,6 +22,7 @@ struct TraceJobOptions {
   std::optional<GeometryMethod> geometry;  // differential geometry at every output point, by this method
   bool bspline = false;                    // a certified B-spline and p-curves per curve (geometry/curve_spline.hpp)
   CurveSplineOptions spline;               // its tolerance
+  bool closed_form = true;  // answer primitive pairs with a closed form exactly (analytic/closed_form.hpp)
 };
 
 /// A value as the user wrote it: a JSON number, or text (a name such as "taylor", or a number

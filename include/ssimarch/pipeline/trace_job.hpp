@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "ssimarch/analytic/conic.hpp"
 #include "ssimarch/geometry/curve_geometry.hpp"
 #include "ssimarch/march/result.hpp"
 #include "ssimarch/pipeline/scene.hpp"
@@ -27,6 +28,9 @@ struct IntersectionRun {
   /// With the "bspline" option: splines[c] is curve c's certified B-spline and p-curves (empty
   /// optional for a curve of one point); empty without it.
   std::vector<std::optional<CurveSpline>> splines;
+  /// When the closed form answered (option "closed_form"): conics[c] is result.curves[c]'s conic;
+  /// empty when the curves were traced.
+  std::vector<Conic> conics;
 };
 
 /// An option set for the whole job (e.g. a command-line flag) over every intersection's own.

@@ -1,0 +1,142 @@
+// Side-by-side benchmark: OpenCASCADE (GeomAPI_IntSS, analytic and B-spline input), SISL (s1859 +
+// s1310) and ssimarch on the peer cases, interleaved in one process (docs/benchmarks.md, "Peers").
+//
+//   peer_bench [--reps N] [--case NAME] [--scenes DIR]
+//
+// Prints Markdown: per case and engine, curves (+ isolated points), closed curves, |total length -
+// exact|, the largest distance of a sampled point from the two surfaces, the median time and
+// OpenCASCADE-analytic time / engine time.
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "peer_engines.hpp"
+#include "ssimarch/io/scene.hpp"
+
+namespace {
+
+using namespace peers;
+
+struct Case {
+  const char* name;
+  double exact_length;
+  int exact_components;
+  const char* source;
+};
+
+// Exact lengths: shared/peers/cases.jsonl; the occt_* cases: closed forms in the comments, and
+// bench/peers/reference_lengths.py for bug33244.
+const Case kCases[] = {
+    {"viviani_thesis", 15.2807911542, 1, "cases.jsonl"},
+    {"viviani_thesis_xpole", 15.2807911542, 1, "cases.jsonl"},
+    {"viviani_unit", 7.64039557709, 1, "cases.jsonl"},
+    {"torus_ruled_knot", 35.6831156393, 1, "cases.jsonl"},
+    {"plane_ellipsoid", 11.0376087706, 1, "cases.jsonl"},
+    {"two_cylinders", 15.2807911555, 2, "cases.jsonl"},
+    {"paraboloid_cylinder", 12.5663706139, 1, "cases.jsonl"},
+    {"ellipsoid_ellipsoid", 21.2912863011, 2, "cases.jsonl"},
+    {"devil_curve", 13.4552889635, 4, "cases.jsonl"},
+    {"sphere_plane_tangent", 0, 1, "cases.jsonl"},
+    {"cylinder_plane_tangent", 4, 1, "cases.jsonl"},
+    {"occt_bug21494_2", 2 * M_PI * 120 / 13, 2, "OCCT tests/lowalgos/intss/bug21494_2: circle r = 120/13 + apex point"},
+    {"occt_bug24694_7", 20 * M_PI, 1, "OCCT tests/lowalgos/intss/bug24694_7: equator, tangential"},
+    {"occt_bug33244", 13.9504584900, 2, "OCCT tests/lowalgos/intss/bug33244 (trimmed |h| <= 3): reference_lengths.py"},
+};
+
+enum Engine { kOcctAnalytic, kOcctBspline, kSisl, kSsimarch, kSsimarchTraced, kEngines };
+const char* kEngineNames[kEngines] = {"OCCT analytic", "OCCT B-spline", "SISL", "ssimarch", "ssimarch traced"};
+
+struct Row {
+  Outcome outcome;
+  std::vector<double> ms;
+};
+
+struct Loaded {
+  const Case* c;
+  ssimarch::Scene scene;
+  ssimarch::IntersectionSpec spec, traced;
+  OcctPair analytic, bspline;
+  Row rows[kEngines];
+};
+
+void run_once(Loaded* l, bool first) {
+  const ssimarch::Surface& a = l->scene.surface(l->spec.surfaces[0]);
+  const ssimarch::Surface& b = l->scene.surface(l->spec.surfaces[1]);
+  for (int e = 0; e < kEngines; ++e) {
+    double ms = NAN;
+    Outcome o;
+    switch (e) {
+      case kOcctAnalytic: o = run_occt(l->analytic, a, b, &ms); break;
+      case kOcctBspline: o = run_occt(l->bspline, a, b, &ms); break;
+      case kSisl: o = run_sisl(l->bspline, a, b, &ms); break;
+      case kSsimarch: o = run_ssimarch(l->scene, l->spec, &ms); break;
+      default: o = run_ssimarch(l->scene, l->traced, &ms); break;
+    }
+    if (first) {
+      l->rows[e].outcome = o;
+      std::fprintf(stderr, "%s / %s: %.3g ms\n", l->c->name, kEngineNames[e], ms);
+    }
+    if (std::isfinite(ms)) l->rows[e].ms.push_back(ms);
+  }
+}
+
+// One cell: "curves[+isolated points p]/closed, dL, res, ms[, x ratio][ (note)]".
+std::string cell(const Outcome& o, double exact_length, double ms, double ratio) {
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "%d", o.curves);
+  std::string s = buf;
+  if (o.isolated) {
+    std::snprintf(buf, sizeof buf, "+%dp", o.isolated);
+    s += buf;
+  }
+  std::snprintf(buf, sizeof buf, "/%d, dL %.1e, res %.0e, %.3g ms", o.closed, std::fabs(o.length - exact_length), o.residual, ms);
+  s += buf;
+  if (std::isfinite(ratio)) {
+    std::snprintf(buf, sizeof buf, ", x%.3g", ratio);
+    s += buf;
+  }
+  if (!o.note.empty()) s.append(" (").append(o.note).append(")");
+  return s;
+}
+
+void print(const Loaded& l) {
+  const double occt = median(l.rows[kOcctAnalytic].ms);
+  std::printf("| %s | %.10g (%d) |", l.c->name, l.c->exact_length, l.c->exact_components);
+  for (int e = 0; e < kEngines; ++e) {
+    const double t = median(l.rows[e].ms);
+    const double ratio = e >= kSsimarch ? occt / t : NAN;
+    const std::string none = l.rows[e].outcome.note.empty() ? "-" : l.rows[e].outcome.note;
+    std::printf(" %s |", std::isfinite(t) ? cell(l.rows[e].outcome, l.c->exact_length, t, ratio).c_str() : none.c_str());
+  }
+  std::printf("\n");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int reps = 7;
+  std::string only, dir = std::string(SSIMARCH_SOURCE_DIR) + "/bench/peers/scenes";
+  for (int i = 1; i + 1 < argc; i += 2) {
+    if (!std::strcmp(argv[i], "--reps")) reps = std::atoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--case")) only = argv[i + 1];
+    else if (!std::strcmp(argv[i], "--scenes")) dir = argv[i + 1];
+  }
+  std::vector<Loaded> cases;
+  for (const Case& c : kCases) {
+    if (!only.empty() && only != c.name) continue;
+    Loaded l{&c, ssimarch::load_scene(dir + "/" + c.name + ".json"), {}, {}, occt_analytic(c.name), occt_bspline(c.name), {}};
+    l.spec = l.scene.intersections.at(0);
+    l.traced = l.spec;
+    l.traced.options.closed_form = false;
+    cases.push_back(std::move(l));
+  }
+  for (int r = 0; r < reps; ++r)  // interleaved: every engine on every case, then again
+    for (Loaded& l : cases) run_once(&l, r == 0);
+  std::printf("| case | exact length (components) |");
+  for (const char* e : kEngineNames) std::printf(" %s |", e);
+  std::printf("\n|---|---|---|---|---|---|---|\n");
+  for (const Loaded& l : cases) print(l);
+  return 0;
+}

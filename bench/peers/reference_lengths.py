@@ -1,0 +1,86 @@
+#!/usr/bin/env python3
+"""Reference length of the peers case occt_bug33244 (two cones of OpenCASCADE's
+tests/lowalgos/intss/bug33244, each trimmed to |h| <= 3 from its apex), independent of ssimarch:
+cone 1 is parameterised by (theta, h); for each theta the cone-2 equation is a quadratic in h whose
+real roots are the curve's points; the length is the polyline length on 2^18 angles per root branch,
+each cut exactly (bisection) where it leaves a trim. Also writes the scene's apex coordinates.
+Usage: bench/peers/reference_lengths.py
+"""
+import math
+
+class V(tuple):
+    def __add__(a, b): return V(x + y for x, y in zip(a, b))
+    def __sub__(a, b): return V(x - y for x, y in zip(a, b))
+    def __mul__(a, k): return V(x * k for x in a)
+    __rmul__ = __mul__
+    def __truediv__(a, k): return V(x / k for x in a)
+    def dot(a, b): return sum(x * y for x, y in zip(a, b))
+    def norm(a): return math.sqrt(a.dot(a))
+    def cross(a, b): return V((a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]))
+
+def cone(loc, d, alpha, radius):
+    d = V(d) / V(d).norm()
+    apex = V(loc) - radius / math.tan(alpha) * d
+    return apex, d, math.tan(alpha)
+
+C1 = cone((-1.11630646267172, -4.54487349779333, 13.2493435203532),
+          (-1.05794851588922e-07, -1.39278337794573e-08, 0.999999999999994), 0.785398163360967, 0.560000000061149)
+C2 = cone((-2.08647872350287e-07, -5.78732475509323, 13.2493436211),
+          (-1.05794850062242e-07, -1.39278350756825e-08, 0.999999999999994), 0.785398163396248, 0.785398163396248)
+H = 3.0  # trim: |axial distance from the apex| <= H on both cones
+
+def frame(d):
+    a = V((1.0, 0, 0)) if abs(d[0]) < 0.9 else V((0, 1.0, 0))
+    e0 = a - a.dot(d) * d
+    e0 = e0 / e0.norm()
+    return e0, d.cross(e0)
+
+def points(theta):
+    """The curve's points over cone 1's ruling at theta: list of (h1, point) for real roots."""
+    (A1, d1, t1), (A2, d2, t2) = C1, C2
+    e0, e1 = frame(d1)
+    w = d1 + t1 * (math.cos(theta) * e0 + math.sin(theta) * e1)  # p = A1 + h w
+    q = A1 - A2
+    # |p-A2|^2 - (1 + t2^2) ((p-A2).d2)^2 = 0 as a h^2 + b h + c
+    k = 1 + t2 * t2
+    a = w.dot(w) - k * w.dot(d2) ** 2
+    b = 2 * (q.dot(w) - k * q.dot(d2) * w.dot(d2))
+    c = q.dot(q) - k * q.dot(d2) ** 2
+    disc = b * b - 4 * a * c
+    if disc < 0:
+        return []
+    r = [(-b + s * math.sqrt(disc)) / (2 * a) for s in (1, -1)]
+    return [(h, A1 + h * w) for h in r]
+
+def inside(h, p):
+    A2, d2, _ = C2
+    return abs(h) <= H and abs((p - A2).dot(d2)) <= H
+
+def branch_length(k, n=1 << 18):
+    total, prev = 0.0, None
+    for i in range(n + 1):
+        th = 2 * math.pi * i / n
+        pts = points(th)
+        cur = (th, pts[k]) if len(pts) > k else None
+        if prev and cur:
+            (ta, (ha, pa)), (tb, (hb, pb)) = prev, cur
+            ia, ib = inside(ha, pa), inside(hb, pb)
+            if ia and ib:
+                total += (pb - pa).norm()
+            elif ia != ib:  # cut where the branch crosses a trim
+                lo, hi = (ta, tb)
+                for _ in range(60):
+                    mid = 0.5 * (lo + hi)
+                    hm, pm = points(mid)[k]
+                    if inside(hm, pm) == ia: lo = mid
+                    else: hi = mid
+                pc = points(0.5 * (lo + hi))[k][1]
+                total += (pc - (pa if ia else pb)).norm()
+        prev = cur
+    return total
+
+if __name__ == "__main__":
+    print("apex 1", repr(tuple(C1[0])), "axis", repr(tuple(C1[1])))
+    print("apex 2", repr(tuple(C2[0])), "axis", repr(tuple(C2[1])))
+    L = [branch_length(k) for k in (0, 1)]
+    print("branch lengths", L, "total %.10f" % sum(L))

@@ -1,0 +1,33 @@
+// Exact intersection curves of primitive pairs that have them (docs/math/closed_form_quadrics.md):
+// a plane and a quadric (a plane section), two coaxial surfaces of revolution (circles), two
+// spheres (coaxial about the line of their centres). The case list follows OpenCASCADE's
+// IntAna_QuadQuadGeo (plane-plane aside, which marching handles as well); the mathematics is ours.
+// The answer has the shape of a traced one (curves of points on both surfaces, clipped to the
+// problem's box and to the primitives' trims: a plane's rectangle, a cylinder's or cone's axial
+// range) plus the conic of each curve.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "ssimarch/analytic/conic.hpp"
+#include "ssimarch/march/options.hpp"
+#include "ssimarch/march/result.hpp"
+#include "ssimarch/problem/problem.hpp"
+
+namespace ssimarch {
+
+struct ClosedFormResult {
+  TraceResult result;        // curves, isolated (contact) points, stats; start_search.method "closed-form"
+  std::vector<Conic> conics; // conics[i] is result.curves[i]'s conic piece (type, centre, axes, range)
+  std::string pair;          // which closed form answered: "plane-quadric", "coaxial"
+};
+
+/// The exact intersection of an implicit-implicit problem whose surfaces are both recognised
+/// primitives of a pair with a closed form; nullopt otherwise (another pair kind, another pair,
+/// coincident surfaces), when the caller traces instead. Points: chords within options.deviation
+/// (0: 1e-4 of the problem's extent) and at most options.step_length long (0: extent / 10), the
+/// same rule as the `chordal` step.
+std::optional<ClosedFormResult> closed_form_intersection(const Problem& problem, const TraceOptions& options);
+
+}  // namespace ssimarch

@@ -1,0 +1,112 @@
+// docs/math/closed_form_quadrics.md, "Plane sections": C = M^T Q M is the conic of the section in
+// the plane's coordinates; the eigen-decomposition of its quadratic part names it.
+#include "ssimarch/analytic/plane_section.hpp"
+
+#include <cmath>
+
+#include "ssimarch/analytic/closed_form_tolerances.hpp"
+
+namespace ssimarch {
+
+namespace {
+
+constexpr double kEps = kClosedFormDegeneracy;
+
+// The plane's data in scaled coordinates (s, t) = (world offset along e0, e1) / scale.
+struct PlaneConic {
+  Eigen::Matrix2d A;
+  Eigen::Vector2d b;
+  double c = 0;
+  Vec3 origin, u, v;  // world: point = origin + scale (s u + t v)
+  double scale = 1;
+
+  Vec3 world(const Eigen::Vector2d& st) const { return origin + scale * (st.x() * u + st.y() * v); }
+  Vec3 direction(const Eigen::Vector2d& d) const { return (d.x() * u + d.y() * v).normalized(); }
+};
+
+Conic make(ConicType type, const Vec3& c, const Vec3& e0, const Vec3& e1, double a, double b, Contact contact) {
+  Conic k;
+  k.type = type;
+  k.center = c;
+  k.e0 = e0;
+  k.e1 = e1;
+  k.a = a;
+  k.b = b;
+  k.contact = contact;
+  return k;
+}
+
+// Both eigenvalues non-zero: a central conic about x0 (ellipse, hyperbola, point, crossing lines).
+std::vector<Conic> central(const PlaneConic& pc, const Eigen::Vector2d& lam, const Eigen::Matrix2d& R) {
+  const Eigen::Vector2d x0 = -pc.A.ldlt().solve(pc.b);
+  const double k = pc.c + pc.b.dot(x0);  // lam0 X^2 + lam1 Y^2 + k = 0 in the eigenbasis
+  const Vec3 c = pc.world(x0), w0 = pc.direction(R.col(0)), w1 = pc.direction(R.col(1));
+  if (lam[0] * lam[1] > 0) {
+    if (std::fabs(k) <= kEps) return {make(ConicType::kPoint, c, w0, w1, 0, 0, Contact::kTangential)};
+    if (k / lam[0] > 0) return {};
+    // |lam0| >= |lam1|: the semi-axis along w1 is the major one.
+    const double major = pc.scale * std::sqrt(-k / lam[1]), minor = pc.scale * std::sqrt(-k / lam[0]);
+    const bool circle = std::fabs(major - minor) <= kEps * major;
+    return {make(circle ? ConicType::kCircle : ConicType::kEllipse, c, w1, w0, major, circle ? major : minor,
+                 Contact::kTransversal)};
+  }
+  if (std::fabs(k) <= kEps) {  // two lines crossing at x0 (a plane through a cone's apex)
+    const double m = std::sqrt(-lam[0] / lam[1]);
+    return {make(ConicType::kLine, c, pc.direction(R.col(0) + m * R.col(1)), w1, 0, 0, Contact::kTransversal),
+            make(ConicType::kLine, c, pc.direction(R.col(0) - m * R.col(1)), w1, 0, 0, Contact::kTransversal)};
+  }
+  // Hyperbola: the transverse axis is the eigen-direction along which -k / lam > 0.
+  const int i = (-k / lam[0] > 0) ? 0 : 1, j = 1 - i;
+  const Vec3 t = i == 0 ? w0 : w1, n = i == 0 ? w1 : w0;
+  const double a = pc.scale * std::sqrt(-k / lam[i]), b = pc.scale * std::sqrt(k / lam[j]);
+  return {make(ConicType::kHyperbola, c, t, n, a, b, Contact::kTransversal),
+          make(ConicType::kHyperbola, c, -t, -n, a, b, Contact::kTransversal)};
+}
+
+// One eigenvalue zero: a parabola, two parallel lines or one double line (a tangential contact).
+std::vector<Conic> parabolic(const PlaneConic& pc, double lam, const Eigen::Matrix2d& R) {
+  const Eigen::Vector2d beta = R.transpose() * pc.b;  // lam X^2 + 2 b0 X + 2 b1 Y + c = 0
+  const double X0 = -beta[0] / lam, k = pc.c - beta[0] * beta[0] / lam;
+  const Vec3 w0 = pc.direction(R.col(0)), w1 = pc.direction(R.col(1));
+  if (std::fabs(beta[1]) > kEps) {
+    const double Y0 = -k / (2 * beta[1]);
+    const double opens = (lam * beta[1] > 0) ? -1.0 : 1.0;  // Y - Y0 = -(lam / (2 b1)) (X - X0)^2
+    const double focal = pc.scale * std::fabs(beta[1] / (2 * lam));
+    return {make(ConicType::kParabola, pc.world(R * Eigen::Vector2d(X0, Y0)), opens * w1, w0, focal, 0,
+                 Contact::kTransversal)};
+  }
+  if (std::fabs(k) <= kEps)
+    return {make(ConicType::kLine, pc.world(R * Eigen::Vector2d(X0, 0)), w1, w0, 0, 0, Contact::kTangential)};
+  if (k / lam > 0) return {};
+  const double d = std::sqrt(-k / lam);
+  return {make(ConicType::kLine, pc.world(R * Eigen::Vector2d(X0 + d, 0)), w1, w0, 0, 0, Contact::kTransversal),
+          make(ConicType::kLine, pc.world(R * Eigen::Vector2d(X0 - d, 0)), w1, w0, 0, 0, Contact::kTransversal)};
+}
+
+}  // namespace
+
+std::optional<std::vector<Conic>> plane_section(const Frame& plane, const Eigen::Matrix4d& Q, double scale) {
+  // Homogeneous world point of (s, t): M (s, t, 1) with the coordinates scaled by `scale`.
+  Eigen::Matrix<double, 4, 3> M = Eigen::Matrix<double, 4, 3>::Zero();
+  M.block<3, 1>(0, 0) = scale * plane.e0;
+  M.block<3, 1>(0, 1) = scale * plane.e1;
+  M.block<3, 1>(0, 2) = plane.origin;
+  M(3, 2) = 1;
+  Eigen::Matrix3d C = M.transpose() * Q * M;
+  const double m = C.cwiseAbs().maxCoeff();
+  if (!(m > 0) || !std::isfinite(m)) return std::nullopt;
+  C /= m;
+  PlaneConic pc{C.topLeftCorner<2, 2>(), C.topRightCorner<2, 1>(), C(2, 2), plane.origin, plane.e0, plane.e1, scale};
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(pc.A);
+  Eigen::Vector2d lam = eig.eigenvalues();
+  Eigen::Matrix2d R = eig.eigenvectors();
+  if (std::fabs(lam[0]) < std::fabs(lam[1])) {  // order by magnitude, largest first
+    std::swap(lam[0], lam[1]);
+    R.col(0).swap(R.col(1));
+  }
+  if (std::fabs(lam[0]) <= kEps) return std::nullopt;
+  if (std::fabs(lam[1]) > kEps) return central(pc, lam, R);
+  return parabolic(pc, lam[0], R);
+}
+
+}  // namespace ssimarch
