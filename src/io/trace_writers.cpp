@@ -76,7 +76,7 @@ json to_json(const IntersectionRun& run) {
     json ends = c.closed ? json{{"start", end_json(Termination::kClosedLoop, "closed loop")},
                                 {"end", end_json(Termination::kClosedLoop, "closed loop")}}
                          : json{{"start", end_json(c.start_end, c.start_message)}, {"end", end_json(c.end_end, c.end_message)}};
-    curves.push_back(json{{"closed", c.closed}, {"length", c.length}, {"num_points", c.points.size()}, {"ends", ends},
+    curves.push_back(json{{"closed", c.closed}, {"tangential_contact", c.tangential_contact}, {"length", c.length}, {"num_points", c.points.size()}, {"ends", ends},
                           {"points", std::move(points)}});
   }
   json names = json::array();

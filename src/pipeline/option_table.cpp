@@ -110,6 +110,20 @@ Row flag_row(TraceOptionSpec spec, bool TraceOptions::*field) {
              [field](const TraceJobOptions& o) { return std::string(o.trace.*field ? "true" : "false"); }, {}};
 }
 
+// A yes/no option of the trace job itself (not of the marching).
+Row job_flag_row(TraceOptionSpec spec, bool TraceJobOptions::*field) {
+  spec.type = TraceOptionSpec::Type::kChoice;
+  spec.choices = {"true", "false"};
+  spec.rule = "true or false";
+  return Row{std::move(spec), {}, {},
+             [field](TraceJobOptions* o, std::string_view s) {
+               if (s != "true" && s != "false") return false;
+               o->*field = s == "true";
+               return true;
+             },
+             [field](const TraceJobOptions& o) { return std::string(o.*field ? "true" : "false"); }, {}};
+}
+
 Row geometry_row() {
   TraceOptionSpec spec = describe("geometry", "", "none",
                                   "add t, n, b, kappa, tau, kappa_prime, theta to each output point, by this method "
@@ -183,6 +197,11 @@ std::vector<Row> make_rows() {
                                      "boxes the certified search examines per square system before it reports the rest "
                                      "as `uncertain_regions`"),
                             Range{1, 1e9, false, false, false, {}}, &TraceOptions::start_box_budget));
+  rows.push_back(job_flag_row(describe("hunt_isolated_points", "", "true",
+                                       "report the isolated points and the curves of tangential contact no traced curve "
+                                       "meets, hunted where the start-point search left uncertain regions (docs/singular.md)",
+                                       "yes/no"),
+                              &TraceJobOptions::hunt_isolated_points));
   rows.push_back(geometry_row());
   return rows;
 }

@@ -4,6 +4,8 @@
 
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/geometry/intersection_geometry.hpp"
+#include "ssimarch/pipeline/branch_geometry.hpp"
+#include "ssimarch/singular/locate.hpp"
 #include "ssimarch/topology/trace_all.hpp"
 
 namespace ssimarch {
@@ -39,7 +41,9 @@ std::vector<IntersectionSpec> select_intersections(const Scene& scene, const Tra
 
 IntersectionRun run_intersection(const Scene& scene, const IntersectionSpec& spec) {
   IntersectionRun run{spec, scene.problem(spec), {}, {}};
-  run.result = trace_all(run.problem, spec.options.trace, spec.starts);
+  TraceAllOptions all;
+  all.hunt_isolated_points = spec.options.hunt_isolated_points;
+  run.result = trace_all(run.problem, spec.options.trace, spec.starts, all);
   if (spec.options.geometry)
     for (const TracedCurve& c : run.result.curves)
       run.geometry.push_back(geometry_along_curve(run.problem, c, *spec.options.geometry));
@@ -68,6 +72,16 @@ std::vector<CurveGeometry> geometry_along_curve(const Problem& problem, const Tr
     if (k + 1 < m) ctx.next.push_back(curve.points[k + 1].x);
     else if (curve.closed && m > 1) ctx.next.push_back(curve.points[0].x);
     ctx.orientation = curve.points[i].t;
+    // mixed at a singular point of the curve (sin theta at the rounding floor of its location):
+    // the geometry along the half-branch the curve leaves by (pipeline/branch_geometry.hpp).
+    if (method == GeometryMethod::kMixed) {
+      const Linearization L = problem.linearize(curve.points[i].x);
+      if (L.normal_first.cross(L.normal_second).norm() <= LocateOptions{}.sine_tolerance)
+        if (auto g = singular_branch_geometry(problem, curve.points[i].x, &curve.points[i].t, 1e-9 * std::max(1.0, problem.scale()))) {
+          out.push_back(g->geometry);
+          continue;
+        }
+    }
     out.push_back(evaluate_geometry(problem, curve.points[i].x, method, ctx));
   }
   return out;

@@ -7,6 +7,7 @@
 #include "ssimarch/topology/certified_start_points.hpp"
 #include "ssimarch/singular/detection.hpp"
 #include "ssimarch/topology/start_points.hpp"
+#include "ssimarch/topology/tangency_hunt.hpp"
 #include "ssimarch/topology/through_singular.hpp"
 
 namespace ssimarch {
@@ -86,27 +87,6 @@ TracedCurve trace_from_half_branch(const Tracer& tracer, SingularRegistry* regis
   return curve;
 }
 
-// Isolated singular points (no real branch through them), hunted over the domain for
-// parametric-implicit pairs (singular/detection.hpp).
-std::vector<SingularPointReport> isolated_points(const Problem& P, const SingularRegistry& registry) {
-  std::vector<SingularPointReport> out;
-  if (P.kind() != PairKind::kParametricImplicit) return out;
-  HuntOptions hunt;
-  // Tangent surfaces only: a grid cell from an isolated point sin(theta) is about a cell's
-  // fraction of the scale; 0.2 leaves room while skipping the transversal rest of the curve.
-  hunt.max_sine = 0.2;
-  for (const SingularLocation& s : hunt_singular_points(P, hunt)) {
-    bool known = false;
-    for (const auto& n : registry.nodes()) known = known || (n.location.point - s.point).norm() <= 1e-7 * std::max(1.0, P.scale());
-    if (known) continue;
-    const LocalCurve c = local_curve(P, s.x);
-    if (c.status != LocalCurveStatus::kOk) continue;
-    const Classification kind = classify(c.h);
-    if (kind.type == SingularType::kIsolated) out.push_back(make_report(s, kind, {}));
-  }
-  return out;
-}
-
 }  // namespace
 
 TracedCurve trace_curve_through(const Tracer& tracer, const VecX& x0, TraceStats* stats, SingularRegistry* registry,
@@ -171,8 +151,12 @@ TraceResult trace_all(const Tracer& tracer, const std::vector<Vec3>& starts, con
   for (const VecX& seed : seeds) {
     const VecX x = regular_start(tracer, seed, &result.warnings);
     if (near_traced_curve(P.point(x), result.curves, radius)) continue;
+    if (reg && trace_contact_from(tracer, x, &result.curves, reg)) continue;  // a curve of tangential contact
     result.curves.push_back(trace_curve_through(tracer, x, &result.stats, reg, static_cast<int>(result.curves.size())));
   }
+  if (reg && options.hunt_isolated_points)
+    hunt_tangencies(tracer, result.start_search, reg, &result.curves, &result.isolated_points);
+  if (reg) attach_crossings(reg, &result.curves, radius);
   // Every half-branch leaving a singular point is traced once (nodes may be added meanwhile).
   for (std::size_t n = 0; reg && n < registry.nodes().size(); ++n)
     for (std::size_t k = 0; k < registry.nodes()[n].branches.size(); ++k) {
@@ -182,10 +166,7 @@ TraceResult trace_all(const Tracer& tracer, const std::vector<Vec3>& starts, con
       for (auto& p : c.points) p.x = P.wrap(p.x);
       result.curves.push_back(std::move(c));
     }
-  if (reg) {
-    result.singular_points = registry.reports();
-    if (options.hunt_isolated_points) result.isolated_points = isolated_points(P, registry);
-  }
+  if (reg) result.singular_points = registry.reports();
   result.stats.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return result;
 }

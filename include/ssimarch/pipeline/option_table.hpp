@@ -19,6 +19,7 @@ namespace ssimarch {
 struct TraceJobOptions {
   TraceOptions trace;                      // how the curve is marched (march/options.hpp)
   std::optional<GeometryMethod> geometry;  // differential geometry at every output point, by this method
+  bool hunt_isolated_points = true;        // TraceAllOptions::hunt_isolated_points (topology/trace_all.hpp)
 };
 
 /// A value as the user wrote it: a JSON number, or text (a name such as "taylor", or a number
