@@ -29,13 +29,17 @@ nlohmann::json point_json(const Problem& problem, const SingularLocation& s) {
   const Classification kind = classify(curve.h);
   const std::vector<HalfBranch> hb = half_branches(problem, curve, kind);
   nlohmann::json branches = nlohmann::json::array();
-  for (const HalfBranch& b : hb)
+  for (const HalfBranch& b : hb) {
+    nlohmann::json terms = nlohmann::json::array();
+    for (const PuiseuxTerm& t : b.expansion.terms) terms.push_back({{"exponent", t.exponent}, {"coefficient", t.coefficient}});
     branches.push_back({{"tangent", vec_json(b.tangent_3d)},
                         {"param_tangent", vec_json(b.param_tangent)},
-                        {"expansion", {{"coefficient", b.offset_coefficient}, {"exponent", b.offset_exponent}}},
+                        {"expansion", {{"coefficient", b.offset_coefficient}, {"exponent", b.offset_exponent},
+                                       {"normal", vec_json(b.normal_3d)}, {"terms", terms}}},
                         {"branch", b.branch},
                         {"continuation", b.continuation},
                         {"exit", b.exit_ok ? vec_json(b.exit_point) : nlohmann::json(nullptr)}});
+  }
   nlohmann::json cone = nlohmann::json::array();
   for (const auto& l : kind.tangent_cone) cone.push_back({{"direction", vec_json(curve.direction_3d(l.direction))}, {"multiplicity", l.multiplicity}});
   return {{"xyz", vec_json(s.point)},

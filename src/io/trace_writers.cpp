@@ -125,7 +125,7 @@ json to_json(const IntersectionRun& run) {
     const auto& b = run.network.branches;
     const NetworkBranch* branch = ci < b.size() && b[ci].curve == static_cast<int>(ci) ? &b[ci] : nullptr;
     const json index = branch && branch->rotation.index ? json(*branch->rotation.index) : json(nullptr);
-    json curve{{"closed", c.closed}, {"length", c.length}, {"num_points", c.points.size()}, {"ends", ends},
+    json curve{{"closed", c.closed}, {"tangential_contact", c.tangential_contact}, {"length", c.length}, {"num_points", c.points.size()}, {"ends", ends},
                {"rotation_index", index}, {"points", std::move(points)}};
     if (ci < run.conics.size()) curve["conic"] = conic_to_json(run.conics[ci]);
     if (ci < run.splines.size() && run.splines[ci]) add_spline(*run.splines[ci], parametric_surface_names(run), &curve);

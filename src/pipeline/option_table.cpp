@@ -122,6 +122,20 @@ Row job_flag_row(TraceOptionSpec spec, bool TraceJobOptions::*field) {
   return yes_no_row(std::move(spec), [field](auto& o) -> auto& { return o.*field; });
 }
 
+// A yes/no option of the trace job itself (not of the marching).
+Row job_flag_row(TraceOptionSpec spec, bool TraceJobOptions::*field) {
+  spec.type = TraceOptionSpec::Type::kChoice;
+  spec.choices = {"true", "false"};
+  spec.rule = "true or false";
+  return Row{std::move(spec), {}, {},
+             [field](TraceJobOptions* o, std::string_view s) {
+               if (s != "true" && s != "false") return false;
+               o->*field = s == "true";
+               return true;
+             },
+             [field](const TraceJobOptions& o) { return std::string(o.*field ? "true" : "false"); }, {}};
+}
+
 Row geometry_row() {
   TraceOptionSpec spec = describe("geometry", "", "none",
                                   "add t, n, b, kappa, tau, kappa_prime, theta to each output point, by this method "
@@ -232,6 +246,11 @@ std::vector<Row> make_rows() {
                                        "exact points (docs/math/closed_form_quadrics.md); false: trace them",
                                        "yes/no"),
                               &TraceJobOptions::closed_form));
+  rows.push_back(job_flag_row(describe("hunt_isolated_points", "", "true",
+                                       "report the isolated points and the curves of tangential contact no traced curve "
+                                       "meets, hunted where the start-point search left uncertain regions (docs/singular.md)",
+                                       "yes/no"),
+                              &TraceJobOptions::hunt_isolated_points));
   rows.push_back(geometry_row());
   rows.push_back(bspline_row());
   rows.push_back(bspline_tolerance_row());

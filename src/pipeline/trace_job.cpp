@@ -5,6 +5,8 @@
 #include "ssimarch/analytic/closed_form.hpp"
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/geometry/intersection_geometry.hpp"
+#include "ssimarch/pipeline/branch_geometry.hpp"
+#include "ssimarch/singular/locate.hpp"
 #include "ssimarch/topology/trace_all.hpp"
 
 namespace ssimarch {
@@ -48,7 +50,9 @@ IntersectionRun run_intersection(const Scene& scene, const IntersectionSpec& spe
     run.result = std::move(exact->result);
     run.conics = std::move(exact->conics);
   } else {
-    run.result = trace_all(run.problem, spec.options.trace, spec.starts);
+    TraceAllOptions all;
+    all.hunt_isolated_points = spec.options.hunt_isolated_points;
+    run.result = trace_all(run.problem, spec.options.trace, spec.starts, all);
   }
   run.network = build_curve_network(run.problem, run.result);
   for (const NetworkFailure& f : run.network.failures)
@@ -117,6 +121,16 @@ std::vector<CurveGeometry> geometry_along_curve(const Problem& problem, const Tr
     if (k + 1 < m) ctx.next.push_back(curve.points[k + 1].x);
     else if (curve.closed && m > 1) ctx.next.push_back(curve.points[0].x);
     ctx.orientation = curve.points[i].t;
+    // mixed at a singular point of the curve (sin theta at the rounding floor of its location):
+    // the geometry along the half-branch the curve leaves by (pipeline/branch_geometry.hpp).
+    if (method == GeometryMethod::kMixed) {
+      const Linearization L = problem.linearize(curve.points[i].x);
+      if (L.normal_first.cross(L.normal_second).norm() <= LocateOptions{}.sine_tolerance)
+        if (auto g = singular_branch_geometry(problem, curve.points[i].x, &curve.points[i].t, 1e-9 * std::max(1.0, problem.scale()))) {
+          out.push_back(g->geometry);
+          continue;
+        }
+    }
     out.push_back(evaluate_geometry(problem, curve.points[i].x, method, ctx));
   }
   return out;

@@ -3,6 +3,7 @@
 #include <Eigen/LU>
 #include <Eigen/QR>
 #include <cmath>
+#include <optional>
 
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/problem/closest_point.hpp"
@@ -40,10 +41,10 @@ StepSignals step_signals(const Problem& problem, const VecX& a, const VecX& b, c
 
 namespace {
 
-// Starting unknowns spread over the problem: a grid over the first surface's domain (the second
-// surface's nearest parameters added for parametric-parametric pairs) or over the 3D box.
-std::vector<VecX> grid_starts(const Problem& problem, int n, double* cell) {
-  const auto& B = problem.bounds();
+// Starting unknowns spread over the box B of the unknowns: a grid over the first surface's
+// parameters (the second surface's nearest parameters added for parametric-parametric pairs) or
+// over the 3D box. *cell: the 3D size of a grid cell.
+std::vector<VecX> grid_starts(const Problem& problem, const std::vector<Interval>& B, int n, double* cell) {
   std::vector<VecX> starts;
   auto lerp = [&](int k, int i) { return B[static_cast<std::size_t>(k)].lo + B[static_cast<std::size_t>(k)].width() * i / (n - 1); };
   if (problem.kind() == PairKind::kImplicitImplicit) {
@@ -58,7 +59,6 @@ std::vector<VecX> grid_starts(const Problem& problem, int n, double* cell) {
         }
     return starts;
   }
-  *cell = 0;
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {
       const double u = lerp(0, i), v = lerp(1, j);
@@ -73,7 +73,7 @@ std::vector<VecX> grid_starts(const Problem& problem, int n, double* cell) {
       }
       starts.push_back(x);
     }
-  // The 3D size of a cell: the largest image of one grid step (from the middle of the domain).
+  // The 3D size of a cell: the largest image of one grid step (from the middle of the box).
   using J = Jet<2, 1>;
   const Vec3T<J> F = problem.first().point(J::variable(0, lerp(0, n / 2)), J::variable(1, lerp(1, n / 2)));
   const Vec3 Fu(F.x.d(0), F.y.d(0), F.z.d(0)), Fv(F.x.d(1), F.y.d(1), F.z.d(1));
@@ -81,34 +81,55 @@ std::vector<VecX> grid_starts(const Problem& problem, int n, double* cell) {
   return starts;
 }
 
+// The start's Newton target: where Newton's step on grad h = 0 leads from x0, if the surfaces
+// come within a cell there and the step stays within about one cell (every critical point of h
+// attracts the grid points around it).
+std::optional<VecX> newton_target(const Problem& problem, const VecX& x0, double cell, double max_sine) {
+  const Linearization L0 = problem.linearize(x0);
+  if (!(L0.distance <= cell) || L0.normal_first.cross(L0.normal_second).norm() > max_sine) return std::nullopt;
+  const LocalCurve c = local_curve(problem, x0);
+  if (c.status != LocalCurveStatus::kOk) return std::nullopt;
+  const LocalValue v = evaluate(c.h, Vec2::Zero());
+  Eigen::CompleteOrthogonalDecomposition<Eigen::Matrix2d> cod(v.hessian);
+  const Vec2 step = -cod.solve(v.gradient);
+  if (!step.allFinite() || step.norm() > cell) return std::nullopt;
+  return c.unknowns_at(step);
+}
+
+bool near_any(const std::vector<Vec3>& points, const Vec3& p, double r) {
+  for (const Vec3& q : points)
+    if ((q - p).norm() <= r) return true;
+  return false;
+}
+
 }  // namespace
 
 std::vector<SingularLocation> hunt_singular_points(const Problem& problem, const HuntOptions& options) {
   if (options.grid < 3) throw InputError("hunt_singular_points.grid", "needs at least 3 samples per direction");
-  double cell = 0;
-  const std::vector<VecX> starts = grid_starts(problem, options.grid, &cell);
+  if (options.region_grid < 2) throw InputError("hunt_singular_points.region_grid", "needs at least 2 samples per direction");
+  const std::vector<std::vector<Interval>> boxes = options.regions.empty() ? std::vector<std::vector<Interval>>{problem.bounds()} : options.regions;
   std::vector<SingularLocation> found;
-  for (const VecX& x0 : starts) {
-    // Only where the surfaces come within a cell of each other (first-order distance).
-    const Linearization L0 = problem.linearize(x0);
-    if (!(L0.distance <= cell) || L0.normal_first.cross(L0.normal_second).norm() > options.max_sine) continue;
-    // Newton step towards a critical point of the local curve h; keep starts whose step stays
-    // within about one cell (every critical point of h attracts the grid points around it).
-    const LocalCurve c = local_curve(problem, x0);
-    if (c.status != LocalCurveStatus::kOk) continue;
-    const LocalValue v = evaluate(c.h, Vec2::Zero());
-    Eigen::CompleteOrthogonalDecomposition<Eigen::Matrix2d> cod(v.hessian);
-    const Vec2 step = -cod.solve(v.gradient);
-    if (!step.allFinite() || step.norm() > cell) continue;
-    const VecX x = c.unknowns_at(step);
-    bool known = false;
-    for (const auto& f : found) known = known || (f.point - problem.point(x)).norm() <= 1e-3 * cell;
-    if (known) continue;
-    SingularLocation s = locate_singular_point(problem, x, options.locate);
-    if (s.status != LocateStatus::kConverged || !problem.inside(s.x, 1e-9)) continue;
-    known = false;
-    for (const auto& f : found) known = known || problem.difference(f.x, s.x).norm() <= options.merge_distance;
-    if (!known) found.push_back(s);
+  std::vector<Vec3> located;  // every point a location ended at, singular or not
+  for (const auto& box : boxes) {
+    double cell = 0;
+    const int n = options.regions.empty() ? options.grid : options.region_grid;
+    for (const VecX& x0 : grid_starts(problem, box, n, &cell)) {
+      // A box narrower than the grid of the whole domain still admits starts a domain cell away.
+      const double reach = options.regions.empty() ? cell : std::max(cell, 1e-3 * problem.scale());
+      const std::optional<VecX> x = newton_target(problem, x0, reach, options.max_sine);
+      if (!x) continue;
+      const Vec3 p = problem.point(*x);
+      if (near_any(located, p, 0.1 * reach) || (options.skip && options.skip(p))) continue;
+      SingularLocation s = locate_singular_point(problem, *x, options.locate);
+      if (s.status == LocateStatus::kFailed) continue;
+      located.push_back(s.point);
+      if (s.status != LocateStatus::kConverged || !problem.inside(s.x, 1e-9)) continue;
+      bool known = false;
+      for (const auto& f : found) known = known || problem.difference(f.x, s.x).norm() <= options.merge_distance;
+      if (known) continue;
+      found.push_back(s);
+      if (options.on_found) options.on_found(s);
+    }
   }
   return found;
 }

@@ -164,6 +164,11 @@ std::vector<HalfBranch> half_branches_at(const Problem& problem, const LocalCurv
     const Vec2& d = kind.tangent_cone[static_cast<std::size_t>(b.line)].direction;
     offset_term(curve.h, p, Vec2(-d[1], d[0]), b.tangent, &b);
     b.tangent_3d = curve.direction_3d(b.tangent);
+    // The expansion in the half-branch's own frame: rot90(tangent) = +-rot90(d).
+    const auto [num, den] = exponent_fraction(b.offset_exponent);
+    const double leading = (b.tangent.dot(d) > 0 ? 1.0 : -1.0) * b.offset_coefficient;
+    b.expansion = puiseux_expansion(curve.h, b.tangent, leading, num, den);
+    b.normal_3d = curve.direction_3d(Vec2(-b.tangent[1], b.tangent[0]));
     b.param_tangent = dx * b.tangent;
     exit_point(problem, curve, p, options, &b);
     out.push_back(b);

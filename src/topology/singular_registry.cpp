@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "ssimarch/topology/tangential_contact.hpp"
+
 namespace ssimarch {
 
 int SingularRegistry::add(const SingularLocation& s) {
@@ -15,6 +17,19 @@ int SingularRegistry::add(const SingularLocation& s) {
   n.curve = local_curve(problem_, s.x);
   if (n.curve.status == LocalCurveStatus::kOk) {
     n.kind = classify(n.curve.h);
+    // A point of a curve of tangential contact: a march along a transversal branch met it where
+    // the branch crosses that curve, but the location converged to the nearest contact point;
+    // move to the crossing (docs/math/tangential_contact.md §3).
+    if (n.kind.type == SingularType::kTangentialContact) {
+      if (auto c = crossing_near(problem_, n.location.x, 0.1 * problem_.scale())) {
+        for (std::size_t i = 0; i < nodes_.size(); ++i)
+          if ((nodes_[i].location.point - c->point).norm() <= merge_) return static_cast<int>(i);
+        n.location = *c;
+        n.location.x = problem_.wrap(c->x);
+        n.curve = local_curve(problem_, n.location.x);
+        n.kind = classify(n.curve.h);
+      }
+    }
     n.branches = half_branches(problem_, n.curve, n.kind);
   }
   n.used.assign(n.branches.size(), false);
@@ -60,8 +75,11 @@ SingularPointReport make_report(const SingularLocation& s, const Classification&
   r.ak = kind.ak;
   r.multiplicity = kind.multiplicity;
   r.milnor = kind.milnor;
-  for (const HalfBranch& b : branches)
-    r.half_branches.push_back({b.tangent_3d, b.param_tangent, b.offset_coefficient, b.offset_exponent, b.continuation});
+  for (const HalfBranch& b : branches) {
+    SingularPointReport::HalfBranch h{b.tangent_3d, b.param_tangent, b.offset_coefficient, b.offset_exponent, b.continuation, {}, b.normal_3d};
+    for (const PuiseuxTerm& t : b.expansion.terms) h.expansion.push_back({t.exponent, t.coefficient});
+    r.half_branches.push_back(std::move(h));
+  }
   return r;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace ssimarch {
 
@@ -52,39 +53,69 @@ bool closes_before(const CurvePoint& start, const CurvePoint& last, const Vec3& 
   return (start.p - (last.p + tau * seg)).norm() <= allowance && start.t.dot(last.t) > 0.5;
 }
 
+// Options whose steps are at most `cap` (model units): after a near miss the march retakes the
+// stretch with steps short enough to follow the curve itself, since the step that reversed the
+// orientation may have jumped to a nearby arc (two arcs 0.0365 apart in the double eight at
+// 0.917); retaking the same step would repeat that jump. None when cap is below what the options
+// admit (then the step is a sharp smooth turn resolved to min_step: it is taken unwatched).
+std::optional<TraceOptions> short_steps(const Tracer& tracer, double cap) {
+  TraceOptions o = tracer.options();
+  if (!(cap > 10 * o.min_step)) return std::nullopt;
+  o.step_length = std::min(o.step_length, cap);
+  o.min_step_length = std::min(o.min_step_length, 0.5 * o.step_length);
+  std::string error;
+  if (!o.is_valid(&error)) return std::nullopt;
+  return o;
+}
+
 }  // namespace
 
 BranchMarch march_branch(const Tracer& tracer, const CurvePoint& start, const CurvePoint* close_at,
                          SingularRegistry* registry, int curve, TraceStats* stats, int from_node, int from_half,
                          const MarchLimits* base_limits) {
   const MarchLimits base = base_limits ? *base_limits : tracer.limits();
+  const Problem& P = tracer.problem();
   BranchMarch out;
   out.points.push_back(start);
   CurvePoint from = start;
-  bool near_miss = false;
+  bool unwatched_first = false;
+  std::optional<Tracer> fine;  // short steps over the stretch of a near miss
+  double fine_length = 0;
   for (int passage = 0;; ++passage) {
     MarchLimits limits = base;
     limits.watch_crossings = true;
-    limits.skip_first_watch = near_miss;
+    limits.skip_first_watch = unwatched_first;
     limits.close_at = close_at;
     limits.detect_closure = close_at != nullptr;
     limits.max_points = std::max<long>(2, base.max_points - static_cast<long>(out.points.size()) + 1);
     limits.max_length = std::max(0.0, base.max_length - out.length);
-    MarchResult r = tracer.march_until_event(from, Direction::kForward, limits, stats);
+    if (fine) limits.max_length = std::min(limits.max_length, fine_length);
+    MarchResult r = (fine ? *fine : tracer).march_until_event(from, Direction::kForward, limits, stats);
     const std::size_t begin = out.points.size() - 1;  // index of `from`
     out.points.insert(out.points.end(), r.points.begin() + 1, r.points.end());
     out.length += r.length;
     out.event = r.event;
     out.closed = r.event.kind == EventKind::kClosed;
+    unwatched_first = false;
+    if (fine && r.event.kind == EventKind::kBudget && out.length < base.max_length) {
+      fine.reset();  // the stretch is passed: back to the options' steps
+      from = out.points.back();
+      continue;
+    }
     if (r.event.kind != EventKind::kSingularSuspected || passage >= kMaxPassages) return out;
     SingularLocation loc;
     if (!locate_near(tracer, out.points.back(), r.event, &loc)) {
       if (r.event.beyond.size() == 0) return out;  // stuck, and no singular point there
-      from = out.points.back();  // a near miss: the orientation reversed without a singular point
-      near_miss = true;
+      // A near miss: the orientation reversed (or the rank ratio dipped) without a singular point.
+      from = out.points.back();
+      const double chord = (P.point(r.event.beyond) - from.p).norm();
+      fine.reset();
+      if (auto o = short_steps(tracer, 0.25 * chord)) fine.emplace(P, *o);
+      fine_length = 2 * chord;
+      unwatched_first = !fine;
       continue;
     }
-    near_miss = false;
+    fine.reset();
     trim_beyond(loc.point, begin, &out);
     if (close_at && closes_before(*close_at, out.points.back(), loc.point, 1e-9 * std::max(1.0, tracer.problem().scale()))) {
       const CurvePoint& last = out.points.back();
@@ -95,6 +126,8 @@ BranchMarch march_branch(const Tracer& tracer, const CurvePoint& start, const Cu
       return out;
     }
     const int n = registry->add(loc);
+    loc = registry->node(n).location;  // the registry may have moved it (onto a tangent-line crossing)
+    trim_beyond(loc.point, begin, &out);
     const CurvePoint last = out.points.back();
     const int in = registry->arriving_half_branch(n, last);
     registry->mark(n, in, curve);

@@ -11,6 +11,7 @@
 #include "ssimarch/topology/certified_start_points.hpp"
 #include "ssimarch/singular/detection.hpp"
 #include "ssimarch/topology/start_points.hpp"
+#include "ssimarch/topology/tangency_hunt.hpp"
 #include "ssimarch/topology/through_singular.hpp"
 
 namespace ssimarch {
@@ -111,27 +112,6 @@ Vec3 canonical_direction(const Vec3& t) {
   for (int i = 1; i < 3; ++i)
     if (std::abs(t[i]) > std::abs(t[k]) + 1e-12) k = i;
   return t[k] < 0 ? Vec3(-t) : t;
-}
-
-// Isolated singular points (no real branch through them), hunted over the domain for
-// parametric-implicit pairs (singular/detection.hpp).
-std::vector<SingularPointReport> isolated_points(const Problem& P, const SingularRegistry& registry) {
-  std::vector<SingularPointReport> out;
-  if (P.kind() != PairKind::kParametricImplicit) return out;
-  HuntOptions hunt;
-  // Tangent surfaces only: a grid cell from an isolated point sin(theta) is about a cell's
-  // fraction of the scale; 0.2 leaves room while skipping the transversal rest of the curve.
-  hunt.max_sine = 0.2;
-  for (const SingularLocation& s : hunt_singular_points(P, hunt)) {
-    bool known = false;
-    for (const auto& n : registry.nodes()) known = known || (n.location.point - s.point).norm() <= 1e-7 * std::max(1.0, P.scale());
-    if (known) continue;
-    const LocalCurve c = local_curve(P, s.x);
-    if (c.status != LocalCurveStatus::kOk) continue;
-    const Classification kind = classify(c.h);
-    if (kind.type == SingularType::kIsolated) out.push_back(make_report(s, kind, {}));
-  }
-  return out;
 }
 
 }  // namespace
@@ -319,12 +299,16 @@ TraceResult trace_all(const Tracer& unbounded, const std::vector<Vec3>& starts, 
   starts_regular.insert(starts_regular.end(), starts_moved.begin(), starts_moved.end());
   for (const VecX& x : starts_regular) {
     if (near_traced_curve(P.point(x), result.curves, radius)) continue;
+    if (reg && trace_contact_from(tracer, x, &result.curves, reg)) continue;  // a curve of tangential contact
     const std::vector<LooseEnd> ends = loose_ends(result.curves, registry, registry_tol);
     const std::vector<TracedCurve> stub = stubs(result.curves, ends);
     TracedCurve c = trace_curve_through(tracer, x, &result.stats, reg, static_cast<int>(result.curves.size()),
                                         ends.empty() ? nullptr : &stub, radius);
     add_or_join(std::move(c), ends, &result.curves, reg);
   }
+  if (reg && options.hunt_isolated_points)
+    hunt_tangencies(tracer, result.start_search, reg, &result.curves, &result.isolated_points);
+  if (reg) attach_crossings(reg, &result.curves, radius);
   // Every half-branch leaving a singular point is traced once (nodes may be added meanwhile).
   for (std::size_t n = 0; reg && n < registry.nodes().size(); ++n)
     for (std::size_t k = 0; k < registry.nodes()[n].branches.size(); ++k) {
@@ -335,10 +319,7 @@ TraceResult trace_all(const Tracer& unbounded, const std::vector<Vec3>& starts, 
       result.curves.push_back(std::move(c));
     }
   for (TracedCurve& c : result.curves) explain_bound(bound, &c);
-  if (reg) {
-    result.singular_points = registry.reports();
-    if (options.hunt_isolated_points) result.isolated_points = isolated_points(P, registry);
-  }
+  if (reg) result.singular_points = registry.reports();
   result.stats.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return result;
 }

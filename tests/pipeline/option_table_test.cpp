@@ -68,6 +68,8 @@ const BadValue kBadValues[] = {
     {"closed_form", "0", "expected a yes/no name (true or false), got a number"},
     {"closed_form", "\"exact\"", "exact"},
     {"start_box_budget", "0", "must be an integer in [1, 1e+09], got 0"},
+    {"hunt_isolated_points", "1", "expected a yes/no name (true or false), got a number"},
+    {"hunt_isolated_points", "\"sometimes\"", "sometimes"},
     {"geometry", "\"guesswork\"", "unknown geometry method \"guesswork\" (known: exact, ye-maekawa, willmore, stoyanov, estimate, barnhill-kersey, mixed)"},
     {"geometry", "true", "must be one of exact, ye-maekawa, willmore, stoyanov, estimate, barnhill-kersey, mixed, got a boolean"},
     {"bspline", "\"yes\"", "yes"},

@@ -216,3 +216,45 @@ TEST(ClassifyPoint, TangentialContactAndTangentLineCrossing) {
 
 }  // namespace
 }  // namespace ssimarch
+
+namespace ssimarch {
+namespace {
+
+// A_k for every k the degree-10 jet resolves (issue 10; docs/math/singular_local_curve.md §3):
+// x^2 -+ y^(k+1), also after a shear and a rotation of the coordinates (the classification is
+// invariant; the splitting lemma must find the same k). Names: node/isolated (k = 1), cusp (2),
+// tacnode/isolated (3), ramphoid_cusp (4), oscnode/isolated (5), higher_double_point (6..9, two
+// real branches for odd k with x^2 - y^(k+1)) or isolated (odd k with x^2 + y^(k+1)); ak = "A<k>",
+// Milnor number k, two real branches crossing iff (k+1)/2 is odd.
+TEST(Classify, AkSeriesUpToTheJetOrder) {
+  Eigen::Matrix2d shear_rotate;
+  const double a = 0.7;
+  shear_rotate << std::cos(a), -std::sin(a), std::sin(a), std::cos(a);
+  shear_rotate = shear_rotate * (Eigen::Matrix2d() << 1, 0.3, 0, 1.2).finished();
+  for (int k = 1; k <= kLocalOrder - 1; ++k)
+    for (const double sign : {-1.0, 1.0})
+      for (const bool transformed : {false, true}) {
+        LocalJet h = testing::germ({{2, 0, 1}, {0, k + 1, sign}});
+        if (transformed) h = linear_substitution(h, shear_rotate);
+        const Classification c = classify(h);
+        SCOPED_TRACE("k = " + std::to_string(k) + ", sign " + std::to_string(sign) + (transformed ? ", transformed" : ""));
+        EXPECT_EQ(c.ak, "A" + std::to_string(k));
+        EXPECT_EQ(c.ak_index, k);
+        EXPECT_EQ(c.milnor, k);
+        EXPECT_EQ(c.multiplicity, 2);
+        const bool two = k % 2 == 1 && sign < 0;
+        EXPECT_EQ(c.real_branches, k % 2 == 0 ? 1 : (two ? 2 : 0));
+        EXPECT_EQ(c.crossing, two && ((k + 1) / 2) % 2 == 1);
+        SingularType expected = SingularType::kHigherDoublePoint;
+        if (k % 2 == 1 && !two) expected = SingularType::kIsolated;
+        else if (k == 1) expected = SingularType::kNode;
+        else if (k == 2) expected = SingularType::kCusp;
+        else if (k == 3) expected = SingularType::kTacnode;
+        else if (k == 4) expected = SingularType::kRamphoidCusp;
+        else if (k == 5) expected = SingularType::kOscnode;
+        EXPECT_EQ(c.type, expected) << to_string(c.type);
+      }
+}
+
+}  // namespace
+}  // namespace ssimarch

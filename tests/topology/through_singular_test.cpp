@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "ssimarch/pipeline/trace_job.hpp"
@@ -144,22 +145,28 @@ TEST(ThroughSingular, TacnodeAndNodeOfExample18) {
     for (int i : s->curves) EXPECT_TRUE(has_point(r.curves[static_cast<std::size_t>(i)], s->p, 1e-10));
 }
 
-TEST(ThroughSingular, IsolatedPointIsReported) {
-  // Ex. 16: the origin is an isolated real point (A5 of real form x^2 + y^6).
-  const Scene scene = load_scene(std::string(SSIMARCH_SOURCE_DIR) + "/examples/thesis_ex16_isolated_point.json");
-  const IntersectionSpec& spec = scene.intersections.at(0);
-  TraceAllOptions all;
-  EXPECT_TRUE(trace_all(scene.problem(spec), spec.options.trace, spec.starts, all).isolated_points.empty());  // off by default
-  all.hunt_isolated_points = true;
-  const TraceResult r = trace_all(scene.problem(spec), spec.options.trace, spec.starts, all);
+TEST(ThroughSingular, IsolatedPointIsReportedByDefault) {
+  // Ex. 16: the origin is an isolated real point (A5 of real form x^2 + y^6), reported with the
+  // scene's own (default) options.
+  const TraceResult r = run_example("thesis_ex16_isolated_point.json").result;
   ASSERT_EQ(r.isolated_points.size(), 1u);
   EXPECT_EQ(r.isolated_points[0].type, "isolated");
   EXPECT_EQ(r.isolated_points[0].ak, "A5");
   EXPECT_LE(r.isolated_points[0].p.norm(), 1e-10);
+  // Off on request.
+  const Scene scene = load_scene(std::string(SSIMARCH_SOURCE_DIR) + "/examples/thesis_ex16_isolated_point.json");
+  const IntersectionSpec& spec = scene.intersections.at(0);
+  TraceAllOptions all;
+  all.hunt_isolated_points = false;
+  EXPECT_TRUE(trace_all(scene.problem(spec), spec.options.trace, spec.starts, all).isolated_points.empty());
 }
 
 TEST(ThroughSingular, NearMissStaysSmooth) {
-  // Ex. 21 at the seed's printed level 0.917 (arcs 0.0365 apart at u = +-1): no singular point.
+  // Ex. 21 at the seed's printed level 0.917 (arcs 0.0365 apart at u = +-1): no singular point,
+  // one smooth closed curve v = +-sqrt(0.917 - p(u)), p = u^6/6 - 5u^4/4 + 2u^2, of length
+  // 19.4212355910927 (adaptive quadrature in u = a sin(theta), a = 2.34522893575383 the root of
+  // p = 0.917, 25 digits). The march must not jump between the close arcs (retaking the step
+  // that reversed the orientation would repeat such a jump).
   const Scene near = parse_scene(R"({"surfaces": {
       "F": {"parametric": ["u", "v", "u^6/6-5*u^4/4+2*u^2+v^2"], "u": [-3, 3], "v": [-3, 3]},
       "plane": {"plane": {"point": [0, 0, 0.917], "normal": [0, 0, 1]}}},
@@ -167,8 +174,58 @@ TEST(ThroughSingular, NearMissStaysSmooth) {
                                  "near_miss");
   const TraceResult r = run_intersection(near, near.intersections[0]).result;
   EXPECT_TRUE(r.singular_points.empty());
-  ASSERT_FALSE(r.curves.empty());
-  for (const auto& c : r.curves) EXPECT_TRUE(c.closed);
+  EXPECT_TRUE(r.isolated_points.empty());
+  ASSERT_EQ(r.curves.size(), 1u);
+  EXPECT_TRUE(r.curves[0].closed);
+  EXPECT_NEAR(r.curves[0].length, 19.4212355910927, 2e-4);  // measured 7.7e-5 (step 0.02); a jump between the arcs loses ~0.02
+}
+
+TEST(ThroughSingular, NearTangentPairIsNotMerged) {
+  // The saddle z = u^2 - v^2 against z = +-1e-9: hyperbolas whose branches pass 6.3e-5 apart
+  // where the level-0 pair has a node. No singular point; two open branches, each on its side.
+  for (const double c : {1e-9, -1e-9}) {
+    const Scene s = parse_scene(R"({"surfaces": {
+        "F": {"parametric": ["u", "v", "u^2-v^2"], "u": [-1, 1], "v": [-1, 1]},
+        "plane": {"plane": {"point": [0, 0, )" + std::string(c > 0 ? "1e-9" : "-1e-9") + R"(], "normal": [0, 0, 1]}}},
+      "intersections": [{"name": "gap", "surfaces": ["F", "plane"]}]})",
+                                "near_tangent");
+    const TraceResult r = run_intersection(s, s.intersections[0]).result;
+    EXPECT_TRUE(r.singular_points.empty());
+    EXPECT_TRUE(r.isolated_points.empty());
+    ASSERT_EQ(r.curves.size(), 2u);
+    for (const auto& curve : r.curves) {
+      EXPECT_FALSE(curve.closed);
+      for (const auto& p : curve.points) EXPECT_GE(std::hypot(p.p.x(), p.p.y()), 3e-5);
+      // The branch stays on one side: u (c > 0) or v (c < 0) keeps its sign.
+      const int k = c > 0 ? 0 : 1;
+      for (const auto& p : curve.points) EXPECT_GT(p.p[k] * curve.points.front().p[k], 0);
+    }
+  }
+}
+
+TEST(ThroughSingular, RamphoidCuspCurveHasTheClosedFormLength) {
+  // Ex. 14: u^4 + u^2 v^2 - 2u^2 v - u v^2 + v^2 = 0 is quadratic in v:
+  // v = u^2 (1 +- sqrt(u - u^2)) / (u^2 - u + 1), 0 <= u <= 1, one closed curve through the ramphoid
+  // cusp at the origin. Reference: the polyline of the two closed-form arcs with 2e5 points each,
+  // clustered at both ends (u = (1 - cos(pi s)) / 2), converged to 1e-10 (mpmath quadrature:
+  // 3.28564637692800). The old open curve stopping at the cusp measured 3.2932.
+  auto arc = [](double sign) {
+    const int n = 200000;
+    double L = 0, pu = 0, pv = 0;
+    for (int i = 1; i <= n; ++i) {
+      const double u = 0.5 * (1 - std::cos(std::numbers::pi * i / n));
+      const double v = u * u * (1 + sign * std::sqrt(std::max(0.0, u - u * u))) / (u * u - u + 1);
+      L += std::hypot(u - pu, v - pv);
+      pu = u, pv = v;
+    }
+    return L;
+  };
+  const double reference = arc(1) + arc(-1);
+  EXPECT_NEAR(reference, 3.28564637692800, 1e-9);
+  const TraceResult r = run_example("thesis_ex14_ramphoid_cusp.json").result;
+  ASSERT_EQ(r.curves.size(), 1u);
+  EXPECT_TRUE(r.curves[0].closed);
+  EXPECT_NEAR(r.curves[0].length, reference, 1e-5);  // measured 1.5e-6
 }
 
 }  // namespace

@@ -40,6 +40,9 @@ struct TracedCurve {
   Termination start_end = Termination::kClosedLoop;  // why the start end stopped (open curves)
   Termination end_end = Termination::kClosedLoop;
   std::string start_message, end_message;  // details, e.g. the singular point's rank ratio
+  // A curve of tangential contact: the surfaces touch all along it (every point singular;
+  // traced by topology/tangential_contact.hpp, not marched).
+  bool tangential_contact = false;
 };
 
 /// Work counters of a trace (the thesis' Tables 4.1-4.4 report the iteration histogram).
@@ -98,6 +101,13 @@ struct SingularPointReport {
     // exponent 0: straight within resolution).
     double coefficient = 0, exponent = 0;
     int continuation = -1;  // index of the half-branch that continues this one through the point
+    // Puiseux expansion of the offset along `normal` (unit, 3D): w = sum coefficient X^exponent,
+    // X >= 0 the distance along the tangent, up to exponent 6 (singular/puiseux.hpp).
+    struct Term {
+      double exponent = 0, coefficient = 0;
+    };
+    std::vector<Term> expansion;
+    Vec3 normal = Vec3::Zero();
   };
   std::vector<HalfBranch> half_branches;
   std::vector<int> curves;  // indices of the curves through the point

@@ -11,6 +11,7 @@
 // and locate". Together with sin theta = |N_F x N_G| < 0.01 (thesis ch. 5 §5.2.1) and the rank ratio.
 #pragma once
 
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -47,6 +48,18 @@ struct HuntOptions {
   // Only starts where sin(theta) = |N_F x N_G| is at most this (a singular point has sin theta = 0
   // and it grows about linearly with the distance); infinity: every start near the curve.
   double max_sine = std::numeric_limits<double>::infinity();
+  // Boxes of the unknowns to hunt in (one Interval per unknown), each sampled with region_grid
+  // points per direction; empty: the whole domain with `grid`. The certified start-point search's
+  // uncertain regions hold every singular point (a singular root of the turning systems is
+  // never certified; docs/math/tangential_contact.md §4).
+  std::vector<std::vector<Interval>> regions;
+  int region_grid = 5;
+  // Starts whose Newton target (3D) this returns true for are not located: points already
+  // explained (a traced curve of tangential contact, a known singular point).
+  std::function<bool(const Vec3&)> skip;
+  // Called with each new singular point as soon as it is found (before the next start), so that
+  // `skip` can account for what the caller derived from it.
+  std::function<void(const SingularLocation&)> on_found;
 };
 
 /// Every singular point of the problem found from a grid: over the first surface's domain (with
@@ -54,7 +67,8 @@ struct HuntOptions {
 /// (grid/2 per direction) for implicit-implicit pairs. At each start the local curve h is built
 /// and the start kept when Newton's step towards a critical point of h stays within one grid
 /// cell; each kept start is located by locate_singular_point (h = h_s = h_t = 0). Isolated
-/// points (Ex. 16) included. Throws InputError for grid < 3.
+/// points (Ex. 16) included. A start whose Newton target lies within a tenth of a cell of where
+/// an earlier location ended (singular or a near miss) is not located again. Throws InputError for grid < 3.
 std::vector<SingularLocation> hunt_singular_points(const Problem& problem, const HuntOptions& options = {});
 
 }  // namespace ssimarch

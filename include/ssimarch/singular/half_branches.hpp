@@ -23,6 +23,7 @@
 #include "ssimarch/problem/problem.hpp"
 #include "ssimarch/singular/classify.hpp"
 #include "ssimarch/singular/local_curve.hpp"
+#include "ssimarch/singular/puiseux.hpp"
 
 namespace ssimarch {
 
@@ -41,6 +42,10 @@ struct HalfBranch {
   int line = -1;                      // index of its line in Classification::tangent_cone
   double offset_coefficient = 0;      // c of w = c X^gamma (sign w.r.t. the line's normal rot90(d))
   double offset_exponent = 0;         // gamma; 0 where the offset is below resolution (straight)
+  // The Puiseux expansion W(X) = sum b_j X^(j/q) of the offset along normal_3d (= rot90(tangent)
+  // in (s, t)), X >= 0 along the tangent, up to exponent 6 (singular/puiseux.hpp).
+  PuiseuxExpansion expansion;
+  Vec3 normal_3d = Vec3::Zero();
   int branch = -1;                    // index of the real branch it belongs to
   int continuation = -1;              // the half-branch a curve arriving along this one leaves by
   bool exit_ok = false;               // exit point found, on H = 0 and regular

@@ -20,10 +20,11 @@ struct TraceAllOptions {
   // half-branch (topology/through_singular.hpp) and trace every half-branch once; report them in
   // TraceResult::singular_points. Off: curves stop next to singular points (the plain tracer).
   bool through_singular_points = true;
-  // Hunt isolated points (parametric-implicit pairs) for TraceResult::isolated_points: a grid
-  // over the domain, local curves where the surfaces are nearly tangent. Off by default: it can
-  // cost 20x a smooth trace (ruled surface x implicit torus: 12 ms -> 250 ms).
-  bool hunt_isolated_points = false;
+  // Hunt the isolated points (TraceResult::isolated_points) and the curves of tangential
+  // contact that no traced curve met (topology/tangency_hunt.hpp): only inside the certified
+  // search's uncertain regions, none after a fully certified search, a grid over the domain
+  // (parametric-implicit pairs) after sampling. Needs through_singular_points.
+  bool hunt_isolated_points = true;
 };
 
 /// The curve through the solution x0, marched forward until an event and, unless it closed,

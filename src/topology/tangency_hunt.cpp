@@ -1,0 +1,128 @@
+#include "ssimarch/topology/tangency_hunt.hpp"
+
+#include <algorithm>
+
+#include "ssimarch/problem/singular_tolerances.hpp"
+#include "ssimarch/singular/detection.hpp"
+
+namespace ssimarch {
+
+namespace {
+
+// The curves of tangential contact among `curves`.
+bool near_contact_curve(const Vec3& p, const std::vector<TracedCurve>& curves, double radius) {
+  for (const TracedCurve& c : curves) {
+    if (!c.tangential_contact) continue;
+    for (std::size_t i = 0; i + 1 < c.points.size(); ++i) {
+      const Vec3 a = c.points[i].p, seg = c.points[i + 1].p - a;
+      const double L2 = seg.squaredNorm();
+      const double tau = L2 > 0 ? std::clamp((p - a).dot(seg) / L2, 0.0, 1.0) : 0.0;
+      if ((p - (a + tau * seg)).norm() <= radius) return true;
+    }
+  }
+  return false;
+}
+
+bool near_node(const Vec3& p, const SingularRegistry& registry, double radius) {
+  for (const SingularNode& n : registry.nodes())
+    if ((n.location.point - p).norm() <= radius) return true;
+  return false;
+}
+
+// Traces the contact curve through the corrected point c and records it.
+void add_contact_curve(const Tracer& tracer, const ContactPoint& c, std::vector<TracedCurve>* curves,
+                       SingularRegistry* registry) {
+  ContactOptions o;
+  o.step = tracer.spacing();
+  o.max_points = tracer.options().max_points;
+  ContactTrace t = trace_tangential_contact(tracer.problem(), c.location.x, o);
+  if (t.curve.points.size() < 2) return;
+  const int index = static_cast<int>(curves->size());
+  curves->push_back(std::move(t.curve));
+  for (const SingularLocation& s : t.crossings) registry->mark(registry->add(s), -1, index);
+}
+
+// Inserts the node's point into the segment of curve ci passing within radius of it.
+bool insert_into(SingularRegistry* registry, int n, int ci, TracedCurve* c, double radius) {
+  const SingularNode& node = registry->node(n);
+  const Vec3 s = node.location.point;
+  for (std::size_t i = 0; i + 1 < c->points.size(); ++i) {
+    const Vec3 a = c->points[i].p, seg = c->points[i + 1].p - a;
+    const double L2 = seg.squaredNorm();
+    if (!(L2 > 0)) continue;
+    const double tau = (s - a).dot(seg) / L2;
+    if (tau < 0 || tau > 1 || (s - (a + tau * seg)).norm() > radius) continue;
+    const Vec3 d = seg.normalized();
+    Vec3 t = d;
+    for (std::size_t k = 0; k < node.branches.size(); ++k) {
+      const double cosine = node.branches[k].tangent_3d.dot(d);
+      if (std::fabs(cosine) < 0.9) continue;
+      registry->mark(n, static_cast<int>(k), ci);
+      if (cosine > 0) t = node.branches[k].tangent_3d;
+    }
+    registry->mark(n, -1, ci);
+    if ((c->points[i].p - s).norm() > 0 && (c->points[i + 1].p - s).norm() > 0)
+      c->points.insert(c->points.begin() + static_cast<std::ptrdiff_t>(i) + 1, CurvePoint{node.location.x, s, t});
+    return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+void attach_crossings(SingularRegistry* registry, std::vector<TracedCurve>* curves, double radius) {
+  for (std::size_t n = 0; n < registry->nodes().size(); ++n) {
+    if (registry->nodes()[n].kind.type != SingularType::kTangentLineCrossing) continue;
+    for (std::size_t ci = 0; ci < curves->size(); ++ci) {
+      TracedCurve& c = (*curves)[ci];
+      const auto& on = registry->nodes()[n].curves;
+      if (c.tangential_contact || std::find(on.begin(), on.end(), static_cast<int>(ci)) != on.end()) continue;
+      insert_into(registry, static_cast<int>(n), static_cast<int>(ci), &c, radius);
+    }
+  }
+}
+
+bool trace_contact_from(const Tracer& tracer, const VecX& x, std::vector<TracedCurve>* curves, SingularRegistry* registry) {
+  const Problem& P = tracer.problem();
+  if (!(Problem::rank_ratio(P.linearize(x)) < kSuspectSingularRankRatio)) return false;
+  const ContactPoint c = correct_onto_contact(P, x);
+  if (!is_contact_point(c) || near_contact_curve(c.location.point, *curves, 0.2 * tracer.spacing())) return false;
+  add_contact_curve(tracer, c, curves, registry);
+  return true;
+}
+
+void hunt_tangencies(const Tracer& tracer, const StartPointSearch& search, SingularRegistry* registry,
+                     std::vector<TracedCurve>* curves, std::vector<SingularPointReport>* isolated) {
+  const Problem& P = tracer.problem();
+  HuntOptions hunt;
+  if (search.method == "certified") {
+    if (search.certified) return;  // no singular point in the domain
+    for (const UncertainRegion& u : search.uncertain_regions) hunt.regions.push_back(u.box);
+    // More region samples than the whole domain's grid: the grid (parametric-implicit pairs).
+    const std::size_t samples = hunt.regions.size() * static_cast<std::size_t>(hunt.region_grid * hunt.region_grid);
+    if (P.kind() == PairKind::kParametricImplicit && samples > static_cast<std::size_t>(hunt.grid * hunt.grid)) hunt.regions.clear();
+  } else if (P.kind() != PairKind::kParametricImplicit) {
+    return;
+  }
+  // A grid cell from a singular point sin(theta) is about a cell's fraction of the scale; 0.2
+  // leaves room while skipping the transversal rest of the curve.
+  hunt.max_sine = 0.2;
+  const double radius = 0.2 * tracer.spacing();
+  const double merge = 1e-7 * std::max(1.0, P.scale());
+  hunt.skip = [&](const Vec3& p) { return near_contact_curve(p, *curves, radius) || near_node(p, *registry, merge); };
+  hunt.on_found = [&](const SingularLocation& s) {
+    const ContactPoint c = correct_onto_contact(P, s.x);
+    if (is_contact_point(c) && !near_contact_curve(c.location.point, *curves, radius)) add_contact_curve(tracer, c, curves, registry);
+  };
+  for (const SingularLocation& s : hunt_singular_points(P, hunt)) {
+    if (near_node(s.point, *registry, merge) || near_contact_curve(s.point, *curves, radius)) continue;
+    const LocalCurve c = local_curve(P, s.x);
+    if (c.status != LocalCurveStatus::kOk) continue;
+    const Classification kind = classify(c.h);
+    bool known = false;
+    for (const SingularPointReport& r : *isolated) known = known || (r.p - s.point).norm() <= merge;
+    if (kind.type == SingularType::kIsolated && !known) isolated->push_back(make_report(s, kind, {}));
+  }
+}
+
+}  // namespace ssimarch
