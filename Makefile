@@ -4,7 +4,7 @@ JOBS ?= $(shell nproc)
 PRESET ?= release
 BUILD_DIR = build
 
-.PHONY: deps configure build test demo asan bench clean
+.PHONY: deps configure build test demo asan asan-fast fuzz bench clean
 
 deps:
 	./scripts/install-deps
@@ -26,10 +26,24 @@ asan: deps
 	cmake --build build-asan -j $(JOBS)
 	ctest --test-dir build-asan -j $(JOBS) --output-on-failure --timeout 1200
 
+# The CI sanitizer job (docs/reliability.md): ASan + UBSan + float-cast-overflow, only the libraries and
+# tests of the fast modules (core, expr, porosity), so that it fits CI's budget beside `make test`.
+asan-fast: deps
+	cmake --preset asan-fast
+	cmake --build build-asan-fast -j $(JOBS) --target core_tests expr_tests porosity_kernel_test porosity_integrals_test porosity_profile_test porosity_packing_test
+	ctest --test-dir build-asan-fast -j $(JOBS) --output-on-failure --timeout 600 -E '^(layers|layers_self_test)$$'
+
+# libFuzzer targets (clang 14; docs/reliability.md): builds build-fuzz/fuzz/fuzz_*; FUZZ_SECONDS each.
+FUZZ_SECONDS ?= 60
+fuzz: deps
+	cmake --preset fuzz
+	cmake --build build-fuzz -j $(JOBS) --target fuzz_expression fuzz_scene fuzz_packing fuzz_trace
+	./scripts/run-fuzzers build-fuzz $(FUZZ_SECONDS)
+
 bench: deps
 	cmake --preset bench
 	cmake --build build-bench -j $(JOBS)
 	./bench/run-benchmarks
 
 clean:
-	rm -rf build build-asan build-bench out
+	rm -rf build build-asan build-asan-fast build-fuzz build-bench out

@@ -4,9 +4,11 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <sstream>
 
 #include "commands.hpp"
 #include "flag_error.hpp"
+#include "ssimarch/io/output_files.hpp"
 #include "ssimarch/pipeline/packing_job.hpp"
 #include "ssimarch/porosity/packing.hpp"
 
@@ -28,15 +30,9 @@ const std::map<std::string, std::string> kFlagOfOption = {
     {"target_solid_fraction", "--solid-fraction"}};
 
 void write(const std::string& path, const std::vector<Particle>& ps) {
-  std::ofstream file;
-  std::ostream* out = &std::cout;
-  if (!path.empty()) {
-    file.open(path);
-    if (!file) throw CliError(path + ": cannot open for writing");
-    out = &file;
-  }
-  write_packing_csv(*out, ps);
-  if (!*out) throw CliError((path.empty() ? std::string("stdout") : path) + ": write failed");
+  OutputFiles files;  // all or nothing (io/output_files.hpp)
+  write_packing_csv(files.open(path.empty() ? "-" : path), ps);
+  files.commit();
 }
 
 void report(const char* what, const PackingJobResult& r) {
@@ -45,6 +41,16 @@ void report(const char* what, const PackingJobResult& r) {
   if (r.report.max_overlap > 0) std::cerr << ", max overlap " << r.report.max_overlap;
   if (r.report.unstable > 0) std::cerr << ", " << r.report.unstable << " spheres stopped at the roll iteration limit";
   std::cerr << "\n";
+}
+
+// The generators promise no overlaps beyond the contact tolerance (docs/porosity.md): a packing
+// that breaks it is not written, and the run fails.
+void check_no_overlap(const char* what, const PackingJobResult& r, double limit) {
+  if (r.report.max_overlap <= limit) return;
+  std::ostringstream m;
+  m << what << ": the packing has an overlap of " << r.report.max_overlap << ", above the contact tolerance " << limit
+    << " that the generator promises; no output was written";
+  throw CliError(m.str(), 1);
 }
 
 PackingJobResult run_job(const PackingJob& job) {
@@ -64,6 +70,7 @@ void generate_spheres(const PackingArgs& a) {
   o.count = a.count;
   o.seed = a.seed;
   const PackingJobResult r = run_job(o);
+  check_no_overlap("drop-and-roll", r, o.contact_tolerance * o.diameter);
   write(a.output, r.particles);
   report("drop-and-roll", r);
 }
@@ -79,6 +86,7 @@ void generate_spherocylinders(const PackingArgs& a) {
   o.target_solid_fraction = a.fraction;
   o.seed = a.seed;
   const PackingJobResult r = run_job(o);
+  check_no_overlap("RSA", r, 0.0);
   write(a.output, r.particles);
   if (r.report.placed < a.count)
     std::cerr << "ssimarch: warning: RSA jammed after " << r.report.attempts << " attempts: placed " << r.report.placed

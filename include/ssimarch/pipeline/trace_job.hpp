@@ -4,11 +4,13 @@
 // the results (io/trace_writers.hpp).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "ssimarch/geometry/curve_geometry.hpp"
 #include "ssimarch/march/result.hpp"
+#include "ssimarch/pipeline/coincidence.hpp"
 #include "ssimarch/pipeline/scene.hpp"
 
 namespace ssimarch {
@@ -21,6 +23,9 @@ struct IntersectionRun {
   /// With the "geometry" option: geometry[c][i] is the differential geometry at
   /// result.curves[c].points[i]; empty without it.
   std::vector<std::vector<CurveGeometry>> geometry;
+  /// When no curve was found: the region the two surfaces share, if they share one (a warning in
+  /// result.warnings says so; docs/output-format.md "coincident").
+  std::optional<Coincidence> coincidence;
 };
 
 /// An option set for the whole job (e.g. a command-line flag) over every intersection's own.
