@@ -33,7 +33,7 @@ asan-fast: deps
 	cmake --build build-asan-fast -j $(JOBS) --target core_tests expr_tests porosity_kernel_test porosity_integrals_test porosity_profile_test porosity_packing_test
 	ctest --test-dir build-asan-fast -j $(JOBS) --output-on-failure --timeout 600 -E '^(layers|layers_self_test)$$'
 
-# libFuzzer targets (clang 14; docs/reliability.md): builds build-fuzz/fuzz/fuzz_*; FUZZ_SECONDS each.
+# libFuzzer targets (clang 14; docs/reliability.md): builds build-fuzz/bin/fuzz_*; FUZZ_SECONDS each.
 FUZZ_SECONDS ?= 60
 fuzz: deps
 	cmake --preset fuzz
