@@ -135,7 +135,7 @@ TEST(porosity_PackingFile, SizeLimitsStopAWrongFile) {
   }
   InputLimits small;
   small.max_packing_bytes = 64;
-  std::istringstream in("x,y,z,d\n0,0,0.5,1\n0,0,1.5,1\n0,0,2.5,1\n0,0,3.5,1\n0,0,4.5,1\n");
+  std::istringstream in("x,y,z,d\n0,0,0.5,1\n0,0,1.5,1\n0,0,2.5,1\n0,0,3.5,1\n0,0,4.5,1\n0,0,5.5,1\n");  // 74 bytes
   try {
     read_packing_csv(in, "bed.csv", small);
     FAIL() << "the file limit was not applied";
