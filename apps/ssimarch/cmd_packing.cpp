@@ -8,6 +8,7 @@
 
 #include "commands.hpp"
 #include "flag_error.hpp"
+#include "run_budget.hpp"
 #include "ssimarch/io/output_files.hpp"
 #include "ssimarch/pipeline/packing_job.hpp"
 #include "ssimarch/porosity/packing.hpp"
@@ -113,6 +114,9 @@ void add_packing_command(CLI::App& app) {
   sc->add_option("--length", a->length, "cylinder length l (default 2)");
   sc->add_option("--height", a->height, "container height H (default: from --solid-fraction)");
   sc->add_option("--solid-fraction", a->fraction, "target solid fraction fixing H when --height is not given (default 0.2)");
+  // A time and memory budget: the generator's cost depends on the bed (docs/reliability.md).
+  add_budget_options(sp);
+  add_budget_options(sc);
   sp->callback([a] { generate_spheres(*a); });
   sc->callback([a] { generate_spherocylinders(*a); });
 }
