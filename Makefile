@@ -4,7 +4,7 @@ JOBS ?= $(shell nproc)
 PRESET ?= release
 BUILD_DIR = build
 
-.PHONY: deps configure build test demo asan bench bench-peers clean
+.PHONY: deps configure build test demo asan asan-fast fuzz bench bench-peers clean
 
 deps:
 	./scripts/install-deps
@@ -26,6 +26,23 @@ asan: deps
 	cmake --build build-asan -j $(JOBS)
 	ctest --test-dir build-asan -j $(JOBS) --output-on-failure --timeout 1200
 
+# The CI sanitizer job (docs/reliability.md): ASan + UBSan + float-cast-overflow, only the libraries and
+# tests of the fast modules (core, expr, porosity), so that it fits CI's budget beside `make test`.
+asan-fast: deps
+	cmake --preset asan-fast
+	cmake --build build-asan-fast -j $(JOBS) --target core_tests expr_tests porosity_kernel_test porosity_integrals_test porosity_profile_test porosity_packing_test
+	# Excluded: the CLI tests (the CLI is not built here) and the stack-depth bound of the expression
+	# parser, a property of the optimised build (ASan's redzones enlarge every stack frame).
+	ctest --test-dir build-asan-fast -j $(JOBS) --output-on-failure --timeout 600 \
+	  -E '^(layers|layers_self_test|ExprErrors.DeepestAcceptedExpressionsFitInASmallStack)$$|_NOT_BUILT$$'
+
+# libFuzzer targets (clang 14; docs/reliability.md): builds build-fuzz/bin/fuzz_*; FUZZ_SECONDS each.
+FUZZ_SECONDS ?= 60
+fuzz: deps
+	cmake --preset fuzz
+	cmake --build build-fuzz -j $(JOBS) --target fuzz_expression fuzz_scene fuzz_packing fuzz_trace
+	./scripts/run-fuzzers build-fuzz $(FUZZ_SECONDS)
+
 bench: deps
 	cmake --preset bench
 	cmake --build build-bench -j $(JOBS)
@@ -39,4 +56,4 @@ bench-peers:
 	build-peers/bench/peers/peer_bench --reps 7
 
 clean:
-	rm -rf build build-asan build-bench build-peers out
+	rm -rf build build-asan build-asan-fast build-fuzz build-bench build-peers out

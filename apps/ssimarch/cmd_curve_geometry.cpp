@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "run_budget.hpp"
 #include "ssimarch/geometry/intersection_geometry.hpp"
 #include "ssimarch/io/scene.hpp"
 #include "ssimarch/pipeline/point_geometry.hpp"
@@ -40,7 +41,7 @@ nlohmann::json num_json(double x) { return std::isfinite(x) ? nlohmann::json(x) 
 
 void run_curve_geometry(const CurveGeometryArgs& a) {
   if (!(a.step > 0) || !std::isfinite(a.step)) throw CliError("--step must be a positive length, got " + std::to_string(a.step));
-  Scene scene = load_scene(a.scene);
+  Scene scene = load_scene(a.scene, input_limits());
   const IntersectionSpec* spec = scene.intersection(a.intersection);
   if (!spec) {
     const std::string known = scene.intersection_names();
@@ -105,6 +106,7 @@ void add_curve_geometry_command(CLI::App& app) {
                   "Chord between the samples the estimate methods take along the curve (model units, default 0.01)");
   cmd->add_option("--toward", args->toward,
                   "Orient t so that t . (X,Y,Z) >= 0 (default: the method's natural orientation, N1 x N2)");
+  add_budget_options(cmd);
   cmd->callback([args] { run_curve_geometry(*args); });
 }
 

@@ -7,6 +7,7 @@
 
 #include "commands.hpp"
 #include "demo_scenes.hpp"
+#include "ssimarch/io/output_files.hpp"
 #include "ssimarch/io/scene.hpp"
 #include "ssimarch/io/svg_plot.hpp"
 #include "ssimarch/io/porosity_demo.hpp"
@@ -29,9 +30,10 @@ void run_demo(const DemoArgs& a) {
   fs::create_directories(dir, ec);
   if (ec) throw CliError(a.out + ": cannot create the output directory: " + ec.message());
   std::vector<IntersectionRun> runs;
+  OutputFiles files;  // scenes and pictures, all or nothing (io/output_files.hpp)
   std::cout << "ssimarch demo: tracing the built-in examples into " << dir.string() << "/\n\n";
   for (const DemoScene& d : demo_scenes()) {
-    { std::ofstream scene_file(dir / (d.name + ".scene.json")); scene_file << d.json << "\n"; }
+    files.open(dir / (d.name + ".scene.json")) << d.json << "\n";
     Scene scene = parse_scene(d.json, d.name + ".scene.json");
     for (const auto& spec : scene.intersections) {
       runs.push_back(run_intersection(scene, spec));
@@ -46,10 +48,10 @@ void run_demo(const DemoArgs& a) {
                     << std::fabs(c.length / d.exact_length - 1) << ")";
         std::cout << std::setprecision(6) << "\n";
       }
-      std::ofstream svg(dir / (spec.name + ".svg"));
-      write_svg(svg, r);
+      write_svg(files.open(dir / (spec.name + ".svg")), r);
     }
   }
+  files.commit();
   write_runs(runs, OutputFormat::kJson, (dir / "curves.json").string());
   write_runs(runs, OutputFormat::kCsv, (dir / "curves.csv").string());
   write_runs(runs, OutputFormat::kObj, (dir / "curves.obj").string());

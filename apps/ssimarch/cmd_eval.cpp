@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "run_budget.hpp"
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/core/jet.hpp"
 #include "ssimarch/io/scene.hpp"
@@ -52,7 +53,7 @@ nlohmann::json derivative_list(const std::function<std::array<double, 3>(const s
 void run_eval(const EvalArgs& a) {
   if (a.order < 0 || a.order > kMaxEvalOrder)
     throw CliError("--order must be between 0 and " + std::to_string(kMaxEvalOrder) + ", got " + std::to_string(a.order));
-  Scene scene = load_scene(a.scene);
+  Scene scene = load_scene(a.scene, input_limits());
   const Surface& s = scene.surface(a.surface);
   std::vector<double> at = parse_point(a.at, scene.constants);
   nlohmann::json out{{"surface", a.surface}, {"type", std::string(s.type_name())}, {"at", at}, {"order", a.order}};
@@ -111,6 +112,7 @@ void add_eval_command(CLI::App& app) {
   cmd->add_option("--surface", args->surface, "Name of the surface in the scene")->required();
   cmd->add_option("--at", args->at, "U,V for the parametric form or X,Y,Z for the implicit form")->required();
   cmd->add_option("--order", args->order, "Highest derivative order, 0.." + std::to_string(kMaxEvalOrder) + " (default 2)");
+  add_budget_options(cmd);
   cmd->callback([args] { run_eval(*args); });
 }
 

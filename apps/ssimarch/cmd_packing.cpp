@@ -4,9 +4,12 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <sstream>
 
 #include "commands.hpp"
 #include "flag_error.hpp"
+#include "run_budget.hpp"
+#include "ssimarch/io/output_files.hpp"
 #include "ssimarch/pipeline/packing_job.hpp"
 #include "ssimarch/porosity/packing.hpp"
 
@@ -28,15 +31,9 @@ const std::map<std::string, std::string> kFlagOfOption = {
     {"target_solid_fraction", "--solid-fraction"}};
 
 void write(const std::string& path, const std::vector<Particle>& ps) {
-  std::ofstream file;
-  std::ostream* out = &std::cout;
-  if (!path.empty()) {
-    file.open(path);
-    if (!file) throw CliError(path + ": cannot open for writing");
-    out = &file;
-  }
-  write_packing_csv(*out, ps);
-  if (!*out) throw CliError((path.empty() ? std::string("stdout") : path) + ": write failed");
+  OutputFiles files;  // all or nothing (io/output_files.hpp)
+  write_packing_csv(files.open(path.empty() ? "-" : path), ps);
+  files.commit();
 }
 
 void report(const char* what, const PackingJobResult& r) {
@@ -45,6 +42,16 @@ void report(const char* what, const PackingJobResult& r) {
   if (r.report.max_overlap > 0) std::cerr << ", max overlap " << r.report.max_overlap;
   if (r.report.unstable > 0) std::cerr << ", " << r.report.unstable << " spheres stopped at the roll iteration limit";
   std::cerr << "\n";
+}
+
+// The generators promise no overlaps beyond the contact tolerance (docs/porosity.md): a packing
+// that breaks it is not written, and the run fails.
+void check_no_overlap(const char* what, const PackingJobResult& r, double limit) {
+  if (r.report.max_overlap <= limit) return;
+  std::ostringstream m;
+  m << what << ": the packing has an overlap of " << r.report.max_overlap << ", above the contact tolerance " << limit
+    << " that the generator promises; no output was written";
+  throw CliError(m.str(), 1);
 }
 
 PackingJobResult run_job(const PackingJob& job) {
@@ -64,6 +71,7 @@ void generate_spheres(const PackingArgs& a) {
   o.count = a.count;
   o.seed = a.seed;
   const PackingJobResult r = run_job(o);
+  check_no_overlap("drop-and-roll", r, o.contact_tolerance * o.diameter);
   write(a.output, r.particles);
   report("drop-and-roll", r);
 }
@@ -79,6 +87,7 @@ void generate_spherocylinders(const PackingArgs& a) {
   o.target_solid_fraction = a.fraction;
   o.seed = a.seed;
   const PackingJobResult r = run_job(o);
+  check_no_overlap("RSA", r, 0.0);
   write(a.output, r.particles);
   if (r.report.placed < a.count)
     std::cerr << "ssimarch: warning: RSA jammed after " << r.report.attempts << " attempts: placed " << r.report.placed
@@ -105,6 +114,9 @@ void add_packing_command(CLI::App& app) {
   sc->add_option("--length", a->length, "cylinder length l (default 2)");
   sc->add_option("--height", a->height, "container height H (default: from --solid-fraction)");
   sc->add_option("--solid-fraction", a->fraction, "target solid fraction fixing H when --height is not given (default 0.2)");
+  // A time and memory budget: the generator's cost depends on the bed (docs/reliability.md).
+  add_budget_options(sp);
+  add_budget_options(sc);
   sp->callback([a] { generate_spheres(*a); });
   sc->callback([a] { generate_spherocylinders(*a); });
 }

@@ -14,6 +14,8 @@
 
 #include "commands.hpp"
 #include "flag_error.hpp"
+#include "run_budget.hpp"
+#include "ssimarch/io/output_files.hpp"
 #include "ssimarch/io/profile_plot.hpp"
 #include "ssimarch/pipeline/porosity_job.hpp"
 
@@ -26,6 +28,7 @@ struct PorosityArgs {
   double radius = 0, tolerance = 1e-8;
   int radii = 0, bins = 0, axial = 0;
   unsigned threads = 0;
+  bool strict = false;
 };
 
 // The flag that sets each field of PorosityJob, to name it in errors.
@@ -65,6 +68,7 @@ PorosityJob make_job(const PorosityArgs& a) {
   if (a.method != "chord" && a.method != "kernel") throw CliError("--method must be 'chord' or 'kernel'");
   PorosityJob job;
   job.packing_file = a.packing;
+  job.input_limits = input_limits();
   job.container_radius = a.radius;
   job.radial_points = a.radii;
   job.bins = a.bins;
@@ -110,21 +114,15 @@ std::string derived_path(const std::string& base, const std::string& suffix) {
   return (p.parent_path() / (p.stem().string() + "_" + suffix + p.extension().string())).string();
 }
 
-void write_csv(const std::string& path, const std::string& header, const std::vector<std::vector<double>>& cols) {
-  std::ofstream file;
-  std::ostream* out = &std::cout;
-  if (!path.empty()) {
-    file.open(path);
-    if (!file) throw CliError(path + ": cannot open for writing");
-    out = &file;
-  }
-  *out << header << "\n";
-  out->precision(std::numeric_limits<double>::max_digits10);
+void write_csv(OutputFiles& files, const std::string& path, const std::string& header,
+               const std::vector<std::vector<double>>& cols) {
+  std::ostream& out = files.open(path.empty() ? "-" : path);
+  out << header << "\n";
+  out.precision(std::numeric_limits<double>::max_digits10);
   for (std::size_t i = 0; i < cols[0].size(); ++i) {
-    for (std::size_t c = 0; c < cols.size(); ++c) *out << (c ? "," : "") << cols[c][i];
-    *out << "\n";
+    for (std::size_t c = 0; c < cols.size(); ++c) out << (c ? "," : "") << cols[c][i];
+    out << "\n";
   }
-  if (!*out) throw CliError((path.empty() ? std::string("stdout") : path) + ": write failed");
 }
 
 nlohmann::json stats_json(const ProfileStats& s) {
@@ -133,7 +131,7 @@ nlohmann::json stats_json(const ProfileStats& s) {
 
 // Writes each profile as CSV (the first to -o or stdout, further ones to files named after -o) and
 // returns the summary's "outputs" entry.
-nlohmann::json write_profiles(const PorosityArgs& a, const PorosityJobResult& r) {
+nlohmann::json write_profiles(OutputFiles& files, const PorosityArgs& a, const PorosityJobResult& r) {
   nlohmann::json outputs = nlohmann::json::object();
   int emitted = 0;
   auto next_out = [&](const char* suffix) { return emitted++ == 0 ? a.output : derived_path(a.output, suffix); };
@@ -142,18 +140,18 @@ nlohmann::json write_profiles(const PorosityArgs& a, const PorosityJobResult& r)
   };
   if (r.radial) {
     const std::string path = next_out("radial");
-    write_csv(path, "r,porosity", {r.radial->x, r.radial->porosity});
+    write_csv(files, path, "r,porosity", {r.radial->x, r.radial->porosity});
     outputs["radial"] = entry(path, "r,porosity", r.radial->x.size());
     outputs["radial"]["stats"] = stats_json(r.radial->stats);
   } else if (r.bins) {
     const std::string path = next_out("radial");
-    write_csv(path, "r_inner,r_outer,porosity", {r.bins->x, r.bins->x_upper, r.bins->porosity});
+    write_csv(files, path, "r_inner,r_outer,porosity", {r.bins->x, r.bins->x_upper, r.bins->porosity});
     outputs["bins"] = entry(path, "r_inner,r_outer,porosity", r.bins->x.size());
     outputs["bins"]["stats"] = stats_json(r.bins->stats);
   }
   if (r.axial) {
     const std::string path = next_out("axial");
-    write_csv(path, "z,porosity", {r.axial->x, r.axial->porosity});
+    write_csv(files, path, "z,porosity", {r.axial->x, r.axial->porosity});
     outputs["axial"] = entry(path, "z,porosity", r.axial->x.size());
     outputs["axial"]["stats"] = stats_json(r.axial->stats);
   }
@@ -162,14 +160,14 @@ nlohmann::json write_profiles(const PorosityArgs& a, const PorosityJobResult& r)
     std::vector<double> cr, cz;
     for (double z : r.map->z)
       for (double rr : r.map->r) cr.push_back(rr), cz.push_back(z);
-    write_csv(path, "r,z,porosity", {cr, cz, r.map->porosity});
+    write_csv(files, path, "r,z,porosity", {cr, cz, r.map->porosity});
     outputs["map"] = entry(path, "r,z,porosity", {r.map->r.size(), r.map->z.size()});
   }
   return outputs;
 }
 
 // The first 1D profile against r (radial or bins) or else z.
-void write_plot(const PorosityArgs& a, const PorosityJobResult& r) {
+void write_plot(OutputFiles& files, const PorosityArgs& a, const PorosityJobResult& r) {
   ProfilePlot plot;
   if (r.radial) {
     plot.series.push_back({"exact radial porosity", r.radial->x, r.radial->porosity, "#1f77b4", false});
@@ -183,11 +181,7 @@ void write_plot(const PorosityArgs& a, const PorosityJobResult& r) {
   }
   plot.title = "Porosity profile of " + std::filesystem::path(a.packing).filename().string();
   plot.ylabel = "porosity";
-  try {
-    write_profile_plot(a.plot, plot);
-  } catch (const InputError& e) {
-    throw CliError(e.what(), 1);
-  }
+  write_profile_plot(files.open(a.plot), plot);
 }
 
 nlohmann::json summary(const PorosityArgs& a, const PorosityJobResult& r) {
@@ -208,6 +202,8 @@ nlohmann::json summary(const PorosityArgs& a, const PorosityJobResult& r) {
   for (const auto& [name, t] : stages)
     if (*t) js["timings_s"][name] = **t;
   js["unconverged_integrals"] = r.unconverged;
+  js["overlaps"] = {{"pairs", r.overlaps.pairs}, {"max_depth", r.overlaps.max_depth},
+                    {"doubled_volume", r.overlaps.doubled_volume}};
   return js;
 }
 
@@ -229,17 +225,46 @@ void report(const PorosityJobResult& r) {
               << " per-particle integrals did not reach the requested tolerance (see --summary)\n";
 }
 
+// Porosity values outside [0, 1] over every profile (overlapping particles push them below 0).
+long values_outside_unit_interval(const PorosityJobResult& r) {
+  long n = !(r.bulk.porosity >= 0 && r.bulk.porosity <= 1);
+  auto count = [&n](const std::vector<double>& v) {
+    for (double x : v) n += !(x >= 0 && x <= 1);
+  };
+  if (r.radial) count(r.radial->porosity);
+  if (r.bins) count(r.bins->porosity);
+  if (r.axial) count(r.axial->porosity);
+  if (r.map) count(r.map->porosity);
+  return n;
+}
+
+// Overlapping particles are counted twice: said with the count, the worst pair (1-based, in file
+// order) and the volume counted twice, and a failure under --strict.
+std::string overlap_message(const PorosityJobResult& r) {
+  const ParticleOverlaps& o = r.overlaps;
+  std::ostringstream m;
+  m.precision(6);
+  m << o.pairs << " pair" << (o.pairs == 1 ? "" : "s") << " of particles overlap (worst: particles " << o.worst_first + 1
+    << " and " << o.worst_second + 1 << " by " << o.max_depth << "); their common volume (at least " << o.doubled_volume
+    << ") is counted twice, so the porosities are too low";
+  if (const long bad = values_outside_unit_interval(r); bad > 0)
+    m << " (" << bad << " value" << (bad == 1 ? " is" : "s are") << " outside [0, 1] for this reason)";
+  return m.str();
+}
+
 void run(const PorosityArgs& a) {
   const PorosityJobResult r = run_job(make_job(a));
-  nlohmann::json js = summary(a, r);
-  js["outputs"] = write_profiles(a, r);
-  if (!a.plot.empty()) write_plot(a, r);
-  report(r);
-  if (!a.summary.empty()) {
-    std::ofstream o(a.summary);
-    if (!o) throw CliError(a.summary + ": cannot open for writing");
-    o << js.dump(2) << "\n";
+  if (r.overlaps.pairs > 0) {
+    if (a.strict) throw CliError("--strict: " + overlap_message(r) + "; no output was written", 1);
+    std::cerr << "ssimarch: warning: " << overlap_message(r) << "\n";
   }
+  nlohmann::json js = summary(a, r);
+  OutputFiles files;  // every output or none (io/output_files.hpp)
+  js["outputs"] = write_profiles(files, a, r);
+  if (!a.plot.empty()) write_plot(files, a, r);
+  if (!a.summary.empty()) files.open(a.summary) << js.dump(2) << "\n";
+  files.commit();
+  report(r);
 }
 
 }  // namespace
@@ -263,7 +288,11 @@ void add_porosity_command(CLI::App& app) {
   sub->add_option("--summary", args->summary, "write a JSON summary (bulk porosity, timings, accuracy)");
   sub->add_option("--tolerance", args->tolerance, "absolute accuracy of each porosity value (default 1e-8)");
   sub->add_option("--threads", args->threads, "worker threads (default: all cores)");
+  sub->add_flag("--strict", args->strict,
+                "fail (exit 1, no output) when particles overlap each other instead of warning; their common volume "
+                "would be counted twice");
   sub->add_option("--method", args->method, "chord (fast, default) or kernel (seed kernel integrated directly)");
+  add_budget_options(sub);
   sub->callback([args] { run(*args); });
 }
 

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "run_budget.hpp"
 #include "ssimarch/io/scene.hpp"
 #include "ssimarch/singular/classify.hpp"
 #include "ssimarch/singular/detection.hpp"
@@ -74,7 +75,7 @@ void print_table(const std::string& name, const nlohmann::json& points) {
 
 void run_singular(const SingularArgs& a) {
   if (a.grid < 3) throw CliError("--grid must be at least 3, got " + std::to_string(a.grid));
-  Scene scene = load_scene(a.scene);
+  Scene scene = load_scene(a.scene, input_limits());
   nlohmann::json out = nlohmann::json::object();
   bool any = false;
   for (const auto& spec : scene.intersections) {
@@ -107,6 +108,7 @@ void add_singular_command(CLI::App& app) {
   cmd->add_option("--intersection", args->intersection, "Only this intersection (default: all)");
   cmd->add_option("--grid", args->grid, "Samples per parameter direction of the hunt (default 32)");
   cmd->add_flag("--json", args->json, "JSON instead of the table");
+  add_budget_options(cmd);
   cmd->callback([args] { run_singular(*args); });
 }
 

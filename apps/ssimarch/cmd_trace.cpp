@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "run_budget.hpp"
 #include "ssimarch/io/scene.hpp"
 #include "ssimarch/pipeline/trace_job.hpp"
 #include "trace_output.hpp"
@@ -39,7 +40,7 @@ void run_trace(const TraceArgs& a) {
     return;
   }
   if (a.scene.empty()) throw CliError("trace: a scene file is required (ssimarch trace SCENE.json; --help)");
-  const Scene scene = load_scene(a.scene);
+  const Scene scene = load_scene(a.scene, input_limits());
   OutputFormat f = a.format.empty() ? (a.output == "-" ? OutputFormat::kJson : format_from_path(a.output)) : parse_format(a.format);
   TraceRequest request = request_of(a);
   // STEP holds the certified B-splines: the format turns the option on unless a flag sets it.
@@ -88,6 +89,7 @@ void add_trace_command(CLI::App& app) {
   cmd->add_flag("--list-options", args->list_options,
                 "Print the trace options (scene keys; the flags are --key-with-dashes) as the Markdown table of "
                 "docs/scene-format.md, and exit");
+  add_budget_options(cmd);
   cmd->callback([args] { run_trace(*args); });
 }
 

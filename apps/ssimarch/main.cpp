@@ -1,10 +1,13 @@
 // ssimarch: command-line front end. Exit status: 0 success, 1 the computation ran but reported a
-// failure (see each subcommand's help), 2 invalid input or usage, 3 internal error.
+// failure (see each subcommand's help), 2 invalid input or usage, or an output that could not be
+// written, 3 internal error, 4 the run exceeded its time or memory budget (run_budget.hpp).
 #include <CLI/CLI.hpp>
 #include <exception>
 #include <iostream>
+#include <new>
 
 #include "commands.hpp"
+#include "run_budget.hpp"
 #include "ssimarch/core/error.hpp"
 
 int main(int argc, char** argv) {
@@ -29,6 +32,13 @@ int main(int argc, char** argv) {
   } catch (const ssimarch::InputError& e) {
     std::cerr << "ssimarch: error: " << e.what() << "\n";
     return 2;
+  } catch (const std::bad_alloc&) {
+    const double mib = ssimarch::cli::memory_limit_mib();
+    std::cerr << "ssimarch: error: out of memory"
+              << (mib > 0 ? " (the run exceeded its memory budget, --memory-limit " + std::to_string(static_cast<long>(mib)) + " MiB)"
+                          : " (reduce the problem, e.g. fewer points or particles)")
+              << "; no output was written\n";
+    return ssimarch::cli::kBudgetExitStatus;
   } catch (const std::logic_error& e) {
     std::cerr << "ssimarch: internal error: " << e.what() << "\n";
     return 3;

@@ -1,11 +1,11 @@
 #include "trace_output.hpp"
 
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 
 #include "commands.hpp"
 #include "ssimarch/io/step_writer.hpp"
+#include "ssimarch/io/output_files.hpp"
 #include "ssimarch/io/svg_plot.hpp"
 #include "ssimarch/io/trace_writers.hpp"
 
@@ -29,44 +29,28 @@ OutputFormat format_from_path(const std::filesystem::path& p) {
   return OutputFormat::kJson;
 }
 
-namespace {
-std::ofstream open_for_writing(const std::filesystem::path& p) {
-  std::ofstream out(p, std::ios::binary);
-  if (!out) throw CliError(p.string() + ": cannot be opened for writing");
-  return out;
-}
-}  // namespace
-
 void write_runs(const std::vector<IntersectionRun>& runs, OutputFormat format, const std::string& path) {
+  OutputFiles files;  // all files or none (io/output_files.hpp)
   if (format == OutputFormat::kSvg) {
-    if (path == "-") {
-      if (runs.size() != 1) throw CliError("SVG to standard output needs exactly one intersection (use --intersection NAME or -o FILE.svg)");
-      write_svg(std::cout, runs[0]);
-      return;
-    }
-    std::filesystem::path p(path);
+    if (path == "-" && runs.size() != 1)
+      throw CliError("SVG to standard output needs exactly one intersection (use --intersection NAME or -o FILE.svg)");
+    const std::filesystem::path p(path);
     for (const auto& r : runs) {
       std::filesystem::path file = runs.size() == 1 ? p : p.parent_path() / (p.stem().string() + "_" + r.spec.name + ".svg");
-      auto out = open_for_writing(file);
-      write_svg(out, r);
+      write_svg(files.open(file), r);
     }
+    files.commit();
     return;
   }
-  std::ofstream file;
-  std::ostream* out = &std::cout;
-  if (path != "-") {
-    file = open_for_writing(path);
-    out = &file;
-  }
+  std::ostream& out = files.open(path);
   switch (format) {
-    case OutputFormat::kJson: write_json(*out, runs); break;
-    case OutputFormat::kCsv: write_csv(*out, runs); break;
-    case OutputFormat::kObj: write_obj(*out, runs); break;
-    case OutputFormat::kStep: write_step(*out, runs); break;
+    case OutputFormat::kJson: write_json(out, runs); break;
+    case OutputFormat::kCsv: write_csv(out, runs); break;
+    case OutputFormat::kObj: write_obj(out, runs); break;
+    case OutputFormat::kStep: write_step(out, runs); break;
     case OutputFormat::kSvg: break;
   }
-  out->flush();
-  if (!*out) throw CliError(path + ": write failed");
+  files.commit();
 }
 
 void print_summary(const std::vector<IntersectionRun>& runs) {

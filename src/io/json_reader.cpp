@@ -15,6 +15,10 @@ using nlohmann::json;
 
 namespace {
 
+// The narrowest interval (a parameter domain or a box side) the readers accept: absolute, and
+// relative to the endpoints (docs/scene-format.md).
+constexpr double kMinIntervalWidth = 1e-100, kMinIntervalRelativeWidth = 1e-10;
+
 // Line and column (1-based) of a byte offset.
 std::string line_column(const std::string& text, std::size_t offset) {
   int line = 1, col = 1;
@@ -113,16 +117,21 @@ json parse_json_text(const std::string& text, const std::string& source) {
   }
 }
 
-std::string read_text_file(const std::filesystem::path& path, std::string_view what) {
+std::string read_text_file(const std::filesystem::path& path, std::string_view what, std::uint64_t max_bytes) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError(path.string(), "no such file");
   if (std::filesystem::is_directory(path, ec))
     throw InputError(path.string(), "is a directory, not a " + std::string(what));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path.string(), "cannot be opened for reading");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  std::string text = ss.str();
+  std::string text;
+  char chunk[1 << 16];
+  while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
+    text.append(chunk, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > max_bytes)
+      throw InputError(path.string(), "larger than " + byte_count_text(max_bytes) + ", the limit for a " + std::string(what) +
+                                          " (is it the right file? --max-input-mb raises the limit)");
+  }
   if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw InputError(path.string(), "the file is empty");
   return text;
 }
@@ -197,6 +206,13 @@ Interval json_interval(const json& j, const Constants& c, const std::string& whe
   const Interval i{json_number(j[0], c, index_path(where, 0)), json_number(j[1], c, index_path(where, 1))};
   if (!(i.lo < i.hi))
     throw InputError(where, "interval must have lo < hi, got [" + format_number(i.lo) + ", " + format_number(i.hi) + "]");
+  // Samples, steps and periods are fractions of the width: it must be a normal double well above
+  // the spacing of doubles at the endpoints (a periodic domain of width 5e-324 gave null points).
+  const double width = i.hi - i.lo, scale = std::max(std::fabs(i.lo), std::fabs(i.hi));
+  if (!(width >= kMinIntervalWidth) || !(width >= kMinIntervalRelativeWidth * scale))
+    throw InputError(where, "interval [" + format_number(i.lo) + ", " + format_number(i.hi) +
+                                "] is too narrow for double precision: its width must be at least 1e-100 and at least "
+                                "1e-10 times its largest endpoint");
   return i;
 }
 

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "ssimarch/core/error.hpp"
+#include "ssimarch/io/output_files.hpp"
 #include "ssimarch/io/profile_plot.hpp"
 #include "ssimarch/pipeline/packing_job.hpp"
 #include "ssimarch/pipeline/porosity_job.hpp"
@@ -18,27 +19,21 @@ namespace {
 
 constexpr double kRadius = 5.0, kDiameter = 1.0;
 
-std::ofstream open_for_writing(const std::filesystem::path& path) {
-  std::ofstream o(path);
-  if (!o) throw InputError(path.string(), "cannot open for writing");
+void write_profiles(OutputFiles& files, const std::filesystem::path& out_dir, const PorosityJobResult& r) {
+  std::ostream& o = files.open(out_dir / "radial_profile.csv");
   o.precision(12);
-  return o;
-}
-
-void write_profiles(const std::filesystem::path& out_dir, const PorosityJobResult& r) {
-  std::ofstream o = open_for_writing(out_dir / "radial_profile.csv");
   o << "r,porosity\n";
   for (std::size_t j = 0; j < r.radial->x.size(); ++j) o << r.radial->x[j] << "," << r.radial->porosity[j] << "\n";
-  std::ofstream b = open_for_writing(out_dir / "bins.csv");
+  std::ostream& b = files.open(out_dir / "bins.csv");
+  b.precision(12);
   b << "r_inner,r_outer,porosity\n";
   for (std::size_t k = 0; k < r.bins->x.size(); ++k)
     b << r.bins->x[k] << "," << r.bins->x_upper[k] << "," << r.bins->porosity[k] << "\n";
-  if (!o || !b) throw InputError(out_dir.string(), "writing the profile CSV files failed");
 }
 
 // Exact profile against the de Klerk (2003) correlation, over the distance from the wall in
 // diameters; the correlation's eps_b is the mean exact porosity far from the wall (x > 2.5 d).
-double write_plot(const std::filesystem::path& path, const PorosityJobResult& r) {
+double write_plot(OutputFiles& files, const std::filesystem::path& path, const PorosityJobResult& r) {
   const PorosityProfile& p = *r.radial;
   double core = 0;
   int nc = 0;
@@ -59,7 +54,7 @@ double write_plot(const std::filesystem::path& path, const PorosityJobResult& r)
     corr.y.push_back(de_klerk_porosity(x, eps_b));
   }
   plot.series = {exact, corr};
-  write_profile_plot(path, plot);
+  write_profile_plot(files.open(path), plot);
   return eps_b;
 }
 
@@ -79,11 +74,8 @@ void run_porosity_demo(const std::filesystem::path& out_dir, std::ostream& log) 
   log << "porosity demo: " << bed.report.placed
       << " spheres (d = 1) dropped and rolled into a cylinder of diameter 10, bed height " << bed.report.height << " ("
       << t_gen << " s)\n";
-  {
-    std::ofstream o = open_for_writing(out_dir / "packing.csv");
-    write_packing_csv(o, bed.particles);
-    if (!o) throw InputError((out_dir / "packing.csv").string(), "write failed");
-  }
+  OutputFiles files;  // all or nothing (io/output_files.hpp)
+  write_packing_csv(files.open(out_dir / "packing.csv"), bed.particles);
   PorosityJob job;
   job.packing = bed.particles;
   job.container_radius = kRadius;
@@ -96,8 +88,8 @@ void run_porosity_demo(const std::filesystem::path& out_dir, std::ostream& log) 
   const Container& c = r.container;
   log << "porosity demo: exact radial profile (200 radii, 50 bins) over z in [" << c.slab.z_min << ", "
       << c.slab.z_max << "], bulk porosity " << r.bulk.porosity << " (" << t_prof << " s)\n";
-  write_profiles(out_dir, r);
-  const double eps_b = write_plot(out_dir / "radial_profile.svg", r);
+  write_profiles(files, out_dir, r);
+  const double eps_b = write_plot(files, out_dir / "radial_profile.svg", r);
   nlohmann::json js = {{"spheres", bed.report.placed},
                        {"container_radius", kRadius},
                        {"diameter", kDiameter},
@@ -108,7 +100,8 @@ void run_porosity_demo(const std::filesystem::path& out_dir, std::ostream& log) 
                        {"generation_s", t_gen},
                        {"profile_s", t_prof},
                        {"correlation", "de Klerk (2003), AIChE J. 49(8) 2022-2029"}};
-  std::ofstream(out_dir / "summary.json") << js.dump(2) << "\n";
+  files.open(out_dir / "summary.json") << js.dump(2) << "\n";
+  files.commit();
   log << "porosity demo: wrote " << (out_dir / "radial_profile.svg").string() << " (exact vs de Klerk 2003)\n";
 }
 

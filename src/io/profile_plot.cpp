@@ -1,5 +1,6 @@
 // Profile plots (see profile_plot.hpp).
 #include "ssimarch/io/profile_plot.hpp"
+#include "ssimarch/io/output_files.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -95,10 +96,9 @@ void write_profile_plot(std::ostream& out, const ProfilePlot& plot) {
 
 void write_profile_plot(const std::filesystem::path& path, const ProfilePlot& plot) {
   if (path.extension() != ".svg") throw InputError(path.string(), "a plot file must end in .svg");
-  std::ofstream o(path);
-  if (!o) throw InputError(path.string(), "cannot open for writing");
-  write_profile_plot(o, plot);
-  if (!o) throw InputError(path.string(), "error writing the plot");
+  OutputFiles files;
+  write_profile_plot(files.open(path), plot);
+  files.commit();
 }
 
 PlotSeries staircase(std::string label, const std::vector<double>& lower, const std::vector<double>& upper,

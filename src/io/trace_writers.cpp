@@ -134,8 +134,18 @@ json to_json(const IntersectionRun& run) {
   json names = json::array();
   for (const auto& n : run.problem.unknown_names()) names.push_back(n);
   const auto& s = run.spec.surfaces;
+  json coincident = false;
+  json region = nullptr;
+  if (run.coincidence) {
+    const Box& b = run.coincidence->region;
+    coincident = true;
+    region = json{{"min", {b.x.lo, b.y.lo, b.z.lo}}, {"max", {b.x.hi, b.y.hi, b.z.hi}},
+                  {"shared_samples", run.coincidence->shared}, {"samples", run.coincidence->samples}};
+  }
   return json{{"name", run.spec.name},
               {"surfaces", json::array({s[0], s[1]})},
+              {"coincident", coincident},
+              {"coincident_region", region},
               {"pair_kind", std::string(to_string(run.spec.kind))},
               {"unknowns", names},
               {"parametric_first", run.spec.swapped ? s[1] : s[0]},

@@ -100,7 +100,7 @@ bool TraceOptions::is_valid(std::string* error) const {
   if (!(max_correction_ratio > 0) || !std::isfinite(max_correction_ratio)) return fail("max_correction_ratio must be a finite number > 0");
   if (max_points < 2) return fail("max_points must be at least 2");
   if (!(max_length > 0)) return fail("max_length must be > 0");
-  if (start_samples < 2 || start_samples > 1000) return fail("start_samples must be between 2 and 1000");
+  if (start_samples < 2 || start_samples > 200) return fail("start_samples must be between 2 and 200");
   if (start_box_budget < 1) return fail("start_box_budget must be at least 1");
   return true;
 }

@@ -230,8 +230,10 @@ std::vector<Row> make_rows() {
   rows.push_back(number_row(describe("max_length", "model length", "unbounded", "per curve"),
                             Range{0, kInf, true, false, false, {}, true}, &TraceOptions::max_length));
   rows.push_back(number_row(describe("start_samples", "", "24", "samples per parameter direction (per axis, at most 16, for implicit pairs) when searching "
-                              "start points"),
-                            Range{2, 1000, false, false, false, {}}, &TraceOptions::start_samples));
+                              "start points by sampling; cost: n^2 corrector runs (n^3 for implicit pairs)"),
+                            Range{2, 200, false, false, false,
+                                  "each of the n^2 corrector runs costs up to about 0.3 ms (200: about 12 s; docs/reliability.md)"},
+                            &TraceOptions::start_samples));
   rows.push_back(flag_row(describe("certified_start_points", "", "true",
                                    "find start points by the certified interval search (docs/topology.md); false: by sampling",
                                    "yes/no"),

@@ -17,6 +17,10 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// Usable ranges (docs/porosity.md): profile points per profile and map cells; lengths.
+constexpr int kMaxProfilePoints = 10'000'000;
+constexpr double kMaxLength = 1e100, kMinLength = 1e-100;
+
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 std::string number(double v) {
@@ -31,6 +35,30 @@ void require_positive_finite(double v, const char* key) {
 
 void require_count(int n, const char* key) {
   if (n < 0) throw InputError(key, "must be a count >= 0 (got " + std::to_string(n) + ")");
+  if (n > kMaxProfilePoints)
+    throw InputError(key, "must be at most " + std::to_string(kMaxProfilePoints) + " (got " + std::to_string(n) +
+                              "): each point integrates every particle near it, and a bed is not resolved finer");
+}
+
+// Lengths whose cubes (volumes) and squares (areas) stay normal doubles: outside, R^2 or d^3
+// underflows to 0 or overflows to inf and the porosity is NaN (a container of radius 1e-300
+// printed -nan) or the quadrature cannot resolve the particle (d = 1e308).
+void require_length_scale(double v, const std::string& where, const char* what) {
+  if (!(std::abs(v) <= kMaxLength)) throw InputError(where, std::string(what) + " " + number(v) + " is beyond +-1e100, "
+                                                         "where volumes overflow double precision; rescale the packing");
+  if (v != 0 && std::abs(v) < kMinLength)
+    throw InputError(where, std::string(what) + " " + number(v) + " is below 1e-100, where volumes underflow double "
+                                                   "precision; rescale the packing");
+}
+
+void require_packing_scale(std::span<const Particle> ps, const std::string& source) {
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    const Particle& p = ps[i];
+    const std::string where = source + ": particle " + std::to_string(i + 1);
+    require_length_scale(p.diameter, where, "diameter");
+    require_length_scale(p.length, where, "length");
+    for (int k = 0; k < 3; ++k) require_length_scale(p.centre[k], where, "centre coordinate");
+  }
 }
 
 // The profile options of one stage: the job's, reporting progress under the stage's name.
@@ -48,7 +76,7 @@ std::span<const Particle> packing_of(const PorosityJob& job, Packing& storage, b
     return job.packing;
   }
   if (job.packing_file.empty()) throw InputError("packing", "no packing given (neither particles nor a file)");
-  storage = read_packing(job.packing_file);
+  storage = read_packing(job.packing_file, job.input_limits);
   if (storage.particles.empty()) throw InputError(job.packing_file.string(), "no particles");
   *spherocylinders = storage.spherocylinders;
   return storage.particles;
@@ -89,12 +117,16 @@ void run_radial_stages(const PorosityJob& job, std::span<const Particle> ps, Por
 
 void validate(const PorosityJob& job) {
   require_positive_finite(job.container_radius, "container_radius");
+  require_length_scale(job.container_radius, "container_radius", "the radius");
   require_positive_finite(job.options.tolerance, "options.tolerance");
   require_count(job.radial_points, "radial_points");
   require_count(job.bins, "bins");
   require_count(job.axial_slices, "axial_slices");
   require_count(job.map_radii, "map_radii");
   require_count(job.map_heights, "map_heights");
+  if (static_cast<double>(job.map_radii) * job.map_heights > kMaxProfilePoints)
+    throw InputError("map_radii", "a map of at most " + std::to_string(kMaxProfilePoints) + " cells (got " +
+                                      std::to_string(job.map_radii) + " x " + std::to_string(job.map_heights) + ")");
   if ((job.map_radii > 0) != (job.map_heights > 0))
     throw InputError("map_radii", "a map needs both counts > 0 (got " + std::to_string(job.map_radii) + " x " +
                                       std::to_string(job.map_heights) + ")");
@@ -103,6 +135,9 @@ void validate(const PorosityJob& job) {
     if (!(s.z_max > s.z_min) || !std::isfinite(s.z_min) || !std::isfinite(s.z_max))
       throw InputError("height_range", "needs finite z_min < z_max (got [" + number(s.z_min) + ", " +
                                            number(s.z_max) + "])");
+    require_length_scale(s.z_min, "height_range", "the height");
+    require_length_scale(s.z_max, "height_range", "the height");
+    require_length_scale(s.z_max - s.z_min, "height_range", "the height range");
   }
 }
 
@@ -112,6 +147,8 @@ PorosityJobResult run_porosity_job(const PorosityJob& job) {
   Packing read;
   const std::span<const Particle> ps = packing_of(job, read, &out.spherocylinders);
   out.particles = static_cast<long>(ps.size());
+  require_packing_scale(ps, job.packing.empty() ? job.packing_file.string() : "packing");
+  if (job.find_overlaps) out.overlaps = find_overlaps(ps);
   out.container.radius = job.container_radius;
   out.container.slab = job.height_range ? *job.height_range : vertical_extent(ps);
 

@@ -16,7 +16,9 @@ bool TraceJobResult::complete() const {
                       [](const IntersectionRun& r) {
                         // No curve is a result when the start-point search proved there is none
                         // (issue 11 item 6); otherwise an empty trace is incomplete.
-                        const bool proven_empty = r.result.curves.empty() && r.result.start_search.certified;
+                        // Coincident surfaces are never "proven empty": they share a region.
+                        const bool proven_empty = r.result.curves.empty() && r.result.start_search.certified &&
+                                                  !r.coincidence;
                         return (r.result.curves.empty() && !proven_empty) || r.result.failed_starts > 0 || !r.network.complete();
                       });
 }
@@ -40,8 +42,11 @@ std::vector<IntersectionSpec> select_intersections(const Scene& scene, const Tra
   return selected;
 }
 
-IntersectionRun run_intersection(const Scene& scene, const IntersectionSpec& spec) {
-  IntersectionRun run{spec, scene.problem(spec), {}, {}, {}, {}, {}};
+namespace {
+
+// The curves of the run: the closed form when the pair has one, else traced.
+void find_curves(const IntersectionSpec& spec, IntersectionRun* run_ptr) {
+  IntersectionRun& run = *run_ptr;
   // Pairs with a closed form are answered exactly (docs/math/closed_form_quadrics.md); given start
   // points ask for the curves through them, which the tracer answers.
   std::optional<ClosedFormResult> exact;
@@ -54,6 +59,35 @@ IntersectionRun run_intersection(const Scene& scene, const IntersectionSpec& spe
     all.hunt_isolated_points = spec.options.hunt_isolated_points;
     run.result = trace_all(run.problem, spec.options.trace, spec.starts, all);
   }
+}
+
+// When no curve was found, whether the surfaces coincide over a region (issue 13 item 3).
+void report_coincidence(const IntersectionSpec& spec, IntersectionRun* run_ptr) {
+  IntersectionRun& run = *run_ptr;
+  if (!run.result.curves.empty()) return;
+  // Coincident surfaces share a region, not a curve: say so rather than report "0 curves". The
+  // distance test allows for the corrector's tolerance and the rounding of the model's size.
+  const double tolerance = std::max(1e3 * spec.options.trace.tolerance, 1e-12 * run.problem.scale());
+  run.coincidence = find_coincidence(run.problem, tolerance);
+  if (run.coincidence) {
+    const std::string& first = spec.surfaces[spec.swapped ? 1 : 0];
+    const std::string& second = spec.surfaces[spec.swapped ? 0 : 1];
+    const Box& b = run.coincidence->region;
+    run.result.warnings.push_back(
+        "the surfaces coincide (" + std::to_string(run.coincidence->shared) + " of " +
+        std::to_string(run.coincidence->samples) + " samples of " + first + " lie on " + second +
+        ", in the box x [" + std::to_string(b.x.lo) + ", " + std::to_string(b.x.hi) + "], y [" + std::to_string(b.y.lo) +
+        ", " + std::to_string(b.y.hi) + "], z [" + std::to_string(b.z.lo) + ", " + std::to_string(b.z.hi) +
+        "]): they share a surface region, which has no intersection curve");
+  }
+}
+
+}  // namespace
+
+IntersectionRun run_intersection(const Scene& scene, const IntersectionSpec& spec) {
+  IntersectionRun run{spec, scene.problem(spec), {}, {}, {}, {}, {}, {}};
+  find_curves(spec, &run);
+  report_coincidence(spec, &run);
   run.network = build_curve_network(run.problem, run.result);
   for (const NetworkFailure& f : run.network.failures)
     run.result.warnings.push_back("curve " + std::to_string(f.curve) + " " + f.end + " stops away from the domain boundary (" +

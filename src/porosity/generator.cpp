@@ -63,6 +63,9 @@ void check_bed(double container_radius, double diameter, long count) {
   if (!(diameter > 0) || !std::isfinite(diameter))
     throw InputError("diameter", "must be a finite number > 0 (got " + number(diameter) + ")");
   if (count < 0) throw InputError("count", "must be >= 0 (got " + std::to_string(count) + ")");
+  // Memory (a particle and its grid entry, about 100 bytes) and time grow linearly; 1e7 particles
+  // take about a gigabyte, and a bed of more is beyond what the exact profiles are used for.
+  if (count > 10'000'000) throw InputError("count", "must be at most 1e7 (got " + std::to_string(count) + ")");
   if (diameter >= 2 * container_radius)
     throw InputError("diameter", "the particle diameter " + number(diameter) +
                                      " must be smaller than the container diameter " + number(2 * container_radius));
@@ -75,6 +78,9 @@ class Deposition {
     check_bed(o.container_radius, o.diameter, o.count);
     if (o.diameter_max != 0 && !(o.diameter_max >= o.diameter && std::isfinite(o.diameter_max)))
       throw InputError("diameter_max", "must be 0 or a finite number >= diameter (got " + number(o.diameter_max) + ")");
+    if (o.diameter_max >= 2 * o.container_radius)
+      throw InputError("diameter_max", "the largest diameter " + number(o.diameter_max) +
+                                           " must be smaller than the container diameter " + number(2 * o.container_radius));
     tol_ = o.contact_tolerance * o.diameter;
   }
 

@@ -105,6 +105,42 @@ class Errors {
   long count_ = 0;
 };
 
+// Lines of a packing file, bounded: a line longer than limits.max_line_bytes or a file longer than
+// limits.max_packing_bytes ends the read with an InputError (a wrong path such as /dev/zero has no
+// newline to stop std::getline). A UTF-8 byte order mark before the first line is dropped.
+class LineReader {
+ public:
+  LineReader(std::istream& in, const Errors& err, const InputLimits& limits) : in_(in), err_(err), limits_(limits) {}
+
+  bool next(std::string& line) {
+    line.clear();
+    std::streambuf* sb = in_.rdbuf();
+    bool any = false;
+    for (int c = sb->sbumpc(); c != std::char_traits<char>::eof(); c = sb->sbumpc()) {
+      any = true;
+      if (++bytes_ > limits_.max_packing_bytes)
+        err_.fatal(line_ + 1, "the file is larger than " + byte_count_text(limits_.max_packing_bytes) +
+                                  ", the limit for a packing file (--max-input-mb raises it)");
+      if (c == '\n') break;
+      if (line.size() >= limits_.max_line_bytes)
+        err_.fatal(line_ + 1, "a line longer than " + byte_count_text(limits_.max_line_bytes) +
+                                  " (not a packing file? a row of numbers is under 200 bytes)");
+      line.push_back(static_cast<char>(c));
+    }
+    if (!any) return false;
+    if (++line_ == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
+    return true;
+  }
+  long line_number() const { return line_; }
+
+ private:
+  std::istream& in_;
+  const Errors& err_;
+  InputLimits limits_;
+  long line_ = 0;
+  std::uint64_t bytes_ = 0;
+};
+
 // Validates one particle; returns an empty string when fine.
 std::string validate(Particle& p, bool sc) {
   for (int k = 0; k < 3; ++k)
@@ -125,13 +161,14 @@ std::string validate(Particle& p, bool sc) {
 
 }  // namespace
 
-Packing read_packing_csv(std::istream& in, const std::string& name) {
+Packing read_packing_csv(std::istream& in, const std::string& name, const InputLimits& limits) {
   Errors err(name);
+  LineReader reader(in, err, limits);
   std::string line;
   long ln = 0;
   std::vector<std::string> header;
-  while (std::getline(in, line)) {
-    ++ln;
+  while (reader.next(line)) {
+    ln = reader.line_number();
     const std::string t = trim(line);
     if (t.empty() || t[0] == '#') continue;
     header = split(lower(t), ',');
@@ -155,8 +192,8 @@ Packing read_packing_csv(std::istream& in, const std::string& name) {
   Packing out;
   out.spherocylinders = sc;
   const std::size_t ncol = header.size();
-  while (std::getline(in, line)) {
-    ++ln;
+  while (reader.next(line)) {
+    ln = reader.line_number();
     const std::string t = trim(line);
     if (t.empty() || t[0] == '#') continue;
     const auto f = split(t, ',');
@@ -188,8 +225,9 @@ Packing read_packing_csv(std::istream& in, const std::string& name) {
   return out;
 }
 
-Packing read_lammps_dump(std::istream& in, const std::string& name) {
+Packing read_lammps_dump(std::istream& in, const std::string& name, const InputLimits& limits) {
   Errors err(name);
+  LineReader reader(in, err, limits);
   std::string line;
   long ln = 0;
   Packing last;
@@ -197,8 +235,8 @@ Packing read_lammps_dump(std::istream& in, const std::string& name) {
   long natoms = -1;
   double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
   auto next = [&](std::string& s) {
-    if (!std::getline(in, s)) return false;
-    ++ln;
+    if (!reader.next(s)) return false;
+    ln = reader.line_number();
     return true;
   };
   while (next(line)) {
@@ -208,6 +246,11 @@ Packing read_lammps_dump(std::istream& in, const std::string& name) {
       if (!next(line)) err.fatal(ln, "missing atom count after 'ITEM: NUMBER OF ATOMS'");
       const auto v = parse_number(trim(line));
       if (!v || *v < 0 || *v != std::floor(*v)) err.fatal(ln, "bad atom count '" + trim(line) + "'");
+      // Checked before the conversion (a double beyond long's range has no defined conversion):
+      // more atoms than bytes the file may hold cannot be there.
+      if (*v > static_cast<double>(limits.max_packing_bytes))
+        err.fatal(ln, "atom count " + trim(line) + " is more than the file can hold (at most " +
+                          byte_count_text(limits.max_packing_bytes) + " are read)");
       natoms = static_cast<long>(*v);
     } else if (t.rfind("ITEM: BOX BOUNDS", 0) == 0) {
       for (int k = 0; k < 3; ++k) {
@@ -276,16 +319,24 @@ Packing read_lammps_dump(std::istream& in, const std::string& name) {
   return last;
 }
 
-Packing read_packing(const std::filesystem::path& path) {
-  std::ifstream in(path);
+Packing read_packing(const std::filesystem::path& path, const InputLimits& limits) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(path.string(), "is a directory, not a packing file");
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path.string(), "cannot open file");
+  // The format from the first non-blank line; a stream that cannot seek back (a pipe) is read once.
   std::string first;
-  while (std::getline(in, first) && trim(first).empty()) {
+  {
+    const Errors probe_errors(path.string());
+    LineReader probe(in, probe_errors, limits);
+    while (probe.next(first) && trim(first).empty()) {
+    }
   }
   in.clear();
   in.seekg(0);
-  if (trim(first).rfind("ITEM:", 0) == 0) return read_lammps_dump(in, path.string());
-  return read_packing_csv(in, path.string());
+  if (!in) throw InputError(path.string(), "cannot be read twice (a pipe?): give a regular file");
+  if (trim(first).rfind("ITEM:", 0) == 0) return read_lammps_dump(in, path.string(), limits);
+  return read_packing_csv(in, path.string(), limits);
 }
 
 void write_packing_csv(std::ostream& out, std::span<const Particle> ps) {

@@ -2,6 +2,7 @@
 // and the Monte Carlo reference.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <unordered_map>
@@ -15,7 +16,13 @@ class SpatialGrid {
  public:
   explicit SpatialGrid(double cell) : cell_(cell) {}
   double cell() const { return cell_; }
-  long index(double v) const { return static_cast<long>(std::floor(v / cell_)); }
+  /// The cell index of a coordinate, clamped to +-2^60 (far coordinates share a cell rather than
+  /// overflow the conversion; the key hashes only the low 21 bits anyway).
+  long index(double v) const {
+    const double q = std::floor(v / cell_);
+    constexpr double kLimit = 1152921504606846976.0;  // 2^60
+    return static_cast<long>(std::clamp(q, -kLimit, kLimit));
+  }
   static std::int64_t key(long i, long j, long k) {
     return (static_cast<std::int64_t>(i & 0x1FFFFF) << 42) | (static_cast<std::int64_t>(j & 0x1FFFFF) << 21) |
            static_cast<std::int64_t>(k & 0x1FFFFF);

@@ -266,3 +266,61 @@ TEST(Cli, MalformedScenesAreCleanErrors) {
 }
 
 }  // namespace
+
+namespace {
+
+// Issue 13: bounded reads, budgets, all-or-nothing output and coincident surfaces, end to end.
+TEST(Cli, InputsAreReadUpToALimitTheUserCanRaise) {
+  CliRun zero = run("trace /dev/zero");
+  EXPECT_EQ(zero.status, 2);
+  EXPECT_THAT(zero.err, HasSubstr("/dev/zero: larger than 64 MiB, the limit for a scene file"));
+  const std::string big = write_file("big.json", std::string(3 << 20, ' ') + "{\"surfaces\": {}}");
+  CliRun small = run("trace " + big + " --max-input-mb 2");
+  EXPECT_EQ(small.status, 2);
+  EXPECT_THAT(small.err, HasSubstr("larger than 2 MiB"));
+  CliRun raised = run("trace " + big + " --max-input-mb 4");
+  EXPECT_EQ(raised.status, 2);
+  EXPECT_THAT(raised.err, HasSubstr("surfaces: must be a non-empty object"));  // read, then judged
+}
+
+TEST(Cli, TheTimeBudgetEndsTheRunWithStatus4AndNoOutput) {
+  // 200 start samples on a parametric pair: n^2 = 40000 corrector runs, seconds.
+  const std::string out = (scratch() / "budget.json").string();
+  std::ofstream(out) << "earlier\n";
+  const std::string scene = write_file("two_parametric.json", R"json({"surfaces": {
+    "s": {"parametric": ["cos(u)*cos(v)", "sin(u)*cos(v)", "sin(v)"], "u": [0, "2*pi"], "v": [-1.5, 1.5], "periodic": ["u"]},
+    "c": {"parametric": ["0.5+0.5*cos(u)", "0.5*sin(u)", "v"], "u": [0, "2*pi"], "v": [-2, 2], "periodic": ["u"]}},
+    "intersections": [{"surfaces": ["s", "c"]}]})json");
+  CliRun r = run("trace " + scene + " --certified-start-points false --start-samples 200 --time-limit 0.5 -o " + out);
+  EXPECT_EQ(r.status, 4) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("exceeded its time budget (--time-limit 0.5 s)"));
+  std::ifstream in(out);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "earlier");
+  EXPECT_EQ(run("trace " + kExamples + "viviani.json -q --time-limit 0").status, 2);
+}
+
+TEST(Cli, AWriteFailureIsAnErrorAndLeavesEarlierFilesUntouched) {
+  if (fs::exists("/dev/full")) {
+    CliRun full = run("trace " + kExamples + "viviani.json -q -o /dev/full");
+    EXPECT_EQ(full.status, 2);
+    EXPECT_THAT(full.err, HasSubstr("/dev/full: write failed"));
+  }
+  CliRun missing = run("trace " + kExamples + "viviani.json -q -o " + (scratch() / "no_such_dir" / "c.json").string());
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_THAT(missing.err, HasSubstr("cannot be opened for writing"));
+}
+
+TEST(Cli, CoincidentSurfacesAreSaid) {
+  CliRun r = run("trace " + write_file("same.json", R"json({
+    "surfaces": {"a": {"sphere": {"center": [0,0,0], "radius": 1}}, "b": {"implicit": "x^2+y^2+z^2-1", "box": [[-2,2],[-2,2],[-2,2]]}},
+    "intersections": [{"name": "same", "surfaces": ["a", "b"]}]})json"));
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("the surfaces coincide"));
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["intersections"][0]["coincident"].get<bool>());
+  EXPECT_NEAR(j["intersections"][0]["coincident_region"]["max"][2].get<double>(), 1.0, 0.05);
+}
+
+}  // namespace

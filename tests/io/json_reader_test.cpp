@@ -5,6 +5,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/io/scene.hpp"
 
@@ -12,6 +15,8 @@ namespace ssimarch {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
+using ::testing::AllOf;
 
 std::string parse_error_of(const std::string& text) {
   try {
@@ -88,6 +93,33 @@ TEST(JsonReader, ReadTextFileReportsEveryFailureWithThePath) {
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()), "/: is a directory, not a scene file");
   }
+}
+
+TEST(JsonReader, IntervalsTooNarrowForDoublePrecisionAreRejected) {
+  // A periodic domain of width 5e-324 gave null parameters; 1e-10 relative keeps samples distinct.
+  const std::string surface = R"({"surfaces": {"s": {"parametric": ["u", "v", "0"], "u": [0, 5e-324], "v": [0, 1],
+                                                     "periodic": ["u"]}}})";
+  EXPECT_THAT(scene_error_of(surface), AllOf(HasSubstr("surfaces.s.u: interval [0, 4.94"), HasSubstr("is too narrow for double precision")));
+  EXPECT_THAT(scene_error_of(R"({"surfaces": {"s": {"parametric": ["u", "v", "0"], "u": [1e6, 1.0000000000001e6], "v": [0, 1]}}})"),
+              HasSubstr("at least 1e-10 times its largest endpoint"));
+  EXPECT_THAT(scene_error_of(R"({"surfaces": {"s": {"parametric": ["u", "v", "0"], "u": [0, 1e-9], "v": [0, 1]}}})"),
+              Not(HasSubstr("too narrow")));
+}
+
+TEST(JsonReader, ReadTextFileStopsAtItsSizeLimit) {
+  // /dev/zero has no end: the reader must stop at the limit rather than fill the memory.
+  try {
+    read_text_file("/dev/zero", "scene file", 1 << 20);
+    FAIL() << "/dev/zero was read";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("/dev/zero: larger than 1 MiB, the limit for a scene file"));
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("--max-input-mb"));
+  }
+  const auto path = std::filesystem::temp_directory_path() / "ssimarch_json_reader_limit.json";
+  { std::ofstream(path) << std::string(2000, ' ') << "{}"; }
+  EXPECT_THROW(read_text_file(path, "scene file", 1000), InputError);
+  EXPECT_EQ(read_text_file(path, "scene file", 4096).size(), 2002u);
+  std::filesystem::remove(path);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "ssimarch/core/error.hpp"
+#include "ssimarch/io/output_files.hpp"
 #include "ssimarch/io/svg_canvas.hpp"
 
 namespace ssimarch {
@@ -85,7 +86,8 @@ TEST(io_ProfilePlot, StaircaseAndFileErrors) {
   } catch (const InputError& e) {
     EXPECT_EQ(e.where(), "plot.png");
   }
-  EXPECT_THROW(write_profile_plot(std::filesystem::path("/nonexistent/dir/plot.svg"), ProfilePlot{}), InputError);
+  // A file that cannot be written is an OutputError (io/output_files.hpp), not bad input.
+  EXPECT_THROW(write_profile_plot(std::filesystem::path("/nonexistent/dir/plot.svg"), ProfilePlot{}), OutputError);
 }
 
 }  // namespace

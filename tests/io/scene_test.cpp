@@ -81,6 +81,26 @@ TEST(Scene, ConstantsMayReferToEachOtherInAnyOrder) {
   EXPECT_THAT(error_of(R"json({"constants": {"a": "zz+1"}, "surfaces": {}})json"), HasSubstr("zz"));
 }
 
+TEST(Scene, ALongChainOfConstantsResolvesInDependencyOrder) {
+  // c0 = 1, c_k = c_(k-1) + 1, so c_k = k + 1. Trial passes took cubic time (500 constants > 20 s);
+  // the dependency order compiles each constant once.
+  const int n = 5000;
+  std::string constants = "\"c0\": 1";
+  for (int k = 1; k < n; ++k) constants += ", \"c" + std::to_string(k) + "\": \"c" + std::to_string(k - 1) + " + 1\"";
+  const Scene s = parse_scene("{\"constants\": {" + constants +
+                                  "}, \"surfaces\": {\"s\": {\"sphere\": {\"center\": [0,0,0], \"radius\": \"c" +
+                                  std::to_string(n - 1) + "\"}}}}",
+                              "s.json");
+  EXPECT_EQ(s.constants.at("c" + std::to_string(n - 1)), n);
+  EXPECT_EQ(s.constants.at("c1234"), 1235);
+}
+
+TEST(Scene, ACycleOfConstantsIsNamedWithItsMembers) {
+  EXPECT_THAT(error_of(R"json({"constants": {"a": "c+1", "b": "a*2", "c": "b-1", "d": 4}, "surfaces": {}})json"),
+              HasSubstr("constants.a: the constants refer to each other in a cycle: a -> c -> b -> a"));
+  EXPECT_THAT(error_of(R"json({"constants": {"x": "x+1"}, "surfaces": {}})json"), HasSubstr("cycle: x -> x"));
+}
+
 TEST(Scene, ErrorsSayWhatAndWhere) {
   // JSON syntax: line and column.
   EXPECT_THAT(error_of("{\n  \"surfaces\": {,}\n}"), HasSubstr("s.json:2:"));

@@ -62,7 +62,7 @@ const BadValue kBadValues[] = {
     {"max_points", "1", "must be an integer in [2, 1e+15], got 1"},
     {"max_points", "1e300", "got 1e+300"},
     {"max_length", "0", "must be a finite number > 0, got 0"},
-    {"start_samples", "1001", "must be an integer in [2, 1000], got 1001"},
+    {"start_samples", "201", "must be an integer in [2, 200]; each of the n^2 corrector runs costs up to about 0.3 ms (200: about 12 s; docs/reliability.md), got 201"},
     {"certified_start_points", "1", "expected a yes/no name (true or false), got a number"},
     {"certified_start_points", "\"maybe\"", "maybe"},
     {"closed_form", "0", "expected a yes/no name (true or false), got a number"},

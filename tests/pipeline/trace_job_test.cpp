@@ -107,3 +107,38 @@ TEST(TraceJob, OptionsSetInCodeAreCheckedByTheTable) {
 
 }  // namespace
 }  // namespace ssimarch
+
+namespace ssimarch {
+namespace {
+
+// Coincident surfaces share a region, not a curve: the run says so (issue 13) with the region the
+// samples found, and surfaces that merely do not meet are not called coincident.
+TEST(TraceJob, CoincidentSurfacesAreReportedWithTheSharedRegion) {
+  const Scene scene = parse_scene(R"json({
+    "surfaces": {"a": {"sphere": {"center": [0,0,0], "radius": 1}},
+                 "b": {"implicit": "x^2 + y^2 + z^2 - 1", "box": [[-2,2],[-2,2],[-2,2]]},
+                 "p": {"plane": {"point": [0,0,0], "normal": [0,0,1]}},
+                 "q": {"implicit": "z", "box": [[-1,1],[-1,1],[-1,1]]},
+                 "far": {"sphere": {"center": [5,0,0], "radius": 1}}},
+    "intersections": [{"name": "spheres", "surfaces": ["a", "b"]}, {"name": "planes", "surfaces": ["p", "q"]},
+                      {"name": "apart", "surfaces": ["a", "far"]}]})json",
+                                  "s.json");
+  const TraceJobResult job = trace_scene(scene);
+  ASSERT_EQ(job.runs.size(), 3u);
+  for (int k = 0; k < 2; ++k) {
+    const IntersectionRun& r = job.runs[static_cast<std::size_t>(k)];
+    SCOPED_TRACE(r.spec.name);
+    EXPECT_TRUE(r.result.curves.empty());
+    ASSERT_TRUE(r.coincidence.has_value());
+    EXPECT_EQ(r.coincidence->shared, r.coincidence->samples);
+    EXPECT_THAT(testing::PrintToString(r.result.warnings), HasSubstr("the surfaces coincide"));
+  }
+  // The sphere samples cover it: the region is its bounding box to within the sample spacing.
+  const Box& b = job.runs[0].coincidence->region;
+  EXPECT_NEAR(b.z.lo, -1.0, 0.05);
+  EXPECT_NEAR(b.z.hi, 1.0, 0.05);
+  EXPECT_FALSE(job.runs[2].coincidence.has_value());
+}
+
+}  // namespace
+}  // namespace ssimarch

@@ -115,4 +115,81 @@ TEST_F(porosity_Cli, BadInputGivesFileLineAndStatus2) {
   EXPECT_EQ(run("packing spherocylinders --container-radius 3 --solid-fraction 1.5").status, 2);
 }
 
+// Issue 13: a failed run leaves earlier outputs untouched, a full device is an error.
+TEST_F(porosity_Cli, OutputsAreAllOrNothing) {
+  std::ofstream(p("ok.csv")) << "x,y,z,d\n0,0,0.5,1\n";
+  std::ofstream(p("out.csv")) << "earlier\n";
+  std::ofstream(p("out_axial.csv")) << "earlier axial\n";
+  // The summary cannot be written (its directory is missing) after both profiles were: neither
+  // profile file changes and no temporary is left behind.
+  CliRun r = run("porosity " + p("ok.csv") + " --container-radius 3 --radii 5 --axial 3 -o " + p("out.csv") +
+                 " --summary " + p("missing/s.json"));
+  EXPECT_NE(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("missing/s.json: cannot be opened for writing"), std::string::npos) << r.out;
+  EXPECT_EQ(lines(p("out.csv")), std::vector<std::string>{"earlier"});
+  EXPECT_EQ(lines(p("out_axial.csv")), std::vector<std::string>{"earlier axial"});
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 3);
+  if (fs::exists("/dev/full")) {
+    CliRun full = run("porosity " + p("ok.csv") + " --container-radius 3 --radii 5 -o /dev/full");
+    EXPECT_EQ(full.status, 2) << full.out;
+    EXPECT_NE(full.out.find("/dev/full: write failed"), std::string::npos) << full.out;
+  }
+}
+
+TEST_F(porosity_Cli, OverlappingParticlesAreReportedAndFailUnderStrict) {
+  // Three coincident spheres: the porosity at their centre is 1 - 3 = -2 (the same ball counted
+  // three times); the run says why and names the worst pair.
+  std::ofstream(p("three.csv")) << "x,y,z,d\n0,0,1,1\n0,0,1,1\n0,0,1,1\n";
+  CliRun r = run("porosity " + p("three.csv") + " --container-radius 2 --z-range 0.9,1.1 --radii 8 -o " + p("r.csv"));
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("warning: 3 pairs of particles overlap (worst: particles 1 and 2 by 1)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("outside [0, 1] for this reason"), std::string::npos) << r.out;
+  CliRun strict = run("porosity " + p("three.csv") + " --container-radius 2 --radii 4 --strict -o " + p("s.csv"));
+  EXPECT_EQ(strict.status, 1) << strict.out;
+  EXPECT_NE(strict.out.find("--strict: 3 pairs of particles overlap"), std::string::npos) << strict.out;
+  EXPECT_FALSE(fs::exists(p("s.csv")));
+}
+
+TEST_F(porosity_Cli, RangesAreValidatedWithTheReason) {
+  std::ofstream(p("ok.csv")) << "x,y,z,d\n0,0,0.5,1\n";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"--container-radius 3 --radii 2000000000", "--radii: must be at most 10000000"},
+      {"--container-radius 1e-300", "--container-radius: the radius 1e-300 is below 1e-100"},
+      {"--container-radius 3 --map 10000,10000", "--map: a map of at most 10000000 cells"},
+      {"--container-radius 3 --tolerance nan", "--tolerance: must be a finite number > 0"},
+  };
+  for (const auto& [args, message] : cases) {
+    CliRun r = run("porosity " + p("ok.csv") + " " + args);
+    EXPECT_EQ(r.status, 2) << args << "\n" << r.out;
+    EXPECT_NE(r.out.find(message), std::string::npos) << args << "\n" << r.out;
+  }
+  std::ofstream(p("huge.csv")) << "x,y,z,d\n0,0,0,1e308\n";
+  CliRun huge = run("porosity " + p("huge.csv") + " --container-radius 3");
+  EXPECT_EQ(huge.status, 2) << huge.out;
+  EXPECT_NE(huge.out.find("particle 1: diameter 1e+308 is beyond +-1e100"), std::string::npos) << huge.out;
+  CliRun zero = run("porosity /dev/zero --container-radius 3");
+  EXPECT_EQ(zero.status, 2) << zero.out;
+  EXPECT_NE(zero.out.find("/dev/zero:1: a line longer than 64 KiB"), std::string::npos) << zero.out;
+  std::ofstream(p("bom.csv")) << "\xEF\xBB\xBFx,y,z,d\n0,0,0.5,1\n";
+  EXPECT_EQ(run("porosity " + p("bom.csv") + " --container-radius 3 --radii 3").status, 0);
+}
+
+TEST_F(porosity_Cli, GeneratorOptionsAreBoundedAndItsPromiseHolds) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"--container-radius 5 --diameter-max inf", "--diameter-max: must be 0 or a finite number >= diameter"},
+      {"--container-radius 5 --diameter-max 100", "--diameter-max: the largest diameter 100 must be smaller than the container diameter 10"},
+      {"--container-radius 5 --count 100000000000", "--count: must be at most 1e7"},
+  };
+  for (const auto& [args, message] : cases) {
+    CliRun r = run("packing spheres " + args + " -o " + p("bed.csv"));
+    EXPECT_EQ(r.status, 2) << args << "\n" << r.out;
+    EXPECT_NE(r.out.find(message), std::string::npos) << args << "\n" << r.out;
+    EXPECT_FALSE(fs::exists(p("bed.csv")));
+  }
+  // Polydisperse beds keep the no-overlap promise (checked on every run; a break fails the command).
+  CliRun ok = run("packing spheres --container-radius 4 --diameter 0.5 --diameter-max 3 --count 150 -o " + p("poly.csv"));
+  EXPECT_EQ(ok.status, 0) << ok.out;
+  EXPECT_EQ(ok.out.find("max overlap"), std::string::npos) << ok.out;
+}
+
 }  // namespace

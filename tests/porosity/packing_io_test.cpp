@@ -118,5 +118,43 @@ TEST(porosity_PackingFile, MissingFileIsAnError) {
   EXPECT_THROW(read_packing("/nonexistent/bed.csv"), InputError);
 }
 
+TEST(porosity_PackingCsv, AByteOrderMarkIsSkipped) {
+  // Spreadsheets write one; it used to hide the first column ("missing column x").
+  const Packing p = csv("\xEF\xBB\xBFx,y,z,d\n0,0,0.5,1\n");
+  ASSERT_EQ(p.particles.size(), 1u);
+  EXPECT_DOUBLE_EQ(p.particles[0].diameter, 1.0);
+}
+
+TEST(porosity_PackingFile, SizeLimitsStopAWrongFile) {
+  // /dev/zero has no newline and no end.
+  try {
+    read_packing("/dev/zero");
+    FAIL() << "/dev/zero was read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/dev/zero:1: a line longer than 64 KiB"), std::string::npos) << e.what();
+  }
+  InputLimits small;
+  small.max_packing_bytes = 64;
+  std::istringstream in("x,y,z,d\n0,0,0.5,1\n0,0,1.5,1\n0,0,2.5,1\n0,0,3.5,1\n0,0,4.5,1\n0,0,5.5,1\n");  // 74 bytes
+  try {
+    read_packing_csv(in, "bed.csv", small);
+    FAIL() << "the file limit was not applied";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("larger than 64 bytes"), std::string::npos) << e.what();
+  }
+}
+
+TEST(porosity_LammpsDump, AnAtomCountBeyondTheFileIsRejectedBeforeAnyConversion) {
+  // 1e300 converted to long is undefined behaviour (UBSan's float-cast-overflow catches it).
+  std::istringstream in("ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n1e300\nITEM: ATOMS id x y z radius\n");
+  try {
+    read_lammps_dump(in, "d.dump");
+    FAIL() << "an atom count of 1e300 was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("d.dump:4: atom count 1e300 is more than the file can hold"), std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace ssimarch

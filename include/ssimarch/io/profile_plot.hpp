@@ -24,8 +24,8 @@ struct ProfilePlot {
 
 /// Writes the plot as an SVG document. The y range always includes [0, 1] (porosities).
 void write_profile_plot(std::ostream& out, const ProfilePlot& plot);
-/// Writes the plot to an .svg file. Throws InputError if the name does not end in .svg or the file
-/// cannot be written (located by the path).
+/// Writes the plot to an .svg file, all or nothing (io/output_files.hpp). Throws InputError if the
+/// name does not end in .svg, OutputError if the file cannot be written.
 void write_profile_plot(const std::filesystem::path& path, const ProfilePlot& plot);
 
 /// The staircase of a bin profile (value k held on [lower[k], upper[k]]) as a polyline.

@@ -7,13 +7,15 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "ssimarch/core/input_limits.hpp"
 #include "ssimarch/pipeline/scene.hpp"
 
 namespace ssimarch {
 
 /// Reads and validates a scene file. Throws InputError (missing file, JSON syntax error with
-/// line and column, duplicate or unknown keys, wrong types, bad values with their JSON path).
-Scene load_scene(const std::filesystem::path& path);
+/// line and column, duplicate or unknown keys, wrong types, bad values with their JSON path, a
+/// file larger than limits.max_scene_bytes).
+Scene load_scene(const std::filesystem::path& path, const InputLimits& limits = {});
 /// Same, from text; `source` names it in messages.
 Scene parse_scene(const std::string& text, const std::string& source);
 

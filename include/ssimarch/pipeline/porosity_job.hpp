@@ -12,6 +12,8 @@
 #include <string_view>
 #include <vector>
 
+#include "ssimarch/core/input_limits.hpp"
+#include "ssimarch/porosity/overlaps.hpp"
 #include "ssimarch/porosity/packing.hpp"
 #include "ssimarch/porosity/profile.hpp"
 
@@ -22,6 +24,8 @@ struct PorosityJob {
   /// The packing: read from `packing_file` (CSV or LAMMPS dump, read_packing) when `packing` is empty.
   std::filesystem::path packing_file;
   std::vector<Particle> packing;
+  /// How much of the packing file is read before it is rejected as too large.
+  InputLimits input_limits;
   double container_radius = 0.0;      ///< R > 0, packing units
   std::optional<Slab> height_range;   ///< default: the packing's vertical extent
   int radial_points = 0;              ///< eps(r) at N radii evenly on (0, R]
@@ -30,6 +34,8 @@ struct PorosityJob {
   int map_radii = 0, map_heights = 0; ///< eps(r, z) at NR x NZ cell centres (both > 0 or both 0)
   /// Accuracy, threads and integral formulation; its `progress` is replaced by the one below.
   ProfileOptions options;
+  /// Look for overlapping particles (PorosityJobResult::overlaps): O(n) for similar sizes.
+  bool find_overlaps = true;
   /// Called with the stage ("bulk", "radial", "axial", "map") and the fraction of it done.
   std::function<void(std::string_view stage, double fraction)> progress;
 };
@@ -48,13 +54,17 @@ struct PorosityJobResult {
   std::optional<PorosityProfile> bins;    ///< bins > 0
   std::optional<PorosityProfile> axial;   ///< axial_slices > 0
   std::optional<PorosityMap> map;         ///< map_radii > 0
+  /// Pairs of particles that overlap: their common volume is counted twice, so porosities are too
+  /// low (below 0 where three or more overlap). Empty when find_overlaps is false.
+  ParticleOverlaps overlaps;
   /// Per-particle integrals that missed the tolerance, over the bulk value and every profile.
   long unconverged = 0;
   PorosityTimings timings;
 };
 
 /// Throws InputError, located by the job field's name (e.g. "container_radius"), for an impossible
-/// job. Called by run_porosity_job; exposed so that front ends can check before reading the packing.
+/// job: lengths outside [1e-100, 1e100] (volumes leave double precision), more than 1e7 points in
+/// a profile or cells in a map. Called by run_porosity_job; exposed so that front ends can check before reading the packing.
 void validate(const PorosityJob& job);
 
 /// Runs the job. Throws InputError for an invalid job or packing (the packing file's errors are

@@ -11,6 +11,7 @@
 #include "ssimarch/analytic/conic.hpp"
 #include "ssimarch/geometry/curve_geometry.hpp"
 #include "ssimarch/march/result.hpp"
+#include "ssimarch/pipeline/coincidence.hpp"
 #include "ssimarch/pipeline/scene.hpp"
 #include "ssimarch/topology/curve_network.hpp"
 
@@ -31,6 +32,9 @@ struct IntersectionRun {
   /// When the closed form answered (option "closed_form"): conics[c] is result.curves[c]'s conic;
   /// empty when the curves were traced.
   std::vector<Conic> conics;
+  /// When no curve was found: the region the two surfaces share, if they share one (a warning in
+  /// result.warnings says so; docs/output-format.md "coincident").
+  std::optional<Coincidence> coincidence;
 };
 
 /// An option set for the whole job (e.g. a command-line flag) over every intersection's own.

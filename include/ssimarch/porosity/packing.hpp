@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "ssimarch/core/error.hpp"
+#include "ssimarch/core/input_limits.hpp"
 #include "ssimarch/porosity/particle.hpp"
 
 namespace ssimarch {
@@ -22,10 +23,12 @@ struct Packing {
   bool spherocylinders = false;  ///< the file had axis and length columns
 };
 
-/// Reads a CSV or a LAMMPS dump (recognised by a first line starting with "ITEM:").
-Packing read_packing(const std::filesystem::path& path);
-Packing read_packing_csv(std::istream& in, const std::string& name);
-Packing read_lammps_dump(std::istream& in, const std::string& name);
+/// Reads a CSV or a LAMMPS dump (recognised by a first line starting with "ITEM:"). A UTF-8 byte
+/// order mark before the first line is skipped. A file larger than limits.max_packing_bytes or a
+/// line longer than limits.max_line_bytes is an InputError (core/input_limits.hpp).
+Packing read_packing(const std::filesystem::path& path, const InputLimits& limits = {});
+Packing read_packing_csv(std::istream& in, const std::string& name, const InputLimits& limits = {});
+Packing read_lammps_dump(std::istream& in, const std::string& name, const InputLimits& limits = {});
 
 /// Writes the CSV format (sphere columns when every particle has length 0).
 void write_packing_csv(std::ostream& out, std::span<const Particle> particles);

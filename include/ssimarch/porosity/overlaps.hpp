@@ -1,0 +1,35 @@
+// Overlaps between the particles of a packing. The exact porosity integrates each particle on its
+// own, so a volume shared by two particles is counted twice: the porosity is then too low and may
+// fall below 0 (three coincident spheres: -1.6 at their centre). A packing from a soft-sphere DEM
+// has small overlaps by construction; a wrong file (diameters for radii, a repeated snapshot) has
+// large ones. The porosity job reports them (docs/porosity.md, "Overlapping particles").
+#pragma once
+
+#include <span>
+
+#include "ssimarch/porosity/particle.hpp"
+
+namespace ssimarch {
+
+struct ParticleOverlaps {
+  long pairs = 0;            ///< pairs of particles whose overlap depth exceeds the tolerance
+  double max_depth = 0.0;    ///< largest overlap depth d_i/2 + d_j/2 - (distance of the axes), model length
+  long worst_first = -1, worst_second = -1;  ///< the pair of max_depth (0-based indices), -1 when none
+  /// Volume counted twice, model length^3: exact for pairs of spheres (the lens between them), the
+  /// lens of the two caps' spheres nearest each other for spherocylinders (a lower bound). A triple
+  /// overlap counts each pair.
+  double doubled_volume = 0.0;
+};
+
+/// Every overlapping pair, found in O(n) expected time for particles of similar size by a
+/// hierarchical grid (one level per power of two of the particle extent, each pair tested from the
+/// level of its smaller particle). A pair overlaps when its depth exceeds
+/// `relative_tolerance` times the smaller diameter (contacts are not overlaps).
+ParticleOverlaps find_overlaps(std::span<const Particle> particles, double relative_tolerance = 1e-9);
+
+/// Volume of the lens common to two balls of radii a, b whose centres are `distance` apart:
+/// pi (a + b - D)^2 (D^2 + 2 D (a + b) - 3 (a - b)^2) / (12 D); the smaller ball's volume when
+/// one contains the other (Weisstein, "Sphere-Sphere Intersection", MathWorld).
+double sphere_lens_volume(double a, double b, double distance);
+
+}  // namespace ssimarch

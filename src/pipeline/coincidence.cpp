@@ -1,0 +1,102 @@
+#include "ssimarch/pipeline/coincidence.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "ssimarch/core/jet.hpp"
+#include "ssimarch/problem/closest_point.hpp"
+
+namespace ssimarch {
+
+namespace {
+
+// Value and gradient of an implicit surface at p.
+struct ImplicitValue {
+  double value;
+  Vec3 gradient;
+};
+
+ImplicitValue implicit_value(const Surface& s, const Vec3& p) {
+  using J = Jet<3, 1>;
+  const J v = s.value(Vec3T<J>{J::variable(0, p.x()), J::variable(1, p.y()), J::variable(2, p.z())});
+  return {v.value(), Vec3(v.derivative({1, 0, 0}), v.derivative({0, 1, 0}), v.derivative({0, 0, 1}))};
+}
+
+double sample(const Interval& iv, int i, int n) { return iv.lo + iv.width() * (i + 0.5) / n; }
+
+// Points of a parametric surface on its parameter grid.
+void parametric_samples(const Surface& s, int n, std::vector<Vec3>* out) {
+  const ParamDomain& d = s.domain();
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const Vec3T<double> p = s.point(sample(d.u, i, n), sample(d.v, j, n));
+      out->emplace_back(p.x, p.y, p.z);
+    }
+}
+
+// Grid points of `box` moved onto an implicit surface by Newton along the gradient (at most 20
+// steps; kept when the first-order distance falls below `tolerance`).
+void implicit_samples(const Surface& s, const Box& box, int n, double tolerance, std::vector<Vec3>* out) {
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      for (int k = 0; k < n; ++k) {
+        Vec3 p(sample(box.x, i, n), sample(box.y, j, n), sample(box.z, k, n));
+        for (int it = 0; it < 20; ++it) {
+          const ImplicitValue f = implicit_value(s, p);
+          const double g2 = f.gradient.squaredNorm();
+          if (!std::isfinite(f.value) || !(g2 > 0) || !std::isfinite(g2)) break;
+          if (std::abs(f.value) <= tolerance * std::sqrt(g2)) {
+            out->push_back(p);
+            break;
+          }
+          p -= f.value / g2 * f.gradient;
+        }
+      }
+}
+
+// Distance of p from a surface: to its nearest point (parametric), first order (implicit).
+double distance_from(const Surface& s, const Vec3& p) {
+  if (s.is_parametric()) {
+    const auto uv = closest_parameters(s, p);
+    if (!uv) return std::numeric_limits<double>::quiet_NaN();
+    const Vec3T<double> q = s.point((*uv)[0], (*uv)[1]);
+    return (Vec3(q.x, q.y, q.z) - p).norm();
+  }
+  const ImplicitValue f = implicit_value(s, p);
+  return std::abs(f.value) / f.gradient.norm();
+}
+
+void include(Box* b, const Vec3& p, bool first) {
+  Interval* axes[3] = {&b->x, &b->y, &b->z};
+  for (int k = 0; k < 3; ++k) {
+    if (first) *axes[k] = {p[k], p[k]};
+    axes[k]->lo = std::min(axes[k]->lo, p[k]);
+    axes[k]->hi = std::max(axes[k]->hi, p[k]);
+  }
+}
+
+}  // namespace
+
+std::optional<Coincidence> find_coincidence(const Problem& problem, double tolerance, int grid) {
+  const Surface& first = problem.first();
+  std::vector<Vec3> points;
+  if (first.is_parametric()) parametric_samples(first, grid, &points);
+  else implicit_samples(first, first.box(), grid, tolerance, &points);
+  Coincidence c;
+  for (const Vec3& p : points) {
+    if (!p.allFinite()) continue;
+    const double d = distance_from(problem.second(), p);
+    if (!std::isfinite(d)) continue;
+    ++c.samples;
+    if (d > tolerance) continue;
+    include(&c.region, p, c.shared == 0);
+    ++c.shared;
+    c.max_distance = std::max(c.max_distance, d);
+  }
+  if (c.shared < 2 * grid) return std::nullopt;
+  return c;
+}
+
+}  // namespace ssimarch
