@@ -122,20 +122,6 @@ Row job_flag_row(TraceOptionSpec spec, bool TraceJobOptions::*field) {
   return yes_no_row(std::move(spec), [field](auto& o) -> auto& { return o.*field; });
 }
 
-// A yes/no option of the trace job itself (not of the marching).
-Row job_flag_row(TraceOptionSpec spec, bool TraceJobOptions::*field) {
-  spec.type = TraceOptionSpec::Type::kChoice;
-  spec.choices = {"true", "false"};
-  spec.rule = "true or false";
-  return Row{std::move(spec), {}, {},
-             [field](TraceJobOptions* o, std::string_view s) {
-               if (s != "true" && s != "false") return false;
-               o->*field = s == "true";
-               return true;
-             },
-             [field](const TraceJobOptions& o) { return std::string(o.*field ? "true" : "false"); }, {}};
-}
-
 Row geometry_row() {
   TraceOptionSpec spec = describe("geometry", "", "none",
                                   "add t, n, b, kappa, tau, kappa_prime, theta to each output point, by this method "
@@ -165,16 +151,7 @@ Row bspline_row() {
                                   "bound on their distance from the true curve (docs/math/curve_spline.md); "
                                   "`--format step` turns it on",
                                   "yes/no");
-  spec.type = TraceOptionSpec::Type::kChoice;
-  spec.choices = {"true", "false"};
-  spec.rule = "true or false";
-  return Row{std::move(spec), {}, {},
-             [](TraceJobOptions* o, std::string_view s) {
-               if (s != "true" && s != "false") return false;
-               o->bspline = s == "true";
-               return true;
-             },
-             [](const TraceJobOptions& o) { return std::string(o.bspline ? "true" : "false"); }, {}};
+  return job_flag_row(std::move(spec), &TraceJobOptions::bspline);
 }
 
 Row bspline_tolerance_row() {
