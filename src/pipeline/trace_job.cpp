@@ -4,6 +4,7 @@
 
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/geometry/intersection_geometry.hpp"
+#include "ssimarch/march/model_size.hpp"
 #include "ssimarch/topology/trace_all.hpp"
 
 namespace ssimarch {
@@ -39,6 +40,11 @@ std::vector<IntersectionSpec> select_intersections(const Scene& scene, const Tra
 
 IntersectionRun run_intersection(const Scene& scene, const IntersectionSpec& spec) {
   IntersectionRun run{spec, scene.problem(spec), {}, {}};
+  // The options against the model before any work (march/model_size.hpp): the key at fault
+  // and the usable range.
+  std::string key, error;
+  if (!run.problem.disjoint() && !fits_model(spec.options.trace, run.problem.scale(), &key, &error))
+    throw InputError(scene.source + ": " + spec.name + (key == "model size" ? "" : ".options." + key), error);
   run.result = trace_all(run.problem, spec.options.trace, spec.starts);
   if (spec.options.geometry)
     for (const TracedCurve& c : run.result.curves)
