@@ -35,7 +35,8 @@ Event land_on_domain_edge(const Problem& problem, const CurvePoint& cur, const V
 /// boundary), or nullptr.
 const Pole* crossed_pole(const Problem& problem, const std::vector<Pole>& poles, const CurvePoint& cur, const VecX& x1);
 
-/// Newton on [H(x); normal . point(x) - offset]: the curve point on that plane (a trim's face).
+/// Newton on [H(x); normal . point(x) - offset]: the curve point on that plane (a trim's face,
+/// the plane beyond a pole).
 CorrectorResult solve_on_plane(const Problem& problem, const VecX& guess, const Vec3& normal, double offset,
                                const CorrectorOptions& co);
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "march_steps.hpp"
 #include "ssimarch/march/tracer.hpp"
 #include "ssimarch/problem/closest_point.hpp"
 #include "ssimarch/problem/curve_jet.hpp"
@@ -127,7 +128,10 @@ VecX chart_unknowns(const Problem& P, const Pole& pole, const VecX& x, const Vec
 // within half of `distance` of the target q.
 std::optional<CurvePoint> corrected_beyond(const Problem& P, const Pole& pole, const VecX& y, const Vec3& q,
                                            const Vec3& dir, double distance, const CorrectorOptions& co) {
-  const CorrectorResult c = gauss_newton(P, y, co);
+  // Corrected in the plane through q normal to dir (Allgower & Georg's pseudo-arclength
+  // corrector): a free minimum-norm correction near the pole slides along the badly scaled
+  // parameter towards P, the plane keeps the point at its distance beyond P.
+  const CorrectorResult c = internal::solve_on_plane(P, y, dir, dir.dot(q), co);
   if (c.status != CorrectorStatus::kConverged || !P.inside(c.x)) return std::nullopt;
   const Vec3 p = P.point(c.x);
   if ((p - q).norm() > 0.5 * distance || (p - pole.point).dot(dir) <= 0) return std::nullopt;

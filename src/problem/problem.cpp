@@ -67,6 +67,7 @@ double parametric_extent(const Surface& s) {
       hi = hi.cwiseMax(q);
     }
   double e = (hi - lo).norm();
+  if (e == 0) e = (hi - lo).stableNorm();  // a tiny model's squares underflow: its size, not 1
   return std::isfinite(e) && e > 0 ? e : 1.0;
 }
 
