@@ -15,8 +15,6 @@ namespace ssimarch {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-// The rule every step length meets for the model traced (TraceOptions::fits_model, step_floor).
-constexpr std::string_view kStepFloorRule = "and >= max(8 tolerance, 64 eps extent) for the model traced";
 
 std::string join(const std::vector<std::string>& names) {
   std::string s;
@@ -139,8 +137,6 @@ std::vector<Row> make_rows() {
   using C = CorrectorKind;
   using S = StepRule;
   const Range auto_length{0, kInf, false, false, true, {}};
-  // Lengths that a step rule uses: checked against the model before tracing (fits_model).
-  const Range floored_length{0, kInf, false, false, true, kStepFloorRule};
   std::vector<Row> rows;
   rows.push_back(choice_row<P>(describe("predictor", "", "`taylor`", "where the next point is guessed (docs/marching.md)", "predictor"),
                                {P::kTangent, P::kCircle, P::kCircleWuAndrade, P::kParabola, P::kPolynomial, P::kHelix, P::kTaylor},
@@ -151,20 +147,20 @@ std::vector<Row> make_rows() {
                                {S::kConstant, S::kAngular, S::kDeviation, S::kOrder3, S::kChordal}, &TraceOptions::step));
   rows.push_back(number_row(describe("step_length", "model length", "0 = automatic", "the constant rule's step L; the adaptive rules' largest step. Automatic: extent/100 (constant), "
                               "extent/10 (adaptive), extent = diagonal of the problem's region"),
-                            floored_length, &TraceOptions::step_length));
+                            auto_length, &TraceOptions::step_length));
   rows.push_back(number_row(describe("min_step_length", "model length", "0 = 1e-3 step_length", "smallest step an adaptive rule proposes"),
-                            floored_length, &TraceOptions::min_step_length));
+                            auto_length, &TraceOptions::min_step_length));
   rows.push_back(number_row(describe("deviation", "model length", "0 = 1e-4 extent", "chordal deviation delta: the `chordal` rule keeps each chord's midpoint within delta of the curve"),
                             auto_length, &TraceOptions::deviation));
   rows.push_back(number_row(describe("turn_angle", "radians", "0.1", "the `angular` rule's tangent turn per step"),
                             Range{0, 1.5, true, false, false, {}}, &TraceOptions::turn_angle));
   rows.push_back(number_row(describe("min_step", "model length", "0 = 1e-7 step_length", "below this the tracer stops at the point and reports why"),
-                            floored_length, &TraceOptions::min_step));
+                            auto_length, &TraceOptions::min_step));
   rows.push_back(number_row(describe("taylor_order", "", "4", "order of the `taylor` predictor"),
                             Range{1, static_cast<double>(kMaxCurveJetOrder), false, false, false, "the orders of the curve jet"},
                             &TraceOptions::taylor_order));
   rows.push_back(number_row(describe("tolerance", "model length", "1e-12", "a point is accepted when its distance from both surfaces is at most this"),
-                            Range{1e-15, kInf, false, false, false, "smaller cannot be reached in double precision; and in [eps extent, 1e-3 extent] for the model traced"},
+                            Range{1e-15, kInf, false, false, false, "smaller cannot be reached in double precision"},
                             &TraceOptions::tolerance));
   rows.push_back(number_row(describe("max_corrector_iterations", "", "12", "Newton updates per point"),
                             Range{1, 1000, false, false, false, {}}, &TraceOptions::max_corrector_iterations));
@@ -175,7 +171,7 @@ std::vector<Row> make_rows() {
   rows.push_back(number_row(describe("max_points", "", "200000", "per curve"),
                             Range{2, 1e15, false, false, false, {}}, &TraceOptions::max_points));
   rows.push_back(number_row(describe("max_length", "model length", "unbounded", "per curve"),
-                            Range{0, kInf, true, false, false, kStepFloorRule, true}, &TraceOptions::max_length));
+                            Range{0, kInf, true, false, false, {}, true}, &TraceOptions::max_length));
   rows.push_back(number_row(describe("start_samples", "", "24", "samples per parameter direction (per axis, at most 16, for implicit pairs) when searching "
                               "start points"),
                             Range{2, 1000, false, false, false, {}}, &TraceOptions::start_samples));
