@@ -3,48 +3,116 @@
 
 #include "march_steps.hpp"
 #include "ssimarch/march/predictor.hpp"
+#include "ssimarch/march/trim_landing.hpp"
 
 namespace ssimarch::internal {
 
 namespace {
-// The first bound of a non-periodic unknown the chord a -> a + delta crosses: its index (-1 if
-// none), the chord fraction where it does, and the bound's value.
-int first_crossed_bound(const Problem& P, const VecX& a, const VecX& delta, double* fraction, double* value) {
-  int edge = -1;
-  *fraction = 2;
+
+// The first boundary the step from `cur` to x1 crosses: a bound of a non-periodic unknown
+// (fraction of the chord in x) or a trim's face (fraction of the 3D chord); both fractions
+// estimate the same fraction of the curve's step, so the smaller one is crossed first.
+struct Crossing {
+  int unknown = -1;  // the bound's unknown, or -1
+  int trim = -1;     // the trim's index in Problem::trims(), or -1
+  double fraction = 2, value = 0;
+};
+
+Crossing first_crossing(const Problem& P, const std::vector<Slab>& trims, const CurvePoint& cur, const VecX& x1) {
+  Crossing c;
+  const VecX delta = x1 - cur.x;
   for (int i = 0; i < P.dim(); ++i) {
     if (P.periods()[static_cast<std::size_t>(i)] > 0 || delta[i] == 0) continue;
     const Interval& iv = P.bounds()[static_cast<std::size_t>(i)];
     for (double bound : {iv.lo, iv.hi}) {
-      double f = (bound - a[i]) / delta[i];
-      if (f >= 0 && f <= 1 && f < *fraction) {
-        *fraction = f;
-        edge = i;
-        *value = bound;
-      }
+      const double f = (bound - cur.x[i]) / delta[i];
+      if (f >= 0 && f <= 1 && f < c.fraction) c = Crossing{i, -1, f, bound};
     }
   }
-  return edge;
+  const Vec3 p1 = P.point(x1);
+  for (std::size_t k = 0; k < trims.size(); ++k) {
+    const Slab& s = trims[k];
+    const double a = s.normal.dot(cur.p), b = s.normal.dot(p1);
+    if (a == b) continue;
+    for (double bound : {s.range.lo, s.range.hi}) {
+      const double f = (bound - a) / (b - a);
+      if (f >= 0 && f <= 1 && f < c.fraction) c = Crossing{-1, static_cast<int>(k), f, bound};
+    }
+  }
+  return c;
 }
+
 }  // namespace
+
+// Newton on the square system [H(x); normal . point(x) - offset], Jacobian [J_H; normal^T DP(x)]:
+// the curve point on a trim's face (docs/math/poles.md §2), as solve_with_fixed_unknown lands on
+// a parameter bound.
+CorrectorResult solve_on_plane(const Problem& P, const VecX& guess, const Vec3& normal, double offset,
+                               const CorrectorOptions& co) {
+  CorrectorResult r;
+  r.x = guess;
+  const int n = P.dim();
+  auto converged = [&](const Linearization& L) {
+    return L.distance <= co.tolerance && std::fabs(normal.dot(L.point) - offset) <= co.tolerance;
+  };
+  for (int it = 1; it <= co.max_iterations + 1; ++it) {
+    const Linearization L = P.linearize(r.x);
+    ++r.linearizations;
+    ++r.evaluations[0];
+    ++r.evaluations[1];
+    r.distance = L.distance;
+    if (!L.h.allFinite() || !L.jacobian.allFinite()) break;
+    if (it > 1 && converged(L)) {
+      r.status = CorrectorStatus::kConverged;
+      return r;
+    }
+    if (it > co.max_iterations) break;
+    MatX A(n, n);
+    A.topRows(n - 1) = L.jacobian;
+    A.row(n - 1) = (L.point_jacobian.transpose() * normal).transpose();
+    VecX rhs(n);
+    rhs.head(n - 1) = L.h;
+    rhs[n - 1] = normal.dot(L.point) - offset;
+    const Eigen::FullPivLU<MatX> lu(A);
+    if (!lu.isInvertible()) {
+      r.status = CorrectorStatus::kSingular;
+      return r;
+    }
+    r.x -= lu.solve(rhs);
+    r.iterations = it;
+  }
+  r.status = CorrectorStatus::kDiverged;
+  return r;
+}
+
+const Pole* crossed_pole(const Problem& P, const std::vector<Pole>& poles, const CurvePoint& cur, const VecX& x1) {
+  const Crossing c = first_crossing(P, problem_trims(P), cur, x1);
+  if (c.unknown < 0) return nullptr;
+  for (const Pole& pole : poles)
+    if (pole.unknown == c.unknown && pole.value == c.value) return &pole;
+  return nullptr;
+}
 
 Event land_on_domain_edge(const Problem& P, const CurvePoint& cur, const VecX& x1, const CorrectorOptions& co,
                           TraceStats* stats, MarchResult* r) {
   Event e;
   e.kind = EventKind::kDomainEdge;
-  const VecX delta = x1 - cur.x;
-  double fraction = 2, value = 0;
-  const int edge = first_crossed_bound(P, cur.x, delta, &fraction, &value);
-  if (edge < 0) {
+  const std::vector<Slab> trims = problem_trims(P);
+  const Crossing c = first_crossing(P, trims, cur, x1);
+  if (c.unknown < 0 && c.trim < 0) {
     e.message = "left the domain";
     return e;
   }
-  CorrectorResult landed = solve_with_fixed_unknown(P, cur.x + fraction * delta, edge, value, co);
+  const VecX guess = cur.x + c.fraction * (x1 - cur.x);
+  const Slab* trim = c.trim >= 0 ? &trims[static_cast<std::size_t>(c.trim)] : nullptr;
+  CorrectorResult landed = trim ? solve_on_plane(P, guess, trim->normal, c.value, co)
+                                : solve_with_fixed_unknown(P, guess, c.unknown, c.value, co);
   stats->linearizations += landed.linearizations;
   stats->add_surface_evaluations(landed.evaluations);
-  const std::string name = P.unknown_names()[static_cast<std::size_t>(edge)];
-  if (landed.status != CorrectorStatus::kConverged || !P.inside(landed.x, 1e-9 * (1 + std::fabs(value)))) {
-    e.message = "left the domain at " + name + " = " + std::to_string(value) + " (could not land on the edge)";
+  const std::string name = trim ? "the trim plane n . p (n = " + describe_point(trim->normal) + ")"
+                                : P.unknown_names()[static_cast<std::size_t>(c.unknown)];
+  if (landed.status != CorrectorStatus::kConverged || !P.inside(landed.x, 1e-9 * (1 + std::fabs(c.value)))) {
+    e.message = "left the domain at " + name + " = " + std::to_string(c.value) + " (could not land on the edge)";
     return e;
   }
   const Vec3 pe = P.point(landed.x);
@@ -58,8 +126,24 @@ Event land_on_domain_edge(const Problem& P, const CurvePoint& cur, const VecX& x
     stats->record_iterations(landed.iterations);
     ++stats->points;
   }
-  e.message = "reached the domain edge " + name + " = " + std::to_string(value);
+  e.message = "reached the domain edge " + name + " = " + std::to_string(c.value);
   return e;
 }
 
 }  // namespace ssimarch::internal
+
+namespace ssimarch {
+
+std::optional<VecX> onto_trims(const Problem& P, const VecX& x, const CorrectorOptions& co) {
+  const Vec3 p = P.point(x);
+  for (const Slab& s : problem_trims(P)) {
+    if (s.contains(p)) continue;
+    const double value = s.normal.dot(p) < s.range.lo ? s.range.lo : s.range.hi;
+    const CorrectorResult r = internal::solve_on_plane(P, x, s.normal, value, co);
+    if (r.status != CorrectorStatus::kConverged || !P.inside(r.x, 1e-9 * (1 + std::fabs(value)))) return std::nullopt;
+    return r.x;
+  }
+  return x;
+}
+
+}  // namespace ssimarch

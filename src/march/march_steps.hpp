@@ -6,6 +6,7 @@
 #include "ssimarch/march/options.hpp"
 #include "ssimarch/march/tracer.hpp"
 #include "ssimarch/problem/gauss_newton.hpp"
+#include "ssimarch/problem/poles_and_trims.hpp"
 
 namespace ssimarch::internal {
 
@@ -29,6 +30,15 @@ Event stuck_event(const Problem& problem, const CurvePoint& cur, double rank_rat
 /// when it differs from cur, and returns the kDomainEdge event.
 Event land_on_domain_edge(const Problem& problem, const CurvePoint& cur, const VecX& x1, const CorrectorOptions& co,
                           TraceStats* stats, MarchResult* r);
+
+/// The pole whose degenerate edge the chord cur.x -> x1 crosses first (before any other
+/// boundary), or nullptr.
+const Pole* crossed_pole(const Problem& problem, const std::vector<Pole>& poles, const CurvePoint& cur, const VecX& x1);
+
+/// Newton on [H(x); normal . point(x) - offset]: the curve point on that plane (a trim's face,
+/// the plane beyond a pole).
+CorrectorResult solve_on_plane(const Problem& problem, const VecX& guess, const Vec3& normal, double offset,
+                               const CorrectorOptions& co);
 
 /// Whether the march closed: the start lies on the chord cur.p -> p1 within twice the chord's
 /// sagitta (from the turn cur.t -> t1) plus `slack` (model units), and the tangents agree.

@@ -7,6 +7,8 @@
 #include "march_steps.hpp"
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/march/corrector.hpp"
+#include "ssimarch/march/model_size.hpp"
+#include "ssimarch/march/pole_passage.hpp"
 #include "ssimarch/march/predictor.hpp"
 #include "ssimarch/march/step_control.hpp"
 #include "ssimarch/problem/singular_tolerances.hpp"
@@ -65,11 +67,16 @@ bool near_traced_curve(const Vec3& p, const std::vector<TracedCurve>& curves, do
 Tracer::Tracer(const Problem& problem, TraceOptions options) : problem_(problem), options_(options) {
   std::string error;
   if (!options_.is_valid(&error)) throw InputError("options", error);
+  std::string key;
+  if (!fits_model(options_, problem_.scale(), &key, &error)) throw InputError(key, error);
   const bool adaptive = options_.step != StepRule::kConstant;
-  spacing_ = options_.step_length > 0 ? options_.step_length : problem_.scale() / 100.0;
-  if (options_.step_length == 0) options_.step_length = problem_.scale() / (adaptive ? 10.0 : 100.0);
-  if (options_.min_step_length == 0) options_.min_step_length = 1e-3 * options_.step_length;
-  if (options_.min_step == 0) options_.min_step = 1e-7 * options_.step_length;
+  // The automatic lengths never fall below the step floor (options.hpp): a step that cannot
+  // move the point would loop without end.
+  const double floor = step_floor(problem_.scale(), options_.tolerance);
+  spacing_ = options_.step_length > 0 ? options_.step_length : std::max(problem_.scale() / 100.0, floor);
+  if (options_.step_length == 0) options_.step_length = std::max(problem_.scale() / (adaptive ? 10.0 : 100.0), floor);
+  if (options_.min_step_length == 0) options_.min_step_length = std::max(1e-3 * options_.step_length, floor);
+  if (options_.min_step == 0) options_.min_step = std::max(1e-7 * options_.step_length, floor);
   options_.min_step = std::min(options_.min_step, options_.min_step_length);
   if (options_.deviation == 0) options_.deviation = 1e-4 * problem_.scale();
 }
@@ -163,7 +170,33 @@ struct Marcher {
     const CurveGeometry frame = frenet_from_jet(state.here, P.scale());
     std::visit([&](auto& s) { s.accepted(a.report, frame); }, rule);
   }
+
+  // Continues from p, a point just past a pole, in the new chart: no previous point carries
+  // over (its parameters belong to the other side of the pole).
+  bool restart(const CurvePoint& p) {
+    DynamicCurveJet j = jet_at(p.x, &p.t);
+    if (j.status != CurveJetStatus::kOk) return false;
+    state = MarchState{};
+    state.map_tolerance = o.tolerance;
+    state.here = std::move(j);
+    cur = p;
+    ++stats->points;
+    return true;
+  }
 };
+
+// The pole the march is passing: the step's corrected point lies beyond a degenerate edge, or
+// (no step possible) the pole point is within two steps ahead of cur.
+const Pole* pole_ahead(const Problem& P, const std::vector<Pole>& poles, const CurvePoint& cur,
+                       const Marcher::Attempt* a, double reach) {
+  if (poles.empty()) return nullptr;
+  if (a && a->corrected.status == CorrectorStatus::kConverged && !P.inside(a->corrected.x))
+    return internal::crossed_pole(P, poles, cur, a->corrected.x);
+  if (a) return nullptr;
+  for (const Pole& pole : poles)
+    if ((pole.point - cur.p).norm() <= reach && (pole.point - cur.p).dot(cur.t) > 0) return &pole;
+  return nullptr;
+}
 
 Event budget_event(BudgetBound bound, const std::string& message) {
   Event e;
@@ -191,6 +224,40 @@ Event watch_event(const CurvePoint& cur, double previous_rank, const DynamicCurv
   return Event{};
 }
 
+// The march passes `pole` (march/pole_passage.hpp): appends the pole point where the curve goes
+// through it and the first point beyond, and restarts there. True when the march ends here: it
+// closed (on either chord) or no continuation past the pole exists (the curve ends at it).
+bool pass_pole_step(const Problem& P, const Pole& pole, double h, const CurvePoint& target, double slack,
+                    bool may_close, Marcher* m, MarchResult* r, TraceStats* stats) {
+  const double distance = std::max((pole.point - m->cur.p).norm(), 0.25 * h);
+  const PolePassage pp = pass_pole(P, pole, m->cur, distance, m->co);
+  auto end = [&](EventKind kind, const std::string& message) {
+    r->event = Event{kind, BudgetBound::kNone, message, VecX{}};
+    return true;
+  };
+  auto close_on = [&](const CurvePoint& a, const Vec3& p1, const Vec3& t1) {
+    if (!may_close || !internal::closes_loop(target, a, p1, t1, slack)) return false;
+    r->length += arc_length_estimate(a.p, a.t, target.p, target.t);
+    r->points.push_back(target);
+    return end(EventKind::kClosed, "closed loop");
+  };
+  const CurvePoint& from = pp.through ? pp.at_pole : m->cur;
+  if (pp.through) {
+    if (close_on(m->cur, pole.point, pp.at_pole.t)) return true;
+    r->length += arc_length_estimate(m->cur.p, m->cur.t, pole.point, pp.at_pole.t);
+    r->points.push_back(pp.at_pole);
+    ++stats->points;
+    if (!pp.ok) return end(EventKind::kDomainEdge, "reached the pole " + describe_point(pole.point) + ", where the curve ends: " + pp.message);
+  } else if (!pp.ok) {
+    return end(EventKind::kStepUnderflow, "passing near the pole: " + pp.message);
+  }
+  if (close_on(from, pp.beyond.p, pp.beyond.t)) return true;
+  r->length += arc_length_estimate(from.p, from.t, pp.beyond.p, pp.beyond.t);
+  r->points.push_back(pp.beyond);
+  if (!m->restart(pp.beyond)) return end(EventKind::kSingularSuspected, "no tangent past the pole at " + describe_point(pp.beyond.p));
+  return false;
+}
+
 }  // namespace
 
 MarchResult Tracer::march_until_event(const CurvePoint& start_point, Direction direction, const MarchLimits& limits,
@@ -209,12 +276,22 @@ MarchResult Tracer::march_until_event(const CurvePoint& start_point, Direction d
     return r;
   }
   std::visit([&](auto& s) { s.start(frenet_from_jet(m.state.here, problem_.scale())); }, m.rule);
-  const double sagitta_slack = 1e-8 * problem_.scale() + 10 * options_.tolerance;
+  // The closure allowance: rounding of the model's coordinates, plus the corrector tolerance
+  // magnified by the conditioning of the point across the curve, 1/sin(theta) between the
+  // normals (a near-tangential loop's points are known only to tolerance/sin(theta)). The
+  // projection and tangent tests of closes_loop keep a generous allowance from closing early,
+  // so a loop of any size relative to the step closes once (docs/marching.md, "Closure").
+  const Linearization L0 = problem_.linearize(start.x);
+  stats->add_surface_evaluations(linearize_evaluation_cost(problem_));
+  const double sin0 = L0.normal_first.cross(L0.normal_second).norm();
+  const double sagitta_slack = 1e-8 * problem_.scale() + 10 * options_.tolerance * (1 + 1 / std::max(sin0, 1e-8));
   const CurvePoint& target = limits.close_at ? *limits.close_at : start;
   // A target other than the start may lie on the very first chord (just past a singular point).
   const std::size_t first_closing = (target.p - start.p).norm() > 0 ? 1 : 3;
   bool watch = limits.watch_crossings && !limits.skip_first_watch;
   double previous_rank = 0;  // rank ratio at the point before m.cur (0: none, no minimum at the start)
+  const std::vector<Pole> poles = problem_poles(problem_);
+  auto may_close = [&] { return limits.detect_closure && r.points.size() >= first_closing; };
   while (true) {
     if (static_cast<long>(r.points.size()) >= limits.max_points) {
       r.event = budget_event(BudgetBound::kPoints, "reached max_points = " + std::to_string(limits.max_points));
@@ -225,18 +302,25 @@ MarchResult Tracer::march_until_event(const CurvePoint& start_point, Direction d
       return r;
     }
     Marcher::Attempt a = m.step();
-    if (!a.ok) {
-      if (!m.reject(a)) {
+    const double h = std::visit([](const auto& s) { return s.step(); }, m.rule);
+    const Pole* pole = pole_ahead(problem_, poles, m.cur, &a, 0);
+    if (!pole && !a.ok && !m.reject(a)) {
+      pole = pole_ahead(problem_, poles, m.cur, nullptr, 2 * options_.step_length);
+      if (!pole) {
         r.event = internal::stuck_event(problem_, m.cur, m.state.here.rank_ratio, options_.min_step, stats);
         return r;
       }
+    }
+    if (pole) {
+      if (pass_pole_step(problem_, *pole, h, target, sagitta_slack, may_close(), &m, &r, stats)) return r;
       continue;
     }
+    if (!a.ok) continue;
     if (!problem_.inside(a.corrected.x)) {
       r.event = internal::land_on_domain_edge(problem_, m.cur, a.corrected.x, m.co, stats, &r);
       return r;
     }
-    if (limits.detect_closure && r.points.size() >= first_closing &&
+    if (may_close() &&
         internal::closes_loop(target, m.cur, a.p1, a.next.tangent(), sagitta_slack)) {
       r.length += arc_length_estimate(m.cur.p, m.cur.t, target.p, target.t);
       r.points.push_back(target);

@@ -5,6 +5,7 @@
 #include "ssimarch/analytic/closed_form.hpp"
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/geometry/intersection_geometry.hpp"
+#include "ssimarch/march/model_size.hpp"
 #include "ssimarch/pipeline/branch_geometry.hpp"
 #include "ssimarch/singular/locate.hpp"
 #include "ssimarch/topology/trace_all.hpp"
@@ -86,6 +87,11 @@ void report_coincidence(const IntersectionSpec& spec, IntersectionRun* run_ptr) 
 
 IntersectionRun run_intersection(const Scene& scene, const IntersectionSpec& spec) {
   IntersectionRun run{spec, scene.problem(spec), {}, {}, {}, {}, {}, {}};
+  // The options against the model before any work (march/model_size.hpp): the key at fault
+  // and the usable range.
+  std::string key, error;
+  if (!run.problem.disjoint() && !fits_model(spec.options.trace, run.problem.scale(), &key, &error))
+    throw InputError(scene.source + ": " + spec.name + (key == "model size" ? "" : ".options." + key), error);
   find_curves(spec, &run);
   report_coincidence(spec, &run);
   run.network = build_curve_network(run.problem, run.result);

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "ssimarch/core/error.hpp"
+#include "ssimarch/problem/poles_and_trims.hpp"
 
 namespace ssimarch {
 
@@ -66,6 +67,7 @@ double parametric_extent(const Surface& s) {
       hi = hi.cwiseMax(q);
     }
   double e = (hi - lo).norm();
+  if (e == 0) e = (hi - lo).stableNorm();  // a tiny model's squares underflow: its size, not 1
   return std::isfinite(e) && e > 0 ? e : 1.0;
 }
 
@@ -82,8 +84,8 @@ Problem::Problem(Surface first, Surface second, PairKind kind)
         const ParamDomain& d = s->domain();
         bounds_.push_back(d.u);
         bounds_.push_back(d.v);
-        periods_.push_back(d.periodic_u ? d.u.hi - d.u.lo : 0.0);
-        periods_.push_back(d.periodic_v ? d.v.hi - d.v.lo : 0.0);
+        periods_.push_back(d.periodic_u || closes_seam(*s, 0) ? d.u.hi - d.u.lo : 0.0);
+        periods_.push_back(d.periodic_v || closes_seam(*s, 1) ? d.v.hi - d.v.lo : 0.0);
       }
       scale_ = std::min(parametric_extent(first_), parametric_extent(second_));
       break;
@@ -94,7 +96,8 @@ Problem::Problem(Surface first, Surface second, PairKind kind)
       dim_ = 2;
       const ParamDomain& d = first_.domain();
       bounds_ = {d.u, d.v};
-      periods_ = {d.periodic_u ? d.u.hi - d.u.lo : 0.0, d.periodic_v ? d.v.hi - d.v.lo : 0.0};
+      periods_ = {d.periodic_u || closes_seam(first_, 0) ? d.u.hi - d.u.lo : 0.0,
+                  d.periodic_v || closes_seam(first_, 1) ? d.v.hi - d.v.lo : 0.0};
       scale_ = parametric_extent(first_);
       break;
     }
@@ -222,6 +225,13 @@ bool Problem::inside(const VecX& x, double eps) const {
     const Interval& b = bounds_[static_cast<std::size_t>(i)];
     if (!(x[i] >= b.lo - eps && x[i] <= b.hi + eps)) return false;
   }
+  // The trims of implicit forms bound the curve as the parameter domains do (docs/math/poles.md §2).
+  if (kind_ == PairKind::kParametricParametric) return true;
+  const std::vector<Slab> trims = problem_trims(*this);
+  if (trims.empty()) return true;
+  const Vec3 p = point(x);
+  for (const Slab& t : trims)
+    if (!t.contains(p, eps)) return false;
   return true;
 }
 

@@ -4,6 +4,8 @@
 #include <functional>
 #include <limits>
 
+#include "ssimarch/march/pole_passage.hpp"
+#include "ssimarch/march/trim_landing.hpp"
 #include "ssimarch/problem/closest_point.hpp"
 #include "ssimarch/problem/gauss_newton.hpp"
 #include "ssimarch/problem/singular_tolerances.hpp"
@@ -116,6 +118,17 @@ std::vector<VecX> start_points_near(const Tracer& tracer, const std::vector<Vec3
 
 VecX regular_start(const Tracer& tracer, const VecX& x, std::vector<std::string>* warnings) {
   const Problem& P = tracer.problem();
+  const CorrectorOptions co{tracer.options().tolerance, tracer.options().max_corrector_iterations};
+  // A boundary root beyond a trim stands for the curve's crossing of the trim's face.
+  const std::optional<VecX> trimmed = onto_trims(P, x, co);
+  if (!trimmed) return x;
+  if (*trimmed != x) return *trimmed;
+  // A start on a degenerate edge (a pole) has no tangent in its parameters: start from the
+  // curve point next to it in the pole's chart (march/pole_passage.hpp).
+  const std::vector<Pole> poles = problem_poles(P);
+  if (const Pole* pole = pole_at(poles, x, 1e-9))
+    if (auto y = leave_pole(P, *pole, x, 0.5 * tracer.options().step_length, co))
+      return y->x;
   if (!(Problem::rank_ratio(P.linearize(x)) < kSuspectSingularRankRatio)) return x;
   auto y = regular_point_near(P, x, 0.5 * tracer.options().step_length, tracer.options().tolerance);
   if (!y) return x;

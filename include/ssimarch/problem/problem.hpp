@@ -106,7 +106,7 @@ class Problem {
   VecX wrap(const VecX& x) const;
   /// b - a with periodic coordinates reduced to (-period/2, period/2].
   VecX difference(const VecX& a, const VecX& b) const;
-  /// Whether x lies in the bounds (periodic coordinates always do), with slack `eps` (units of x).
+  /// Whether x lies in the bounds (periodic ones always do) and in every trim (poles_and_trims.hpp), slack eps.
   bool inside(const VecX& x, double eps = 0.0) const;
   /// Names of the unknowns, e.g. {"u","v","p","q"}.
   std::vector<std::string> unknown_names() const;
