@@ -1,0 +1,36 @@
+# ctest -P script: installs the build tree into a temporary prefix, then configures, builds and runs
+# examples/cmake-consumer against it (find_package(ssimarch CONFIG)) and checks the pkg-config file.
+# -D BUILD_DIR, SOURCE_DIR, WORK_DIR.
+file(REMOVE_RECURSE ${WORK_DIR})
+set(prefix ${WORK_DIR}/prefix)
+function(run)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "failed (${rc}): ${ARGN}\n${out}\n${err}")
+  endif()
+  set(out "${out}" PARENT_SCOPE)
+endfunction()
+run(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
+foreach(f include/ssimarch/pipeline/trace_job.hpp lib/cmake/ssimarch/ssimarchConfig.cmake lib/pkgconfig/ssimarch.pc)
+  if(NOT EXISTS ${prefix}/${f})
+    message(FATAL_ERROR "not installed: ${f}")
+  endif()
+endforeach()
+run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/cmake-consumer -B ${WORK_DIR}/consumer -G Ninja
+    -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${prefix})
+run(${CMAKE_COMMAND} --build ${WORK_DIR}/consumer)
+run(${WORK_DIR}/consumer/viviani_length ${SOURCE_DIR}/examples/viviani.json)
+# Viviani's curve, sphere radius 2 and cylinder radius 1: length 8 sqrt(2) E(1/sqrt 2) = 15.28079...
+if(NOT out MATCHES "viviani [0-9]+ 15\\.28")
+  message(FATAL_ERROR "unexpected output of the consumer: ${out}")
+endif()
+# pkg-config: the flags name the installed headers and libraries.
+find_program(PKG_CONFIG pkg-config)
+if(PKG_CONFIG)
+  set(ENV{PKG_CONFIG_PATH} ${prefix}/lib/pkgconfig)
+  run(${PKG_CONFIG} --cflags --libs ssimarch)
+  if(NOT out MATCHES "-I${prefix}/include" OR NOT out MATCHES "-lssimarch_pipeline")
+    message(FATAL_ERROR "pkg-config flags: ${out}")
+  endif()
+endif()
+message(STATUS "consumer output: ${out}")
