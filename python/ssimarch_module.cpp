@@ -148,7 +148,7 @@ PyTrace trace(const py::object& scene, const py::object& only, const py::kwargs&
 
 // ---- trace results ----------------------------------------------------------------------------
 
-void bind_trace(py::module_& m) {
+void bind_curve(py::module_& m) {
   py::class_<PyCurve>(m, "Curve", "One traced curve of an intersection.")
       .def_property_readonly(
           "xyz", [](const PyCurve& c) {
@@ -179,7 +179,9 @@ void bind_trace(py::module_& m) {
         return "<ssimarch.Curve " + std::string(c.curve().closed ? "closed" : "open") + ", " +
                std::to_string(c.curve().points.size()) + " points, length " + std::to_string(c.curve().length) + ">";
       });
+}
 
+void bind_intersection(py::module_& m) {
   py::class_<PyIntersection>(m, "Intersection", "One traced intersection of a scene.")
       .def_property_readonly("name", [](const PyIntersection& x) { return x.run->spec.name; })
       .def_property_readonly("surfaces", [](const PyIntersection& x) {
@@ -207,7 +209,11 @@ void bind_trace(py::module_& m) {
       .def("__repr__", [](const PyIntersection& x) {
         return "<ssimarch.Intersection " + x.run->spec.name + ", " + std::to_string(x.run->result.curves.size()) + " curve(s)>";
       });
+}
 
+void bind_trace(py::module_& m) {
+  bind_curve(m);
+  bind_intersection(m);
   py::class_<PyTrace>(m, "Trace", "The result of ssimarch.trace: every traced intersection.")
       .def_property_readonly(
           "intersections", [](const PyTrace& t) {
