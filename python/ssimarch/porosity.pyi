@@ -1,0 +1,36 @@
+# Type stubs of ssimarch.porosity. `particles`: an N×4 array (x, y, z, d) of spheres, an N×8 array
+# (x, y, z, ux, uy, uz, d, l) of spherocylinders, or the path of a packing file (CSV, LAMMPS dump).
+import os
+from typing import Union
+
+import numpy as np
+import numpy.typing as npt
+
+_Particles = Union[npt.ArrayLike, str, os.PathLike[str]]
+
+def radial(
+    particles: _Particles,
+    radius: float,
+    points: int = ...,
+    *,
+    height_range: tuple[float, float] | None = ...,
+    tolerance: float = ...,
+    threads: int = ...,
+) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]: ...
+def axial(
+    particles: _Particles,
+    radius: float,
+    slices: int = ...,
+    *,
+    height_range: tuple[float, float] | None = ...,
+    tolerance: float = ...,
+    threads: int = ...,
+) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]: ...
+def bulk(
+    particles: _Particles,
+    radius: float,
+    *,
+    height_range: tuple[float, float] | None = ...,
+    tolerance: float = ...,
+    threads: int = ...,
+) -> float: ...
