@@ -1,8 +1,7 @@
 // The Python module ssimarch._ssimarch (docs/python.md): thin bindings over the library's entry
 // points. A trace goes through load_scene/parse_scene (io/scene.hpp), the option table
 // (pipeline/option_table.hpp) and trace_scene (pipeline/trace_job.hpp); its JSON is io/trace_writers'.
-// Porosity is in porosity_bindings.cpp (a second translation unit: the porosity and surface headers
-// both define a ssimarch::Interval). Nothing is computed here: the bindings only convert between
+// Porosity is in porosity_bindings.cpp. Nothing is computed here: the bindings only convert between
 // Python/numpy and the library's types.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>

@@ -48,7 +48,7 @@ QuadResult lateral_area(const ParticleShape& s, double r, const Slab& slab, doub
   }
   const bool clip = slab.z_min > s.z_min() || slab.z_max < s.z_max();
   auto chord = [&](double th) {
-    const Interval c = s.vertical_chord(r * std::cos(th), r * std::sin(th));
+    const Chord c = s.vertical_chord(r * std::cos(th), r * std::sin(th));
     if (c.empty()) return 0.0;
     if (!clip) return c.hi - c.lo;
     return std::max(0.0, std::min(c.hi, slab.z_max) - std::max(c.lo, slab.z_min));

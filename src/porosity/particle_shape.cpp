@@ -23,7 +23,7 @@ double dist2_segment(double qx, double qy, double p0x, double p0y, double p1x, d
   return ex * ex + ey * ey;
 }
 
-void hull(Interval& acc, double lo, double hi) {
+void hull(Chord& acc, double lo, double hi) {
   if (acc.empty()) {
     acc = {lo, hi};
   } else {
@@ -56,8 +56,8 @@ ParticleShape::ParticleShape(const Particle& p) : p_(p) {
   z_max_ = std::max(cp_.z(), cm_.z()) + a_;
 }
 
-Interval ParticleShape::vertical_chord(double x, double y) const {
-  Interval out;
+Chord ParticleShape::vertical_chord(double x, double y) const {
+  Chord out;
   for (const Vec3* c : {&cp_, &cm_}) {
     const double dx = x - c->x(), dy = y - c->y();
     const double q = a2_ - dx * dx - dy * dy;

@@ -117,7 +117,7 @@ TEST(porosity_ParticleIntegrals, VerticalChordMatchesBisection) {
     const ParticleShape s(p);
     for (int k = 0; k < 200; ++k) {
       const double x = p.centre.x() + 2 * U(rng), y = p.centre.y() + 2 * U(rng);
-      const Interval c = s.vertical_chord(x, y);
+      const Chord c = s.vertical_chord(x, y);
       // The line meets the particle exactly when (x, y) is in its shadow.
       EXPECT_EQ(!c.empty(), s.shadow_contains(x, y)) << x << " " << y;
       if (c.empty() || c.length() < 1e-9) continue;

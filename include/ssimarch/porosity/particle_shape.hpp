@@ -19,7 +19,8 @@
 
 namespace ssimarch {
 
-struct Interval {
+/// The vertical chord [lo, hi] of a particle along a line x, y = const (empty when hi < lo).
+struct Chord {
   double lo = 0.0, hi = -1.0;
   bool empty() const { return !(hi >= lo); }
   double length() const { return empty() ? 0.0 : hi - lo; }
@@ -36,7 +37,7 @@ class ParticleShape {
 
   const Particle& particle() const { return p_; }
   /// Vertical chord: the z interval of the line through (x, y) inside the closed particle.
-  Interval vertical_chord(double x, double y) const;
+  Chord vertical_chord(double x, double y) const;
   /// Whether (x, y) is in the particle's shadow on the xy plane.
   bool shadow_contains(double x, double y) const;
   /// Arcs of the circle of radius r (centred on the z axis) inside the shadow; `full` when the whole
