@@ -70,7 +70,9 @@ TEST_P(MissedLoops, EveryCurveOfTheSampledReferenceOnce) {
     EXPECT_NEAR(g[k].second, e[k].second, kRelativeLength * e[k].second) << GetParam() << " curve " << k;
   }
   // The certificate stays honest: sampled start points are no guarantee.
-  if (!got.start_search.certified) EXPECT_NE(got.start_search.note.find("sampling"), std::string::npos);
+  if (!got.start_search.certified) {
+    EXPECT_NE(got.start_search.note.find("sampling"), std::string::npos);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(StressSeed1, MissedLoops,
