@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "ssimarch/problem/gauss_newton.hpp"
+#include "ssimarch/problem/singular_tolerances.hpp"
 #include "ssimarch/topology/krawczyk.hpp"
 #include "ssimarch/topology/saddle_box.hpp"
 #include "ssimarch/topology/start_points.hpp"
@@ -273,9 +274,16 @@ void add_sampled_starts(Collector* out) {
   const double power = P.kind() == PairKind::kImplicitImplicit ? 3.0 : 2.0;
   const double per_region = kRegionSampleBudget / static_cast<double>(std::max<std::size_t>(1, regions.size()));
   const int samples = std::clamp(static_cast<int>(std::pow(per_region, 1.0 / power)), 2, tracer.options().start_samples);
+  // Regular points only: a sample landing where J_H loses rank is on a curve of singular points
+  // (a tangential contact along a curve) or next to a node, which the certified candidates and
+  // the singular-point machinery handle; starting there would cut such a curve into pieces that
+  // depend on where the samples fell.
+  auto take = [&](const VecX& x) {
+    if (Problem::rank_ratio(P.linearize(x)) >= kSuspectSingularRankRatio) out->add(x, false);
+  };
   for (const UncertainRegion& u : regions)
-    for (const VecX& x : find_start_points_in(tracer, u.box, samples, out->stats)) out->add(x, false);
-  for (const VecX& x : find_start_points(tracer, out->stats)) out->add(x, false);
+    for (const VecX& x : find_start_points_in(tracer, u.box, samples, out->stats)) take(x);
+  for (const VecX& x : find_start_points(tracer, out->stats)) take(x);
 }
 
 }  // namespace
