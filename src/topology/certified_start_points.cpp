@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 
 #include "ssimarch/problem/gauss_newton.hpp"
+#include "ssimarch/problem/singular_tolerances.hpp"
 #include "ssimarch/topology/krawczyk.hpp"
 #include "ssimarch/topology/saddle_box.hpp"
 #include "ssimarch/topology/start_points.hpp"
@@ -255,6 +257,35 @@ RootSearchResult in_unknowns(const System& s, RootSearchResult r) {
   return r;
 }
 
+// Samples spent on the uncertain regions together (Newton from each), spread evenly over them.
+constexpr double kRegionSampleBudget = 4096;
+
+// When the search is not certified, start points the certificate cannot vouch for: Newton from
+// samples inside every uncertain region (an undecided box may hold a whole closed branch whose
+// turning points the budget did not reach), then from the sampling grid of the whole domain (the
+// fallback of find_start_points). The result stays `certified: false`; trace_all skips the
+// starts that lie on curves traced already, so a branch found twice is traced once.
+void add_sampled_starts(Collector* out) {
+  const Tracer& tracer = out->tracer;
+  const Problem& P = tracer.problem();
+  const std::vector<UncertainRegion>& regions = out->search->uncertain_regions;
+  // Newton runs per region grow as samples^2 (parametric pairs pair F's samples with G's nearest)
+  // or samples^3 (implicit-implicit).
+  const double power = P.kind() == PairKind::kImplicitImplicit ? 3.0 : 2.0;
+  const double per_region = kRegionSampleBudget / static_cast<double>(std::max<std::size_t>(1, regions.size()));
+  const int samples = std::clamp(static_cast<int>(std::pow(per_region, 1.0 / power)), 2, tracer.options().start_samples);
+  // Regular points only: a sample landing where J_H loses rank is on a curve of singular points
+  // (a tangential contact along a curve) or next to a node, which the certified candidates and
+  // the singular-point machinery handle; starting there would cut such a curve into pieces that
+  // depend on where the samples fell.
+  auto take = [&](const VecX& x) {
+    if (Problem::rank_ratio(P.linearize(x)) >= kSuspectSingularRankRatio) out->add(x, false);
+  };
+  for (const UncertainRegion& u : regions)
+    for (const VecX& x : find_start_points_in(tracer, u.box, samples, out->stats)) take(x);
+  for (const VecX& x : find_start_points(tracer, out->stats)) take(x);
+}
+
 }  // namespace
 
 RootSearchResult boundary_roots(const Problem& P, int i, bool upper, const RootSearchOptions& options) {
@@ -308,10 +339,13 @@ std::vector<VecX> certified_start_points(const Tracer& tracer, TraceStats* stats
       out.take(s, regions_only, true);
     }
   search->certified = boundary_decided && loops_decided;
-  if (!search->certified)
+  if (!search->certified) {
     search->note = std::string(boundary_decided ? "" : "a boundary system ") +
                    (boundary_decided || loops_decided ? "" : "and ") + (loops_decided ? "" : "every turning system ") +
-                   "left undecided boxes (uncertain_regions)";
+                   "left undecided boxes (uncertain_regions); start points also by sampling them and the domain, "
+                   "not every branch is guaranteed";
+    add_sampled_starts(&out);
+  }
   if (search->certified && saddle_boxes > 0)
     search->note = std::to_string(saddle_boxes) + " singular cluster(s) of a turning system decided as saddle boxes";
   search->time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();

@@ -19,22 +19,24 @@ using Consider = std::function<void(const VecX&)>;
 
 double sample(const Interval& iv, int i, int count) { return iv.lo + iv.width() * (i + 0.5) / count; }
 
-void sample_parametric_implicit(const Problem& P, int n, const Consider& consider) {
+using Bounds = std::vector<Interval>;
+
+void sample_parametric_implicit(const Bounds& B, int n, const Consider& consider) {
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {
       VecX x(2);
-      x << sample(P.bounds()[0], i, n), sample(P.bounds()[1], j, n);
+      x << sample(B[0], i, n), sample(B[1], j, n);
       consider(x);
     }
 }
 
-void sample_implicit_implicit(const Problem& P, int n, const Consider& consider) {
+void sample_implicit_implicit(const Bounds& B, int n, const Consider& consider) {
   const int m = std::min(n, 16);
   for (int i = 0; i < m; ++i)
     for (int j = 0; j < m; ++j)
       for (int k = 0; k < m; ++k) {
         VecX x(3);
-        x << sample(P.bounds()[0], i, m), sample(P.bounds()[1], j, m), sample(P.bounds()[2], k, m);
+        x << sample(B[0], i, m), sample(B[1], j, m), sample(B[2], k, m);
         consider(x);
       }
 }
@@ -42,12 +44,12 @@ void sample_implicit_implicit(const Problem& P, int n, const Consider& consider)
 // Pairs each sample of F with the nearest sample of G: n^2 corrector runs and n^2 nearest-neighbour
 // queries of O(log n) each (a k-d tree; the scan it replaces made start_samples = 300 cost 8e9
 // distances). docs/marching.md states the cost.
-void sample_parametric_parametric(const Problem& P, int n, const Consider& consider) {
+void sample_parametric_parametric(const Problem& P, const Bounds& B, int n, const Consider& consider) {
   std::vector<Vec3> gp;
   std::vector<Vec2> guv;
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {
-      double p = sample(P.bounds()[2], i, n), q = sample(P.bounds()[3], j, n);
+      double p = sample(B[2], i, n), q = sample(B[3], j, n);
       Vec3T<double> g = P.second().point(p, q);
       gp.emplace_back(g.x, g.y, g.z);
       guv.emplace_back(p, q);
@@ -55,7 +57,7 @@ void sample_parametric_parametric(const Problem& P, int n, const Consider& consi
   const internal::NearestPointTree tree(std::move(gp));
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {
-      double u = sample(P.bounds()[0], i, n), v = sample(P.bounds()[1], j, n);
+      double u = sample(B[0], i, n), v = sample(B[1], j, n);
       Vec3T<double> f = P.first().point(u, v);
       const std::size_t best = tree.nearest(Vec3(f.x, f.y, f.z));
       VecX x(4);
@@ -67,6 +69,11 @@ void sample_parametric_parametric(const Problem& P, int n, const Consider& consi
 }  // namespace
 
 std::vector<VecX> find_start_points(const Tracer& tracer, TraceStats* stats) {
+  return find_start_points_in(tracer, tracer.problem().bounds(), tracer.options().start_samples, stats);
+}
+
+std::vector<VecX> find_start_points_in(const Tracer& tracer, const std::vector<Interval>& box, int samples,
+                                       TraceStats* stats) {
   const Problem& P = tracer.problem();
   const CorrectorOptions co{tracer.options().tolerance, 20};
   std::vector<VecX> found;
@@ -83,11 +90,11 @@ std::vector<VecX> find_start_points(const Tracer& tracer, TraceStats* stats) {
     found.push_back(r.x);
     found_points.push_back(p);
   };
-  const int n = tracer.options().start_samples;
+  const int n = samples;
   switch (P.kind()) {
-    case PairKind::kParametricImplicit: sample_parametric_implicit(P, n, consider); break;
-    case PairKind::kImplicitImplicit: sample_implicit_implicit(P, n, consider); break;
-    case PairKind::kParametricParametric: sample_parametric_parametric(P, n, consider); break;
+    case PairKind::kParametricImplicit: sample_parametric_implicit(box, n, consider); break;
+    case PairKind::kImplicitImplicit: sample_implicit_implicit(box, n, consider); break;
+    case PairKind::kParametricParametric: sample_parametric_parametric(P, box, n, consider); break;
   }
   return found;
 }

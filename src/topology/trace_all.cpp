@@ -63,8 +63,20 @@ TracedCurve trace_branch_through(const Tracer& tracer, const CurvePoint& start, 
   BranchMarch forward = march_half(tracer, start, &start, registry, index, stats, base);
   if (forward.closed) return join(nullptr, std::move(forward));
   const CurvePoint back{start.x, start.p, -start.t};
-  const BranchMarch backward = march_half(tracer, back, nullptr, registry, index, stats, base);
-  return join(&backward, std::move(forward));
+  // A forward half stopped away from a located singular point (a step that left the domain next
+  // to a pole and could not land, a budget) may lie on a closed branch: the backward half then
+  // comes round to the forward half's last point, arriving against its tangent. Stopping there
+  // traces the loop once (issue 11: every branch exactly once) instead of running on past it.
+  const CurvePoint& last = forward.points.back();
+  const CurvePoint meet{last.x, last.p, -last.t};
+  const bool may_meet = forward.end_node < 0 && forward.points.size() > 1;
+  const BranchMarch backward = march_half(tracer, back, may_meet ? &meet : nullptr, registry, index, stats, base);
+  if (!backward.closed) return join(&backward, std::move(forward));
+  TracedCurve curve = join(&backward, std::move(forward));
+  curve.closed = true;
+  curve.start_end = curve.end_end = Termination::kClosedLoop;
+  curve.start_message = curve.end_message = "";
+  return curve;
 }
 
 // The curve leaving node n along its unused half-branch k, and, unless it closes, the same branch

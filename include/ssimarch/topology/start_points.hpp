@@ -15,6 +15,12 @@ namespace ssimarch {
 /// least half of tracer.spacing() apart. Not a guarantee of finding every component.
 std::vector<VecX> find_start_points(const Tracer& tracer, TraceStats* stats);
 
+/// The same inside `box` (one interval per unknown of H, e.g. an uncertain region of the
+/// certified search) with `samples` per direction; Newton may leave the box (any solution in the
+/// domain is kept).
+std::vector<VecX> find_start_points_in(const Tracer& tracer, const std::vector<Interval>& box, int samples,
+                                       TraceStats* stats);
+
 /// The 3D points `points` (each near the curve) moved onto it: the unknowns nearest each point,
 /// then Newton. A point that cannot be moved is left out with a warning in *warnings and counted
 /// in *failed.
