@@ -58,7 +58,7 @@ PorosityJob porosity_job(const py::object& particles, double radius, const py::o
   job.container_radius = radius;
   if (!height_range.is_none()) {
     const auto h = height_range.cast<std::pair<double, double>>();
-    job.height_range = Slab{h.first, h.second};
+    job.height_range = BedSlab{h.first, h.second};
   }
   job.options.tolerance = tolerance;
   job.options.threads = threads;

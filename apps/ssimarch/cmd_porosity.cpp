@@ -84,7 +84,7 @@ PorosityJob make_job(const PorosityArgs& a) {
   if (!a.z_range.empty()) {
     const auto [z0, z1] = parse_pair(a.z_range, "--z-range");
     if (!(z1 > z0)) throw CliError("--z-range A,B needs A < B");
-    job.height_range = Slab{z0, z1};
+    job.height_range = BedSlab{z0, z1};
   }
   job.options.tolerance = a.tolerance;
   job.options.threads = a.threads;

@@ -79,7 +79,7 @@ void run_porosity_demo(const std::filesystem::path& out_dir, std::ostream& log) 
   PorosityJob job;
   job.packing = bed.particles;
   job.container_radius = kRadius;
-  job.height_range = Slab{3.0, bed.report.height - 3.0};
+  job.height_range = BedSlab{3.0, bed.report.height - 3.0};
   job.radial_points = 200;
   job.bins = 50;
   const auto t1 = clock::now();

@@ -55,7 +55,11 @@ CorrectorResult solve_on_plane(const Problem& P, const VecX& guess, const Vec3& 
   auto converged = [&](const Linearization& L) {
     return L.distance <= co.tolerance && std::fabs(normal.dot(L.point) - offset) <= co.tolerance;
   };
-  for (int it = 1; it <= co.max_iterations + 1; ++it) {
+  // One Newton step past the tolerance: a curve meeting the plane at a shallow angle has its end
+  // point fixed along the curve only to (residual / sin angle); the extra step of a quadratically
+  // converging iteration brings it to rounding level, so both surface orders land on one point.
+  bool polish = false;
+  for (int it = 1; it <= co.max_iterations + 2; ++it) {
     const Linearization L = P.linearize(r.x);
     ++r.linearizations;
     ++r.evaluations[0];
@@ -63,10 +67,14 @@ CorrectorResult solve_on_plane(const Problem& P, const VecX& guess, const Vec3& 
     r.distance = L.distance;
     if (!L.h.allFinite() || !L.jacobian.allFinite()) break;
     if (it > 1 && converged(L)) {
-      r.status = CorrectorStatus::kConverged;
-      return r;
+      if (polish) {
+        r.status = CorrectorStatus::kConverged;
+        return r;
+      }
+      polish = true;
+    } else if (it > co.max_iterations) {
+      break;
     }
-    if (it > co.max_iterations) break;
     MatX A(n, n);
     A.topRows(n - 1) = L.jacobian;
     A.row(n - 1) = (L.point_jacobian.transpose() * normal).transpose();

@@ -131,7 +131,7 @@ void validate(const PorosityJob& job) {
     throw InputError("map_radii", "a map needs both counts > 0 (got " + std::to_string(job.map_radii) + " x " +
                                       std::to_string(job.map_heights) + ")");
   if (job.height_range) {
-    const Slab& s = *job.height_range;
+    const BedSlab& s = *job.height_range;
     if (!(s.z_max > s.z_min) || !std::isfinite(s.z_min) || !std::isfinite(s.z_max))
       throw InputError("height_range", "needs finite z_min < z_max (got [" + number(s.z_min) + ", " +
                                            number(s.z_max) + "])");
@@ -160,7 +160,7 @@ PorosityJobResult run_porosity_job(const PorosityJob& job) {
   return out;
 }
 
-Slab vertical_extent(std::span<const Particle> particles) {
+BedSlab vertical_extent(std::span<const Particle> particles) {
   double z0 = std::numeric_limits<double>::infinity(), z1 = -z0;
   for (const auto& p : particles) {
     const double ext = std::abs(p.axis.z()) * p.half_length() + p.radius();

@@ -34,7 +34,7 @@ long kernel_signature(const Particle& p, double z, double r, const KernelToleran
   return static_cast<long>(res.which) * 125 + n[0] * 25 + n[1] * 5 + n[2];
 }
 
-QuadResult lateral_area(const ParticleShape& s, double r, const Slab& slab, double abs_tol, ProfileMethod method,
+QuadResult lateral_area(const ParticleShape& s, double r, const BedSlab& slab, double abs_tol, ProfileMethod method,
                         const KernelTolerances& tol) {
   QuadResult out;
   if (!(r > 0) || r < s.rho_min() || r > s.rho_max()) return out;
@@ -97,7 +97,7 @@ QuadResult lateral_area(const ParticleShape& s, double r, const Slab& slab, doub
   return out;
 }
 
-QuadResult shell_volume(const ParticleShape& s, double r0, double r1, const Slab& slab, double abs_tol,
+QuadResult shell_volume(const ParticleShape& s, double r0, double r1, const BedSlab& slab, double abs_tol,
                         ProfileMethod method, const KernelTolerances& tol) {
   QuadResult out;
   r0 = std::max(r0, s.rho_min());

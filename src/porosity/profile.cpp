@@ -116,7 +116,7 @@ void require_sorted(std::span<const double> v, const char* what) {
 }
 
 // Volume of a ball between two horizontal planes: integral of pi (a^2 - (z - z_c)^2) dz.
-double sphere_slab_volume(const Particle& p, const Slab& slab) {
+double sphere_slab_volume(const Particle& p, const BedSlab& slab) {
   const double a = p.radius();
   const double lo = std::clamp(slab.z_min - p.centre.z(), -a, a), hi = std::clamp(slab.z_max - p.centre.z(), -a, a);
   auto F = [&](double t) { return kPi * (a * a * t - t * t * t / 3); };

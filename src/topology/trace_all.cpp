@@ -156,12 +156,14 @@ namespace {
 
 // The tracer's options with max_length no more than the run-away bound (branch_length_bound.hpp);
 // *bound: that bound when it is the binding one, else 0.
-TraceOptions bounded_options(const Tracer& tracer, double* bound) {
-  TraceOptions o = tracer.options();
-  const double b = branch_length_bound(tracer.problem(), kResolutionFraction * tracer.spacing());
-  *bound = b < o.max_length ? b : 0;
-  o.max_length = std::min(o.max_length, b);
-  return o;
+// The tracer with the run-away bound as its max_length; *bound is the bound when it is the
+// binding limit (0 otherwise).
+Tracer bounded_tracer(const Tracer& unbounded, double* bound) {
+  Tracer t(unbounded);
+  const double b = branch_length_bound(unbounded.problem(), kResolutionFraction * unbounded.spacing());
+  *bound = b < unbounded.options().max_length ? b : 0;
+  t.cap_max_length(b);
+  return t;
 }
 
 // A curve end stopped by the run-away bound says so (it is a failure, not a result).
@@ -291,7 +293,7 @@ TraceResult trace_all(const Tracer& unbounded, const std::vector<Vec3>& starts, 
     return result;
   }
   double bound = 0;
-  const Tracer tracer(P, bounded_options(unbounded, &bound));
+  const Tracer tracer = bounded_tracer(unbounded, &bound);
   if (!starts.empty()) result.start_search.method = "given";
   std::vector<VecX> seeds = starts.empty() ? automatic_start_points(tracer, &result.stats, &result.start_search)
                                            : start_points_near(tracer, starts, &result.stats, &result.warnings,

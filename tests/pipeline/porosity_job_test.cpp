@@ -61,7 +61,7 @@ TEST(pipeline_PorosityJob, EqualsTheProfilesComputedOneByOne) {
 
 TEST(pipeline_PorosityJob, RunsOnlyTheStagesAskedFor) {
   PorosityJob job = small_job();
-  job.height_range = Slab{0.5, 1.5};
+  job.height_range = BedSlab{0.5, 1.5};
   job.axial_slices = 3;
   const PorosityJobResult r = run_porosity_job(job);
   EXPECT_EQ(r.container.slab.z_min, 0.5);
@@ -97,7 +97,7 @@ TEST(pipeline_PorosityJob, InvalidJobsNameTheirField) {
   job.map_radii = 3;
   EXPECT_EQ(where_of(job), "map_radii");
   job = small_job();
-  job.height_range = Slab{2.0, 2.0};
+  job.height_range = BedSlab{2.0, 2.0};
   EXPECT_EQ(where_of(job), "height_range");
   job = PorosityJob{};
   job.container_radius = 1;

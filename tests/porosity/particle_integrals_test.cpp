@@ -41,7 +41,7 @@ std::vector<Particle> catalogue() {
 TEST(porosity_ParticleIntegrals, VolumeFromChordFormulation) {
   for (const Particle& p : catalogue()) {
     const ParticleShape s(p);
-    const auto v = shell_volume(s, 0, 1e3, Slab{-1e3, 1e3}, 1e-11 * p.volume());
+    const auto v = shell_volume(s, 0, 1e3, BedSlab{-1e3, 1e3}, 1e-11 * p.volume());
     EXPECT_NEAR(v.value, p.volume(), 1e-9 * p.volume()) << p.centre.transpose() << " | " << p.axis.transpose();
   }
 }
@@ -66,7 +66,7 @@ TEST(porosity_ParticleIntegrals, VolumeFromSeedKernelOverRAndZ) {
           [&](double z) { return slice_area(s, z, 1e3, 1e-13, {}, ProfileMethod::kKernel).value; }, br[k], br[k + 1],
           1e-11 * p.volume());
     EXPECT_NEAR(total.value, p.volume(), 1e-9 * p.volume()) << p.centre.transpose();
-    const auto vk = shell_volume(s, 0, 1e3, Slab{-1e3, 1e3}, 1e-11 * p.volume(), ProfileMethod::kKernel);
+    const auto vk = shell_volume(s, 0, 1e3, BedSlab{-1e3, 1e3}, 1e-11 * p.volume(), ProfileMethod::kKernel);
     EXPECT_NEAR(vk.value, p.volume(), 1e-9 * p.volume()) << "kernel over z then r: " << p.centre.transpose();
   }
 }
@@ -102,7 +102,7 @@ TEST(porosity_ParticleIntegrals, ChordAndKernelLateralAreasAgree) {
     for (int k = 0; k < 25; ++k) {
       const double r = s.rho_min() + (s.rho_max() - s.rho_min()) * U(rng);
       if (!(r > 0)) continue;
-      const Slab slab{-1e3, 1e3};
+      const BedSlab slab{-1e3, 1e3};
       const auto c = lateral_area(s, r, slab, 1e-13, ProfileMethod::kChord);
       const auto q = lateral_area(s, r, slab, 1e-13, ProfileMethod::kKernel);
       EXPECT_NEAR(c.value, q.value, 1e-10 * std::max(1.0, c.value)) << "r=" << r << " " << p.axis.transpose();
@@ -132,7 +132,7 @@ TEST(porosity_ParticleIntegrals, VerticalChordMatchesBisection) {
 TEST(porosity_ParticleIntegrals, SlabClippedSphereMatchesCapFormula) {
   const Particle p = make({2.0, 1.0, 0.3}, {0, 0, 1}, 1.0, 0.0);
   const ParticleShape s(p);
-  const Slab slab{0.1, 0.6};
+  const BedSlab slab{0.1, 0.6};
   // Ball between planes: pi [a^2 t - t^3/3] evaluated from t0 = -0.2 to t1 = 0.3.
   auto F = [](double t) { return kPi * (0.25 * t - t * t * t / 3); };
   const double exact = F(0.3) - F(-0.2);

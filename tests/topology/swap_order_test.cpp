@@ -23,8 +23,15 @@ constexpr double kLengthTolerance = 1e-9;  // model units (issue 11 item 4)
 constexpr double kVertexTolerance = 1e-10;
 
 // Examples whose networks still depend on the order, with the cause (another module's issue).
-// Empty: every example passes (measured in docs/topology.md).
-const std::map<std::string, std::string> kKnownFailures = {};
+const std::map<std::string, std::string> kKnownFailures = {
+    // The two cones' axes differ by 1e-7 rad, so their trim planes (march/domain_edge: a cone's
+    // range trims its implicit form) lie 1e-10 apart where the hyperbola branches leave them; the
+    // chord's estimate of which plane is met first then depends on the direction of travel, and
+    // the end vertices of the two orders differ by 1.5e-10 and 2.5e-10 (> kVertexTolerance).
+    // Landing on the other plane when the end lies beyond it starts new traces on the faces: open.
+    {"occt_bug33244_cones.json:bug33244", "ends on two trim planes 1e-10 apart (march/domain_edge)"},
+    {"occt_bug33244_cones.json:bug33244_swapped", "ends on two trim planes 1e-10 apart (march/domain_edge)"},
+};
 
 std::string swapped_text(const std::filesystem::path& file) {
   std::ifstream in(file);

@@ -8,14 +8,9 @@
 
 #include "ssimarch/analytic/conic.hpp"
 #include "ssimarch/march/result.hpp"
+#include "ssimarch/surface/trims.hpp"  // Slab: a box is three slabs, a cylinder's axial trim one
 
 namespace ssimarch {
-
-/// The points p with normal . p in range: a box is three slabs, a cylinder's axial trim one.
-struct Slab {
-  Vec3 normal = Vec3::UnitX();
-  Interval range;
-};
 
 /// The three slabs of an axis-aligned box (x, y, z intervals).
 std::vector<Slab> box_slabs(const std::array<Interval, 3>& box);

@@ -17,6 +17,8 @@
 //      prediction are rejected and retried shorter (step_guards.cpp).
 #pragma once
 
+#include <algorithm>
+
 #include <limits>
 #include <string>
 #include <string_view>
@@ -101,6 +103,9 @@ class Tracer {
   /// Distance scale for telling curves and start points apart (model units): the user's
   /// step_length, else the constant rule's automatic step (scale/100), whatever the rule.
   double spacing() const { return spacing_; }
+  /// Lowers max_length (model units) keeping the resolved automatic values: constructing a new
+  /// Tracer from options() would take the resolved step length as the user's and change spacing().
+  void cap_max_length(double max_length) { options_.max_length = std::min(options_.max_length, max_length); }
 
  private:
   const Problem& problem_;

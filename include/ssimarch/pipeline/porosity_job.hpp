@@ -27,7 +27,7 @@ struct PorosityJob {
   /// How much of the packing file is read before it is rejected as too large.
   InputLimits input_limits;
   double container_radius = 0.0;      ///< R > 0, packing units
-  std::optional<Slab> height_range;   ///< default: the packing's vertical extent
+  std::optional<BedSlab> height_range;   ///< default: the packing's vertical extent
   int radial_points = 0;              ///< eps(r) at N radii evenly on (0, R]
   int bins = 0;                       ///< N equal annular bins on [0, R]
   int axial_slices = 0;               ///< eps(z) at the centres of N equal slices of the height range
@@ -72,7 +72,7 @@ void validate(const PorosityJob& job);
 PorosityJobResult run_porosity_job(const PorosityJob& job);
 
 /// Vertical extent of the particles: the default height range.
-Slab vertical_extent(std::span<const Particle> particles);
+BedSlab vertical_extent(std::span<const Particle> particles);
 
 /// Radii of the map's cell centres: R (k + 1/2) / N, k = 0..N-1.
 std::vector<double> cell_centres(double R, int n);

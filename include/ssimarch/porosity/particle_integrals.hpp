@@ -17,7 +17,7 @@ namespace ssimarch {
 enum class ProfileMethod { kChord, kKernel };
 
 /// Height range of the profiles: z in [z_min, z_max].
-struct Slab {
+struct BedSlab {
   double z_min = 0.0, z_max = 0.0;
 };
 
@@ -29,11 +29,11 @@ double arc_length(const Particle& p, double z, double r, const KernelTolerances&
 long kernel_signature(const Particle& p, double z, double r, const KernelTolerances& tol = {});
 
 /// L_i(r) to absolute tolerance abs_tol (units length^2).
-QuadResult lateral_area(const ParticleShape& s, double r, const Slab& slab, double abs_tol,
+QuadResult lateral_area(const ParticleShape& s, double r, const BedSlab& slab, double abs_tol,
                         ProfileMethod method = ProfileMethod::kChord, const KernelTolerances& tol = {});
 
 /// V_i(r0, r1) to absolute tolerance abs_tol (units length^3).
-QuadResult shell_volume(const ParticleShape& s, double r0, double r1, const Slab& slab, double abs_tol,
+QuadResult shell_volume(const ParticleShape& s, double r0, double r1, const BedSlab& slab, double abs_tol,
                         ProfileMethod method = ProfileMethod::kChord, const KernelTolerances& tol = {});
 
 /// S_i(z) inside the disk of radius R to absolute tolerance abs_tol (units length^2). Spheres use the

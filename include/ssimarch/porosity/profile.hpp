@@ -21,7 +21,7 @@ namespace ssimarch {
 
 struct Container {
   double radius = 1.0;  ///< R > 0, model length
-  Slab slab;            ///< height range, z_max > z_min
+  BedSlab slab;            ///< height range, z_max > z_min
   double height() const { return slab.z_max - slab.z_min; }
   double volume() const;
 };
