@@ -78,7 +78,12 @@ def test_overrides_change_the_trace_and_are_reported(viviani):
     fine = ssimarch.trace(viviani, only="viviani", step_length="R/100")["viviani"]
     assert json.loads(coarse.to_json())["options"]["step_length"] == 0.2
     assert json.loads(fine.to_json())["options"]["step_length"] == pytest.approx(0.02)
-    assert sum(len(c) for c in fine.curves) > 5 * sum(len(c) for c in coarse.curves)
+    # A tenth of the step: several times the points (the chordal rule also shortens steps where
+    # the curve bends, so not ten times), and the same closed curve of the closed-form length.
+    assert sum(len(c) for c in fine.curves) > 3 * sum(len(c) for c in coarse.curves)
+    for r in (coarse, fine):
+        assert [c.closed for c in r.curves] == [True]
+        assert r.curves[0].length == pytest.approx(viviani_length(1.0), abs=1e-6)
     for c in fine.curves:
         assert np.max(np.abs(np.sum(c.xyz**2, axis=1) - 4.0)) < 1e-6
 
