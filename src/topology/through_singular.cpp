@@ -53,6 +53,15 @@ bool closes_before(const CurvePoint& start, const CurvePoint& last, const Vec3& 
   return (start.p - (last.p + tau * seg)).norm() <= allowance && start.t.dot(last.t) > 0.5;
 }
 
+// Ends `out` on the curve's start, reached from the point (p, t): the loop closed next to a
+// singular point, where the tracer's own closure test does not look (closes_before).
+void close_on_start(const Vec3& p, const Vec3& t, const CurvePoint& start, const std::string& why, BranchMarch* out) {
+  out->length += arc_length_estimate(p, t, start.p, start.t);
+  out->points.push_back(start);
+  out->closed = true;
+  out->event = stop(EventKind::kClosed, why);
+}
+
 // Options whose steps are at most `cap` (model units): after a near miss the march retakes the
 // stretch with steps short enough to follow the curve itself, since the step that reversed the
 // orientation may have jumped to a nearby arc (two arcs 0.0365 apart in the double eight at
@@ -75,6 +84,7 @@ BranchMarch march_branch(const Tracer& tracer, const CurvePoint& start, const Cu
                          const MarchLimits* base_limits) {
   const MarchLimits base = base_limits ? *base_limits : tracer.limits();
   const Problem& P = tracer.problem();
+  const double close_tolerance = 1e-9 * std::max(1.0, P.scale());  // model units: rounding of a located point
   BranchMarch out;
   out.points.push_back(start);
   CurvePoint from = start;
@@ -117,12 +127,9 @@ BranchMarch march_branch(const Tracer& tracer, const CurvePoint& start, const Cu
     }
     fine.reset();
     trim_beyond(loc.point, begin, &out);
-    if (close_at && closes_before(*close_at, out.points.back(), loc.point, 1e-9 * std::max(1.0, tracer.problem().scale()))) {
-      const CurvePoint& last = out.points.back();
-      out.length += arc_length_estimate(last.p, last.t, close_at->p, close_at->t);
-      out.points.push_back(*close_at);
-      out.closed = true;
-      out.event = stop(EventKind::kClosed, "closed at its start, passed just before a singular point");
+    if (close_at && closes_before(*close_at, out.points.back(), loc.point, close_tolerance)) {
+      const CurvePoint last = out.points.back();
+      close_on_start(last.p, last.t, *close_at, "closed at its start, passed just before a singular point", &out);
       return out;
     }
     const int n = registry->add(loc);
@@ -154,11 +161,8 @@ BranchMarch march_branch(const Tracer& tracer, const CurvePoint& start, const Cu
     registry->mark(n, k, curve);
     const HalfBranch& b = node.branches[static_cast<std::size_t>(k)];
     from = CurvePoint{b.exit_x, b.exit_point, b.direction};
-    if (close_at && closes_before(*close_at, CurvePoint{loc.x, loc.point, b.tangent_3d}, from.p, 1e-9 * std::max(1.0, tracer.problem().scale()))) {
-      out.length += arc_length_estimate(loc.point, b.tangent_3d, close_at->p, close_at->t);
-      out.points.push_back(*close_at);
-      out.closed = true;
-      out.event = stop(EventKind::kClosed, "closed at its start, just after the " + what);
+    if (close_at && closes_before(*close_at, CurvePoint{loc.x, loc.point, b.tangent_3d}, from.p, close_tolerance)) {
+      close_on_start(loc.point, b.tangent_3d, *close_at, "closed at its start, just after the " + what, &out);
       return out;
     }
     out.length += arc_length_estimate(loc.point, b.tangent_3d, from.p, from.t);
