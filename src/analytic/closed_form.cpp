@@ -2,12 +2,17 @@
 // the shape of a traced one.
 #include "ssimarch/analytic/closed_form.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <limits>
 
 #include "ssimarch/analytic/coaxial_section.hpp"
 #include "ssimarch/analytic/conic_pieces.hpp"
 #include "ssimarch/analytic/plane_section.hpp"
 #include "ssimarch/analytic/quadric_form.hpp"
+#include "ssimarch/analytic/ruled_section.hpp"
+#include "ssimarch/singular/locate.hpp"
+#include "ssimarch/topology/singular_registry.hpp"
 
 namespace ssimarch {
 
@@ -47,12 +52,80 @@ void add_trims(const Surface& s, std::vector<Slab>* slabs) {
   if (const auto* c = s.get_if<Cone>()) axial(c->frame(), c->range());
 }
 
-SingularPointReport contact_point(const Conic& c) {
+SingularPointReport contact_point(const Vec3& p) {
   SingularPointReport r;
-  r.p = c.center;
-  r.x = c.center;
+  r.p = p;
+  r.x = p;
   r.type = "isolated";
   return r;
+}
+
+bool inside_region(const Vec3& p, const std::vector<Slab>& region) {
+  return std::all_of(region.begin(), region.end(), [&](const Slab& s) { return s.contains(p); });
+}
+
+// Distance from p to the polyline of c.
+double distance_to(const TracedCurve& c, const Vec3& p) {
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i + 1 < c.points.size(); ++i) {
+    const Vec3 a = c.points[i].p, d = c.points[i + 1].p - a;
+    const double l2 = d.squaredNorm();
+    const double s = l2 > 0 ? std::clamp((p - a).dot(d) / l2, 0.0, 1.0) : 0.0;
+    best = std::min(best, (a + s * d - p).norm());
+  }
+  return best;
+}
+
+// The singular points where branches of the section meet, located and classified as the tracer
+// does it (singular/locate.hpp, topology/singular_registry.hpp), with the curves through each.
+// False when one cannot be located: the caller then traces.
+bool crossing_reports(const Problem& problem, const RuledCurves& curves, const std::vector<double>& crossings,
+                      const std::vector<Slab>& region, ClosedFormResult* out) {
+  SingularRegistry registry(problem, 1e-6 * problem.scale());
+  for (double theta : crossings) {
+    const Vec3 p = curves.double_root_point(theta);
+    if (!inside_region(p, region)) continue;
+    const SingularLocation at = locate_singular_point(problem, VecX(p));
+    if (at.status != LocateStatus::kConverged) return false;
+    SingularNode& node = registry.node(registry.add(at));
+    const auto& c = out->result.curves;
+    for (std::size_t i = 0; i < c.size(); ++i)
+      if (distance_to(c[i], at.point) <= 1e-6 * problem.scale()) node.curves.push_back(static_cast<int>(i));
+    std::sort(node.curves.begin(), node.curves.end());
+    node.curves.erase(std::unique(node.curves.begin(), node.curves.end()), node.curves.end());
+  }
+  out->result.singular_points = registry.reports();
+  return true;
+}
+
+
+// The section along the rulings of a cylinder or cone of the pair (ruled_section.hpp) in `out`;
+// false where it does not apply or a crossing point of its branches could not be located.
+bool ruled_answer(const Problem& problem, const std::vector<Slab>& region, double deviation, double max_chord,
+                  ClosedFormResult* out) {
+  const Surface* pair[2] = {&problem.first(), &problem.second()};
+  // The cylinder's rulings first: they never pass through an apex.
+  for (int pass = 0; pass < 2; ++pass)
+    for (int order = 0; order < 2; ++order) {
+      const Surface& ruled = *pair[order];
+      const Surface& other = *pair[1 - order];
+      if ((pass == 0) != (ruled.get_if<Cylinder>() != nullptr)) continue;
+      const auto rulings = rulings_of(ruled);
+      const auto Q = quadric_matrix(other);
+      if (!rulings || !Q) continue;
+      const RuledCurves curves(*rulings, *Q);
+      const auto section = curves.section();
+      if (!section) continue;
+      out->result.curves = ruled_curves_in(curves, *section, region, deviation, max_chord);
+      for (double theta : section->isolated) {
+        const Vec3 p = curves.double_root_point(theta);
+        if (inside_region(p, region)) out->result.isolated_points.push_back(contact_point(p));
+      }
+      if (!crossing_reports(problem, curves, section->crossings, region, out)) return false;
+      out->pair = "ruled-quadric";
+      return true;
+    }
+  return false;
 }
 
 }  // namespace
@@ -62,25 +135,27 @@ std::optional<ClosedFormResult> closed_form_intersection(const Problem& problem,
   const auto start = std::chrono::steady_clock::now();
   ClosedFormResult out;
   const double scale = problem.scale();
-  const auto whole = section(problem.first(), problem.second(), scale, &out.pair);
-  if (!whole) return std::nullopt;
   const auto& bounds = problem.bounds();
   std::vector<Slab> region = box_slabs({bounds[0], bounds[1], bounds[2]});
   add_trims(problem.first(), &region);
   add_trims(problem.second(), &region);
   const double deviation = options.deviation > 0 ? options.deviation : 1e-4 * scale;
   const double max_chord = options.step_length > 0 ? options.step_length : scale / 10;
-  for (const Conic& conic : *whole) {
-    for (const Conic& piece : clip_to_slabs(conic, region)) {
-      if (piece.type == ConicType::kPoint) {
-        out.result.isolated_points.push_back(contact_point(piece));
-        continue;
+  if (const auto whole = section(problem.first(), problem.second(), scale, &out.pair)) {
+    for (const Conic& conic : *whole) {
+      for (const Conic& piece : clip_to_slabs(conic, region)) {
+        if (piece.type == ConicType::kPoint) {
+          out.result.isolated_points.push_back(contact_point(piece.center));
+          continue;
+        }
+        out.result.curves.push_back(sample_conic(piece, deviation, max_chord));
+        out.conics.push_back(piece);
       }
-      out.result.curves.push_back(sample_conic(piece, deviation, max_chord));
-      out.conics.push_back(piece);
-      out.result.stats.points += static_cast<long>(out.result.curves.back().points.size());
     }
+  } else if (!ruled_answer(problem, region, deviation, max_chord, &out)) {
+    return std::nullopt;
   }
+  for (const TracedCurve& c : out.result.curves) out.result.stats.points += static_cast<long>(c.points.size());
   out.result.start_search.method = "closed-form";
   out.result.start_search.certified = true;
   out.result.start_search.note = "exact " + out.pair + " section (docs/math/closed_form_quadrics.md); no search";

@@ -162,7 +162,9 @@ TEST(ClosedForm, SphereInsideAnEqualCylinderTouchesAlongTheEquator) {
 }
 
 TEST(ClosedForm, PairsWithoutAClosedFormAreLeftToTheTracer) {
-  const Problem tilted(Sphere(Vec3(0.3, 0, 0), 2), Cylinder(Vec3::Zero(), Vec3(1, 0, 1), 1, {-3, 3}),
+  // Neither a plane nor a cylinder or cone, not coaxial (the pencil's ruled quadric is not one of
+  // the pair: marching).
+  const Problem tilted(Sphere(Vec3(0.3, 0, 0), 2), Ellipsoid(Vec3::Zero(), {1, 2, 3}, Vec3(1, 0, 1)),
                        PairKind::kImplicitImplicit);
   EXPECT_FALSE(closed_form_intersection(tilted, TraceOptions{}).has_value());
   const Problem torus(Torus(Vec3::Zero(), Vec3::UnitZ(), 2, 0.5), big_plane(Vec3::Zero(), Vec3::UnitX()),

@@ -1,0 +1,143 @@
+// The curves of a ruled section inside a region: docs/math/closed_form_quadrics.md, "Along the
+// rulings" (clipping and sampling as for conics, "Clipping and sampling").
+#include <cmath>
+#include <functional>
+
+#include "ssimarch/analytic/ruled_section.hpp"
+
+namespace ssimarch {
+
+namespace {
+
+constexpr int kStartPieces = 16, kMaxDepth = 40, kBoundaryBisections = 80;
+
+bool inside(const Vec3& p, const std::vector<Slab>& region) {
+  if (!p.allFinite()) return false;
+  for (const Slab& s : region)
+    if (!s.contains(p)) return false;
+  return true;
+}
+
+Vec3 at(const RuledCurves& rc, const RuledLoop& loop, double phi) {
+  const Vec3T<double> p = rc.point(loop, phi);
+  return {p.x, p.y, p.z};
+}
+
+// Parameters from lo to hi (both included) whose chords are within `deviation` of the curve and
+// at most `max_chord` long: each chord bisected until its midpoint is close enough.
+std::vector<double> sample_parameters(const std::function<Vec3(double)>& f, double lo, double hi, double deviation,
+                                      double max_chord) {
+  std::vector<double> out{lo};
+  std::vector<std::pair<double, int>> todo;  // (end parameter, depth), the last processed first
+  const double h = (hi - lo) / kStartPieces;
+  for (int j = kStartPieces; j >= 1; --j) todo.push_back({j == kStartPieces ? hi : lo + j * h, 0});
+  double t0 = lo;
+  Vec3 a = f(lo);
+  while (!todo.empty()) {
+    const auto [t1, depth] = todo.back();
+    const Vec3 b = f(t1), m = f(0.5 * (t0 + t1));
+    const Vec3 chord = b - a;
+    const double len = chord.norm();
+    const double sag = len > 0 ? (m - a - (m - a).dot(chord) / (len * len) * chord).norm() : (m - a).norm();
+    if (depth < kMaxDepth && (sag > deviation || len > max_chord)) {
+      todo.back().second = depth + 1;
+      todo.push_back({0.5 * (t0 + t1), depth + 1});
+      continue;
+    }
+    todo.pop_back();
+    out.push_back(t1);
+    t0 = t1;
+    a = b;
+  }
+  return out;
+}
+
+// Arc length over [lo, hi]: 8-point Gauss-Legendre on n equal pieces, n doubled until two agree.
+double arc_length(const RuledCurves& rc, const RuledLoop& loop, double lo, double hi) {
+  static constexpr double x[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
+  static constexpr double w[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
+  auto rule = [&](int n) {
+    const double h = (hi - lo) / n;
+    double sum = 0;
+    for (int j = 0; j < n; ++j) {
+      const double mid = lo + (j + 0.5) * h;
+      for (int k = 0; k < 4; ++k)
+        sum += w[k] * (rc.derivative(loop, mid + 0.5 * h * x[k]).norm() + rc.derivative(loop, mid - 0.5 * h * x[k]).norm());
+    }
+    return 0.5 * h * sum;
+  };
+  double prev = rule(4);
+  for (int n = 8; n <= 4096; n *= 2) {
+    const double next = rule(n);
+    if (std::fabs(next - prev) <= 1e-14 * std::fabs(next)) return next;
+    prev = next;
+  }
+  return prev;
+}
+
+TracedCurve make_curve(const RuledCurves& rc, const RuledLoop& loop, double lo, double hi, bool closed,
+                       double deviation, double max_chord) {
+  TracedCurve curve;
+  curve.closed = closed;
+  for (double phi : sample_parameters([&](double t) { return at(rc, loop, t); }, lo, hi, deviation, max_chord)) {
+    CurvePoint p;
+    p.p = at(rc, loop, phi);
+    p.x = p.p;
+    const Vec3 d = rc.derivative(loop, phi);
+    p.t = d.norm() > 0 ? Vec3(d.normalized()) : Vec3::Zero();
+    curve.points.push_back(std::move(p));
+  }
+  if (closed) curve.points.back() = curve.points.front();
+  curve.length = arc_length(rc, loop, lo, hi);
+  curve.start_end = curve.end_end = closed ? Termination::kClosedLoop : Termination::kLeftDomain;
+  if (!closed) curve.start_message = curve.end_message = "closed form: the curve leaves the region (box or trim)";
+  return curve;
+}
+
+// The parameter between a (inside) and b (outside) where the loop leaves the region.
+double boundary(const RuledCurves& rc, const RuledLoop& loop, const std::vector<Slab>& region, double a, double b) {
+  for (int i = 0; i < kBoundaryBisections; ++i) {
+    const double m = 0.5 * (a + b);
+    if (!(m != a && m != b)) break;
+    (inside(at(rc, loop, m), region) ? a : b) = m;
+  }
+  return a;
+}
+
+}  // namespace
+
+std::vector<TracedCurve> ruled_curves_in(const RuledCurves& rc, const RuledSection& section,
+                                         const std::vector<Slab>& region, double deviation, double max_chord) {
+  std::vector<TracedCurve> out;
+  for (const RuledLoop& loop : section.loops) {
+    const double L = loop.period();
+    std::vector<double> t = sample_parameters([&](double p) { return at(rc, loop, p); }, 0, L, deviation, max_chord);
+    t.pop_back();  // t = L is t = 0 again
+    const std::size_t n = t.size();
+    std::vector<bool> in(n);
+    std::size_t first_out = n;
+    for (std::size_t i = 0; i < n; ++i) {
+      in[i] = inside(at(rc, loop, t[i]), region);
+      if (!in[i] && first_out == n) first_out = i;
+    }
+    if (first_out == n) {
+      out.push_back(make_curve(rc, loop, 0, L, true, deviation, max_chord));
+      continue;
+    }
+    // Walk once round from an outside sample: each entry to its exit is one open piece.
+    double enter = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t i = (first_out + k) % n, j = (i + 1) % n;
+      const double ti = t[i] + (i < first_out ? L : 0.0);
+      const double tj = t[j] + (j <= first_out ? L : 0.0);
+      if (!in[i] && in[j]) enter = boundary(rc, loop, region, tj, ti);
+      if (in[i] && !in[j]) {
+        const double leave = boundary(rc, loop, region, ti, tj);
+        if (leave > enter) out.push_back(make_curve(rc, loop, enter, leave, false, deviation, max_chord));
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace ssimarch

@@ -1,0 +1,208 @@
+// docs/math/closed_form_quadrics.md, "Along the rulings": the roots of the discriminant and the
+// loops they bound.
+#include "ssimarch/analytic/ruled_section.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "ssimarch/analytic/closed_form_tolerances.hpp"
+
+namespace ssimarch {
+
+namespace {
+
+constexpr double kTwoPi = 2 * M_PI;
+constexpr int kGrid = 96;          // samples of Delta' per turn: Delta has degree 2, Delta' at most 4 roots
+constexpr double kGridStart = 0.0123456789;  // first sample: off 0 and the multiples of pi / 2
+constexpr int kBisections = 200;   // enough to reach adjacent doubles from a grid cell
+
+Eigen::Vector4d point4(const Vec3& p, double w) { return {p.x(), p.y(), p.z(), w}; }
+
+// Delta and its first two derivatives at theta.
+struct DiscriminantJet {
+  double value, first, second;
+};
+
+// A root of a function on [lo, hi] where it changes sign (bisection to adjacent doubles).
+template <class F>
+double bisect(const F& f, double lo, double hi) {
+  double flo = f(lo);
+  for (int i = 0; i < kBisections; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    if (!(mid > lo && mid < hi)) break;
+    const double fm = f(mid);
+    if ((fm < 0) == (flo < 0)) {
+      lo = mid;
+      flo = fm;
+    } else {
+      hi = mid;
+    }
+  }
+  return 0.5 * (lo + hi);
+}
+
+double wrap_angle(double theta) { return theta - kTwoPi * std::floor(theta / kTwoPi); }
+
+// A check of the root finding: Delta is >= 0 (to `zero`) along every loop, so every point is
+// real. False (the caller traces instead) if a critical point of Delta was missed.
+template <class F>
+bool covers_no_gap(const RuledSection& s, const F& disc, double zero) {
+  for (const RuledLoop& loop : s.loops)
+    for (int k = 0; k < 4 * kGrid; ++k) {
+      const double phi = loop.period() * (k + 0.5) / (4 * kGrid);
+      const double theta = loop.arc ? 0.5 * (loop.lo + loop.hi) - 0.5 * (loop.hi - loop.lo) * std::cos(phi) : loop.lo + phi;
+      if (disc(theta) < -zero) return false;
+    }
+  return true;
+}
+
+}  // namespace
+
+std::optional<Rulings> rulings_of(const Surface& surface) {
+  Rulings r;
+  if (const auto* c = surface.get_if<Cylinder>()) {
+    // X = o + r cos e0 + r sin e1 + t e2 (surface/cylinder.hpp).
+    const Frame& f = c->frame();
+    r.a = {point4(f.origin, 1), point4(c->radius() * f.e0, 0), point4(c->radius() * f.e1, 0)};
+    r.d = {point4(f.e2, 0), Eigen::Vector4d::Zero(), Eigen::Vector4d::Zero()};
+    return r;
+  }
+  if (const auto* k = surface.get_if<Cone>()) {
+    // X = o + t (tan(alpha) (cos e0 + sin e1) + e2) (surface/cone.hpp): every ruling through the apex.
+    const Frame& f = k->frame();
+    const double tn = std::tan(k->half_angle());
+    r.a = {point4(f.origin, 1), Eigen::Vector4d::Zero(), Eigen::Vector4d::Zero()};
+    r.d = {point4(f.e2, 0), point4(tn * f.e0, 0), point4(tn * f.e1, 0)};
+    r.cone = true;
+    return r;
+  }
+  return std::nullopt;
+}
+
+double RuledLoop::period() const { return arc ? kTwoPi : kTwoPi * turns; }
+
+Vec3 RuledCurves::double_root_point(double theta) const {
+  const auto [a, b, c] = quadratic(theta);
+  const double t = std::fabs(a) >= std::fabs(b) ? -b / (2 * a) : -2 * c / b;
+  const double cs = std::cos(theta), sn = std::sin(theta);
+  const Eigen::Vector4d X = r_.a[0] + cs * r_.a[1] + sn * r_.a[2] + t * (r_.d[0] + cs * r_.d[1] + sn * r_.d[2]);
+  return X.head<3>();
+}
+
+Vec3 RuledCurves::derivative(const RuledLoop& loop, double phi) const {
+  const Vec3T<Taylor<1>> p = point(loop, Taylor<1>::variable(0, phi));
+  const Vec3 d(p.x[1], p.y[1], p.z[1]);
+  if (d.allFinite()) return d;
+  const double h = 1e-6;
+  const Vec3T<double> a = point(loop, phi + h), b = point(loop, phi - h);
+  return Vec3(a.x - b.x, a.y - b.y, a.z - b.z) / (2 * h);
+}
+
+std::optional<RuledSection> RuledCurves::section() const {
+  auto disc = [&](double th) {
+    const auto [a, b, c] = quadratic(th);
+    return b * b - 4 * a * c;
+  };
+  auto disc_jet = [&](double th) {
+    const auto [a, b, c] = quadratic(Taylor<2>::variable(0, th));
+    const Taylor<2> d = b * b - 4.0 * a * c;
+    return DiscriminantJet{d[0], d[1], 2 * d[2]};
+  };
+  // Scales: of Delta's terms, and of a (for "a ruling meets Q once": a = 0 somewhere).
+  double scale = 0, a_min = std::numeric_limits<double>::infinity(), a_max = 0, c_max = 0;
+  for (int k = 0; k < kGrid; ++k) {
+    const auto [a, b, c] = quadratic(kTwoPi * k / kGrid);
+    scale = std::max(scale, b * b + 4 * std::fabs(a * c));
+    a_min = std::min(a_min, std::fabs(a));
+    a_max = std::max(a_max, std::fabs(a));
+    c_max = std::max(c_max, std::fabs(c));
+  }
+  if (!(scale > 0) || !std::isfinite(scale)) return std::nullopt;  // Q vanishes on the surface
+  if (!(a_min > kClosedFormDegeneracy * a_max) || a_max == 0) return std::nullopt;
+  // a keeps one sign (of degree 2 on a cone, it may cross 0 between the grid's samples).
+  {
+    const double a0 = quadratic(0.0)[0];
+    for (int k = 1; k <= 4 * kGrid; ++k)
+      if ((quadratic(kTwoPi * k / (4 * kGrid))[0] > 0) != (a0 > 0)) return std::nullopt;
+  }
+  // c is constant on a cone (A^T Q A at the apex): zero when the apex lies on Q, where every
+  // ruling has the root t = 0 and the curve passes through the apex.
+  if (r_.cone && 4 * a_max * c_max <= kClosedFormDegeneracy * scale) return std::nullopt;
+  const double zero = kClosedFormDegeneracy * scale;
+
+  // Critical points of Delta: sign changes of Delta' on the grid, refined.
+  // The grid starts off the axes' angles, where symmetric placements put critical points exactly.
+  std::vector<double> crit;
+  double prev = disc_jet(kGridStart).first;
+  for (int k = 1; k <= kGrid; ++k) {
+    const double lo = kGridStart + kTwoPi * (k - 1) / kGrid, hi = kGridStart + kTwoPi * k / kGrid;
+    const double cur = disc_jet(hi).first;
+    if ((prev < 0) != (cur < 0) || cur == 0) crit.push_back(wrap_angle(bisect([&](double t) { return disc_jet(t).first; }, lo, hi)));
+    prev = cur;
+  }
+  std::sort(crit.begin(), crit.end());
+  crit.erase(std::unique(crit.begin(), crit.end(), [](double x, double y) { return y - x < 1e-13; }), crit.end());
+  if (crit.size() > 1 && crit.back() - crit.front() > kTwoPi - 1e-13) crit.pop_back();  // one point, both ends
+
+  RuledSection out;
+  std::vector<double> simple;
+  double max_value = -std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < crit.size(); ++i) {
+    const DiscriminantJet j = disc_jet(crit[i]);
+    max_value = std::max(max_value, j.value);
+    if (std::fabs(j.value) <= zero) {
+      if (j.second > zero) out.crossings.push_back(crit[i]);      // a minimum touching 0: branches meet
+      else if (j.second < -zero) out.isolated.push_back(crit[i]);  // a maximum touching 0: an isolated point
+      else out.crossings.push_back(crit[i]);                       // a root of multiplicity >= 4 (tacnode)
+    }
+    // A simple root between this critical point and the next (Delta is monotone there).
+    const double a = crit[i], b = i + 1 < crit.size() ? crit[i + 1] : crit[0] + kTwoPi;
+    const double da = j.value, db = disc(b);
+    if ((da > zero && db < -zero) || (da < -zero && db > zero)) simple.push_back(wrap_angle(bisect(disc, a, b)));
+  }
+  if (crit.empty()) max_value = disc(0.0);
+  if (!(max_value > zero)) {
+    // Delta <= 0 everywhere: no curve, at most isolated points; Delta == 0 throughout: the
+    // surfaces touch along a curve (not a closed form here).
+    if (crit.empty() || std::all_of(crit.begin(), crit.end(), [&](double t) { return std::fabs(disc(t)) <= zero; }))
+      return std::nullopt;
+    out.crossings.clear();
+    return out;
+  }
+  // Which crossings change sheet: multiplicity 2 (Delta'' != 0); at a root of multiplicity 4 the
+  // square root keeps its sign.
+  std::vector<double> switching;
+  for (double t : out.crossings)
+    if (disc_jet(t).second > zero) switching.push_back(t);
+  std::sort(simple.begin(), simple.end());
+  if (simple.empty()) {
+    const int k = static_cast<int>(switching.size());
+    RuledLoop loop;
+    loop.arc = false;
+    loop.lo = 0;
+    loop.switches = switching;
+    loop.turns = k % 2 == 0 ? 1 : 2;
+    out.loops.push_back(loop);
+    if (k % 2 == 0) {
+      loop.sign = -1;
+      out.loops.push_back(loop);
+    }
+    return covers_no_gap(out, disc, zero) ? std::optional<RuledSection>(out) : std::nullopt;
+  }
+  for (std::size_t i = 0; i < simple.size(); ++i) {
+    const double lo = simple[i], hi = i + 1 < simple.size() ? simple[i + 1] : simple[0] + kTwoPi;
+    if (!(disc(0.5 * (lo + hi)) > 0)) continue;
+    RuledLoop loop;
+    loop.lo = lo;
+    loop.hi = hi;
+    for (double t : switching) {
+      const double u = t < lo ? t + kTwoPi : t;
+      if (u > lo && u < hi) loop.switches.push_back(u);
+    }
+    out.loops.push_back(loop);
+  }
+  return covers_no_gap(out, disc, zero) ? std::optional<RuledSection>(out) : std::nullopt;
+}
+
+}  // namespace ssimarch
