@@ -18,6 +18,12 @@ namespace ssimarch {
 
 namespace {
 
+// Gap (relative to the problem's scale) and sine of the angle between the normals below which a
+// double root of the discriminant is taken as the singular point it stands for; the tracer's
+// locate_singular_point converges to 1e-10 (LocateOptions::gap_tolerance) and 1e-6
+// (sine_tolerance), and a double root found by bisection is much closer. Dimensionless.
+constexpr double kCrossingTolerance = 1e-7;
+
 // The whole (unclipped) section, and which closed form gave it.
 std::optional<std::vector<Conic>> section(const Surface& a, const Surface& b, double scale, std::string* pair) {
   for (int order = 0; order < 2; ++order) {
@@ -76,17 +82,26 @@ double distance_to(const TracedCurve& c, const Vec3& p) {
   return best;
 }
 
-// The singular points where branches of the section meet, located and classified as the tracer
-// does it (singular/locate.hpp, topology/singular_registry.hpp), with the curves through each.
-// False when one cannot be located: the caller then traces.
+// The singular points where branches of the section meet (the double roots of the discriminant),
+// classified as the tracer does it (topology/singular_registry.hpp: local curve, type,
+// half-branches), with the curves through each. False when one is not a singular point to within
+// kCrossingTolerance: the caller then traces.
 bool crossing_reports(const Problem& problem, const RuledCurves& curves, const std::vector<double>& crossings,
                       const std::vector<Slab>& region, ClosedFormResult* out) {
   SingularRegistry registry(problem, 1e-6 * problem.scale());
   for (double theta : crossings) {
     const Vec3 p = curves.double_root_point(theta);
     if (!inside_region(p, region)) continue;
-    const SingularLocation at = locate_singular_point(problem, VecX(p));
-    if (at.status != LocateStatus::kConverged) return false;
+    // The double root is the singular point itself (exact up to rounding): no search; checked to
+    // be one (the surfaces meet there with parallel normals) before it is classified.
+    SingularLocation at;
+    at.x = VecX(p);
+    at.point = p;
+    const Linearization L = problem.linearize(at.x);
+    at.gap = L.distance;
+    at.sine = L.normal_first.cross(L.normal_second).norm();
+    if (!(at.gap <= kCrossingTolerance * problem.scale() && at.sine <= kCrossingTolerance)) return false;
+    at.status = LocateStatus::kConverged;
     SingularNode& node = registry.node(registry.add(at));
     const auto& c = out->result.curves;
     for (std::size_t i = 0; i < c.size(); ++i)
@@ -116,7 +131,9 @@ bool ruled_answer(const Problem& problem, const std::vector<Slab>& region, doubl
       const RuledCurves curves(*rulings, *Q);
       const auto section = curves.section();
       if (!section) continue;
-      out->result.curves = ruled_curves_in(curves, *section, region, deviation, max_chord);
+      auto pieces = ruled_curves_in(curves, *section, region, deviation, max_chord);
+      if (!pieces) return false;
+      out->result.curves = std::move(*pieces);
       for (double theta : section->isolated) {
         const Vec3 p = curves.double_root_point(theta);
         if (inside_region(p, region)) out->result.isolated_points.push_back(contact_point(p));

@@ -2,6 +2,7 @@
 // rulings" (clipping and sampling as for conics, "Clipping and sampling").
 #include <cmath>
 #include <functional>
+#include <optional>
 
 #include "ssimarch/analytic/ruled_section.hpp"
 
@@ -10,6 +11,10 @@ namespace ssimarch {
 namespace {
 
 constexpr int kStartPieces = 16, kMaxDepth = 40, kBoundaryBisections = 80;
+// Samples of one loop beyond which the closed form gives up (the caller traces): a loop that runs
+// far outside the region (rulings nearly along an asymptotic direction of Q, |t| ~ |b / a|) would
+// need ~extent / max_chord samples to clip.
+constexpr std::size_t kMaxSamples = 100000;
 
 bool inside(const Vec3& p, const std::vector<Slab>& region) {
   if (!p.allFinite()) return false;
@@ -25,8 +30,8 @@ Vec3 at(const RuledCurves& rc, const RuledLoop& loop, double phi) {
 
 // Parameters from lo to hi (both included) whose chords are within `deviation` of the curve and
 // at most `max_chord` long: each chord bisected until its midpoint is close enough.
-std::vector<double> sample_parameters(const std::function<Vec3(double)>& f, double lo, double hi, double deviation,
-                                      double max_chord) {
+std::optional<std::vector<double>> sample_parameters(const std::function<Vec3(double)>& f, double lo, double hi,
+                                                     double deviation, double max_chord) {
   std::vector<double> out{lo};
   std::vector<std::pair<double, int>> todo;  // (end parameter, depth), the last processed first
   const double h = (hi - lo) / kStartPieces;
@@ -46,13 +51,15 @@ std::vector<double> sample_parameters(const std::function<Vec3(double)>& f, doub
     }
     todo.pop_back();
     out.push_back(t1);
+    if (out.size() > kMaxSamples) return std::nullopt;
     t0 = t1;
     a = b;
   }
   return out;
 }
 
-// Arc length over [lo, hi]: 8-point Gauss-Legendre on n equal pieces, n doubled until two agree.
+// Arc length over [lo, hi]: 8-point Gauss-Legendre on n equal pieces, n doubled until two agree
+// to 1e-14 (the integrand is analytic in phi: a few doublings).
 double arc_length(const RuledCurves& rc, const RuledLoop& loop, double lo, double hi) {
   static constexpr double x[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
   static constexpr double w[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
@@ -67,7 +74,7 @@ double arc_length(const RuledCurves& rc, const RuledLoop& loop, double lo, doubl
     return 0.5 * h * sum;
   };
   double prev = rule(4);
-  for (int n = 8; n <= 4096; n *= 2) {
+  for (int n = 8; n <= 1024; n *= 2) {
     const double next = rule(n);
     if (std::fabs(next - prev) <= 1e-14 * std::fabs(next)) return next;
     prev = next;
@@ -75,11 +82,13 @@ double arc_length(const RuledCurves& rc, const RuledLoop& loop, double lo, doubl
   return prev;
 }
 
-TracedCurve make_curve(const RuledCurves& rc, const RuledLoop& loop, double lo, double hi, bool closed,
-                       double deviation, double max_chord) {
+std::optional<TracedCurve> make_curve(const RuledCurves& rc, const RuledLoop& loop, double lo, double hi, bool closed,
+                                      double deviation, double max_chord) {
   TracedCurve curve;
   curve.closed = closed;
-  for (double phi : sample_parameters([&](double t) { return at(rc, loop, t); }, lo, hi, deviation, max_chord)) {
+  const auto params = sample_parameters([&](double t) { return at(rc, loop, t); }, lo, hi, deviation, max_chord);
+  if (!params) return std::nullopt;
+  for (double phi : *params) {
     CurvePoint p;
     p.p = at(rc, loop, phi);
     p.x = p.p;
@@ -106,12 +115,19 @@ double boundary(const RuledCurves& rc, const RuledLoop& loop, const std::vector<
 
 }  // namespace
 
-std::vector<TracedCurve> ruled_curves_in(const RuledCurves& rc, const RuledSection& section,
-                                         const std::vector<Slab>& region, double deviation, double max_chord) {
+std::optional<std::vector<TracedCurve>> ruled_curves_in(const RuledCurves& rc, const RuledSection& section,
+                                                        const std::vector<Slab>& region, double deviation,
+                                                        double max_chord) {
   std::vector<TracedCurve> out;
+  auto add = [&](std::optional<TracedCurve> c) {
+    if (c) out.push_back(std::move(*c));
+    return c.has_value();
+  };
   for (const RuledLoop& loop : section.loops) {
     const double L = loop.period();
-    std::vector<double> t = sample_parameters([&](double p) { return at(rc, loop, p); }, 0, L, deviation, max_chord);
+    auto sampled = sample_parameters([&](double p) { return at(rc, loop, p); }, 0, L, deviation, max_chord);
+    if (!sampled) return std::nullopt;
+    std::vector<double>& t = *sampled;
     t.pop_back();  // t = L is t = 0 again
     const std::size_t n = t.size();
     std::vector<bool> in(n);
@@ -121,7 +137,7 @@ std::vector<TracedCurve> ruled_curves_in(const RuledCurves& rc, const RuledSecti
       if (!in[i] && first_out == n) first_out = i;
     }
     if (first_out == n) {
-      out.push_back(make_curve(rc, loop, 0, L, true, deviation, max_chord));
+      if (!add(make_curve(rc, loop, 0, L, true, deviation, max_chord))) return std::nullopt;
       continue;
     }
     // Walk once round from an outside sample: each entry to its exit is one open piece.
@@ -133,7 +149,7 @@ std::vector<TracedCurve> ruled_curves_in(const RuledCurves& rc, const RuledSecti
       if (!in[i] && in[j]) enter = boundary(rc, loop, region, tj, ti);
       if (in[i] && !in[j]) {
         const double leave = boundary(rc, loop, region, ti, tj);
-        if (leave > enter) out.push_back(make_curve(rc, loop, enter, leave, false, deviation, max_chord));
+        if (leave > enter && !add(make_curve(rc, loop, enter, leave, false, deviation, max_chord))) return std::nullopt;
       }
     }
   }

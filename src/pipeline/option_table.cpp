@@ -221,8 +221,9 @@ std::vector<Row> make_rows() {
                             Range{1, 1e9, false, false, false, {}}, &TraceOptions::start_box_budget));
   rows.push_back(job_flag_row(describe("closed_form", "", "true",
                                        "answer pairs of primitives with an exact intersection (a plane and a quadric, "
-                                       "coaxial surfaces of revolution, two spheres) in closed form, as conics with "
-                                       "exact points (docs/math/closed_form_quadrics.md); false: trace them",
+                                       "coaxial surfaces of revolution, two spheres, a cylinder or cone and a quadric) in "
+                                       "closed form, as conics or curves of exact points "
+                                       "(docs/math/closed_form_quadrics.md); false: trace them",
                                        "yes/no"),
                               &TraceJobOptions::closed_form));
   rows.push_back(job_flag_row(describe("hunt_isolated_points", "", "true",

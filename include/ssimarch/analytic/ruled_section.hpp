@@ -155,8 +155,10 @@ namespace ssimarch {
 /// a loop wholly inside comes back closed (its last point repeats the first), the parts of the
 /// others inside as open curves ending on the region's faces (kLeftDomain, ends found by
 /// bisection). Chords within `deviation` of the curve and at most `max_chord` long; lengths by
-/// Gauss-Legendre quadrature of |d point / d phi| (analytic in phi).
-std::vector<TracedCurve> ruled_curves_in(const RuledCurves& curves, const RuledSection& section,
-                                         const std::vector<Slab>& region, double deviation, double max_chord);
+/// Gauss-Legendre quadrature of |d point / d phi| (analytic in phi). nullopt when a loop would need
+/// more than 100000 samples (it runs far outside the region): the caller traces instead.
+std::optional<std::vector<TracedCurve>> ruled_curves_in(const RuledCurves& curves, const RuledSection& section,
+                                                        const std::vector<Slab>& region, double deviation,
+                                                        double max_chord);
 
 }  // namespace ssimarch
