@@ -3,6 +3,7 @@
 #include "ssimarch/analytic/closed_form.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <limits>
 
@@ -118,30 +119,38 @@ bool crossing_reports(const Problem& problem, const RuledCurves& curves, const s
 // false where it does not apply or a crossing point of its branches could not be located.
 bool ruled_answer(const Problem& problem, const std::vector<Slab>& region, double deviation, double max_chord,
                   ClosedFormResult* out) {
-  const Surface* pair[2] = {&problem.first(), &problem.second()};
-  // The cylinder's rulings first: they never pass through an apex.
-  for (int pass = 0; pass < 2; ++pass)
-    for (int order = 0; order < 2; ++order) {
-      const Surface& ruled = *pair[order];
-      const Surface& other = *pair[1 - order];
-      if ((pass == 0) != (ruled.get_if<Cylinder>() != nullptr)) continue;
-      const auto rulings = rulings_of(ruled);
-      const auto Q = quadric_matrix(other);
-      if (!rulings || !Q) continue;
-      const RuledCurves curves(*rulings, *Q);
-      const auto section = curves.section();
-      if (!section) continue;
-      auto pieces = ruled_curves_in(curves, *section, region, deviation, max_chord);
-      if (!pieces) return false;
-      out->result.curves = std::move(*pieces);
-      for (double theta : section->isolated) {
-        const Vec3 p = curves.double_root_point(theta);
-        if (inside_region(p, region)) out->result.isolated_points.push_back(contact_point(p));
-      }
-      if (!crossing_reports(problem, curves, section->crossings, region, out)) return false;
-      out->pair = "ruled-quadric";
-      return true;
+  // Which surface's rulings: a cylinder's before a cone's (they never pass through an apex), and
+  // between two of a kind the one first by (size, origin, axis), so that the answer does not
+  // depend on the order of the pair.
+  auto key = [](const Surface& s) {
+    const Cylinder* c = s.get_if<Cylinder>();
+    const Cone* k = s.get_if<Cone>();
+    const Frame& f = c ? c->frame() : k->frame();
+    return std::array<double, 8>{c ? 0.0 : 1.0, c ? c->radius() : k->half_angle(), f.origin.x(), f.origin.y(),
+                                 f.origin.z(), f.e2.x(), f.e2.y(), f.e2.z()};
+  };
+  std::vector<std::pair<const Surface*, const Surface*>> order;  // (ruled, other)
+  for (const auto& [ruled, other] : {std::pair{&problem.first(), &problem.second()}, std::pair{&problem.second(), &problem.first()}})
+    if (ruled->get_if<Cylinder>() || ruled->get_if<Cone>()) order.push_back({ruled, other});
+  if (order.size() == 2 && key(*order[1].first) < key(*order[0].first)) std::swap(order[0], order[1]);
+  for (const auto& [ruled, other] : order) {
+    const auto rulings = rulings_of(*ruled);
+    const auto Q = quadric_matrix(*other);
+    if (!rulings || !Q) continue;
+    const RuledCurves curves(*rulings, *Q);
+    const auto section = curves.section();
+    if (!section) continue;
+    auto pieces = ruled_curves_in(curves, *section, region, deviation, max_chord);
+    if (!pieces) return false;
+    out->result.curves = std::move(*pieces);
+    for (double theta : section->isolated) {
+      const Vec3 p = curves.double_root_point(theta);
+      if (inside_region(p, region)) out->result.isolated_points.push_back(contact_point(p));
     }
+    if (!crossing_reports(problem, curves, section->crossings, region, out)) return false;
+    out->pair = "ruled-quadric";
+    return true;
+  }
   return false;
 }
 

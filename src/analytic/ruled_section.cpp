@@ -15,7 +15,8 @@ namespace {
 constexpr double kTwoPi = 2 * M_PI;
 constexpr int kGrid = 96;          // samples of Delta' per turn: Delta has degree 2, Delta' at most 4 roots
 constexpr double kGridStart = 0.0123456789;  // first sample: off 0 and the multiples of pi / 2
-constexpr int kBisections = 200;   // enough to reach adjacent doubles from a grid cell
+constexpr int kBisections = 200;
+constexpr double kJetDiscriminant = 1e-8;  // |Delta| relative to its terms above which its jet is trusted   // enough to reach adjacent doubles from a grid cell
 
 Eigen::Vector4d point4(const Vec3& p, double w) { return {p.x(), p.y(), p.z(), w}; }
 
@@ -91,12 +92,19 @@ Vec3 RuledCurves::double_root_point(double theta) const {
 }
 
 Vec3 RuledCurves::derivative(const RuledLoop& loop, double phi) const {
-  const Vec3T<Taylor<1>> p = point(loop, Taylor<1>::variable(0, phi));
-  const Vec3 d(p.x[1], p.y[1], p.z[1]);
-  if (d.allFinite()) return d;
-  const double h = 1e-6;
-  const Vec3T<double> a = point(loop, phi + h), b = point(loop, phi - h);
-  return Vec3(a.x - b.x, a.y - b.y, a.z - b.z) / (2 * h);
+  // Jets in phi are exact where Delta is well away from 0; at and next to its roots (the turning
+  // points, the crossings) sqrt(Delta)'s jet is 0/0 and rounding decides it, so there a central
+  // difference of the (analytic) loop: its error is O(h^2) ~ 1e-10 relative.
+  const double theta = loop.arc ? 0.5 * (loop.lo + loop.hi) - 0.5 * (loop.hi - loop.lo) * std::cos(phi) : loop.lo + phi;
+  const auto [a, b, c] = quadratic(theta);
+  if (std::fabs(b * b - 4 * a * c) > kJetDiscriminant * (b * b + 4 * std::fabs(a * c))) {
+    const Vec3T<Taylor<1>> p = point(loop, Taylor<1>::variable(0, phi));
+    const Vec3 d(p.x[1], p.y[1], p.z[1]);
+    if (d.allFinite()) return d;
+  }
+  const double h = 1e-5;
+  const Vec3T<double> ahead = point(loop, phi + h), behind = point(loop, phi - h);
+  return Vec3(ahead.x - behind.x, ahead.y - behind.y, ahead.z - behind.z) / (2 * h);
 }
 
 std::optional<RuledSection> RuledCurves::section() const {
