@@ -15,6 +15,7 @@ constexpr int kStartPieces = 16, kMaxDepth = 40, kBoundaryBisections = 80;
 // far outside the region (rulings nearly along an asymptotic direction of Q, |t| ~ |b / a|) would
 // need ~extent / max_chord samples to clip.
 constexpr std::size_t kMaxSamples = 100000;
+constexpr int kCoarseSamples = 256;
 
 bool inside(const Vec3& p, const std::vector<Slab>& region) {
   if (!p.allFinite()) return false;
@@ -125,6 +126,16 @@ std::optional<std::vector<TracedCurve>> ruled_curves_in(const RuledCurves& rc, c
   };
   for (const RuledLoop& loop : section.loops) {
     const double L = loop.period();
+    // A coarse polyline first: a loop that runs far outside the region needs more samples than
+    // the cap, which it need not spend to find out.
+    double coarse = 0;
+    Vec3 last = at(rc, loop, 0);
+    for (int k = 1; k <= kCoarseSamples; ++k) {
+      const Vec3 next = at(rc, loop, L * k / kCoarseSamples);
+      coarse += (next - last).norm();
+      last = next;
+    }
+    if (!(coarse / max_chord < static_cast<double>(kMaxSamples))) return std::nullopt;
     auto sampled = sample_parameters([&](double p) { return at(rc, loop, p); }, 0, L, deviation, max_chord);
     if (!sampled) return std::nullopt;
     std::vector<double>& t = *sampled;
