@@ -65,7 +65,8 @@ void find_curves(const IntersectionSpec& spec, IntersectionRun* run_ptr) {
 // When no curve was found, whether the surfaces coincide over a region (issue 13 item 3).
 void report_coincidence(const IntersectionSpec& spec, IntersectionRun* run_ptr) {
   IntersectionRun& run = *run_ptr;
-  if (!run.result.curves.empty()) return;
+  // A closed form answers only distinct surfaces (closed_form.hpp: coincident ones are traced).
+  if (!run.result.curves.empty() || run.result.start_search.method == "closed-form") return;
   // Coincident surfaces share a region, not a curve: say so rather than report "0 curves". The
   // distance test allows for the corrector's tolerance and the rounding of the model's size.
   const double tolerance = std::max(1e3 * spec.options.trace.tolerance, 1e-12 * run.problem.scale());
