@@ -158,3 +158,39 @@ def test_dict_scene_of_the_docs_is_a_circle():
     np.testing.assert_allclose(c.xyz[:, 2], 0.5, atol=1e-7)
     with pytest.raises(KeyError):
         result["nope"]
+
+
+def test_topology_of_the_figure_eight(viviani):
+    run = ssimarch.trace(viviani, only="viviani")["viviani"]
+    topo = run.topology
+    assert json.loads(topo.to_json()) == json.loads(run.to_json())["topology"]
+    assert topo.complete and topo.failures == []
+    # One closed curve through the node at (0, -2, 0): one vertex, two loops as edges, one component.
+    nodes = [v for v in topo.vertices if v["kind"] == "singular_point"]
+    assert len(nodes) == 1 and nodes[0]["type"] == "node"
+    np.testing.assert_allclose(nodes[0]["xyz"], [0.0, -2.0, 0.0], atol=1e-6)
+    assert len(topo.branches) == len(run.curves) == 1 and topo.branches[0]["closed"]
+    assert len(topo.edges) == 2 and all(e["vertices"] == [nodes[0]["id"]] * 2 for e in topo.edges)
+    assert sum(e["length"] for e in topo.edges) == pytest.approx(viviani_length(1.0), rel=1e-3)
+    assert topo.components == [{"branches": [0], "vertices": [nodes[0]["id"]]}]
+
+
+def test_singular_expansions_follow_the_traced_curve(viviani):
+    """Each half-branch at the node: the curve's points at distance X along its tangent lie at the
+    offset sum c X^e along its normal (the Puiseux expansion, singular/puiseux.hpp)."""
+    run = ssimarch.trace(viviani, only="viviani", step_length=0.01)["viviani"]
+    (node,) = [p for p in run.singular_points if p["type"] == "node"]
+    origin = np.array(node["xyz"])
+    xyz = np.vstack([c.xyz for c in run.curves]) - origin
+    assert len(node["half_branches"]) == 4
+    for hb in node["half_branches"]:
+        t, n = np.array(hb["tangent"]), np.array(hb["expansion"]["normal"])
+        terms = hb["expansion"]["terms"]
+        assert terms[0]["exponent"] == hb["expansion"]["exponent"]
+        assert terms[0]["coefficient"] == pytest.approx(hb["expansion"]["coefficient"])
+        X = xyz @ t
+        mine = (X > 0.02) & (X < 0.15) & (np.linalg.norm(xyz - np.outer(X, t), axis=1) < 0.5 * X)
+        assert mine.sum() >= 5, hb
+        w = sum(term["coefficient"] * X[mine] ** term["exponent"] for term in terms)
+        # Truncated at order 6: the remainder is O(X^7) on top of the trace's accuracy.
+        np.testing.assert_allclose(xyz[mine] @ n, w, rtol=0, atol=1e-6)
