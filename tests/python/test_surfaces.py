@@ -13,6 +13,7 @@ R = 2.0  # sphere radius
 
 def sphere_closed_form(u, v):
     """F(u, v) = c + r (cos v (cos u, sin u, 0) + sin v z) (docs/scene-format.md, sphere, axis z)."""
+    u, v = np.broadcast_arrays(np.asarray(u, dtype=float), np.asarray(v, dtype=float))
     return C + R * np.stack([np.cos(v) * np.cos(u), np.cos(v) * np.sin(u), np.sin(v)], axis=-1)
 
 
@@ -203,7 +204,7 @@ def test_surface_errors_carry_the_scene_readers_message():
         ssimarch.Sphere([0, 0, 0], -1)
     assert isinstance(e.value, ValueError)
     with pytest.raises(ssimarch.InputError, match="radus"):
-        ssimarch.Surface({"sphere": {"center": [0, 0, 0], "radus": 1}})
+        ssimarch.Surface({"sphere": {"center": [0, 0, 0], "radius": 1, "radus": 1}})
     with pytest.raises(ssimarch.InputError, match="unmatched"):
         ssimarch.ParametricSurface("cos(u", "v", "0", domain=((0, 1), (0, 1)))
     with pytest.raises(ssimarch.InputError, match="R"):
