@@ -116,6 +116,7 @@ py::dict curve_geometry(const py::object& scene, const py::object& other, const 
   const Scene s = python::scene_of(scene, other, "curve_geometry");
   const IntersectionSpec& spec = intersection_of(s, intersection);
   PointGeometryQuery query;
+  query.at = Vec3::Zero();  // set per point below
   query.method = method_of(spec, method);
   if (!(step > 0) || !std::isfinite(step)) throw InputError("step", "must be a positive length, got " + std::to_string(step));
   query.step = step;

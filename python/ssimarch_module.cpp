@@ -11,6 +11,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <thread>
 
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/io/scene.hpp"
@@ -271,6 +272,7 @@ void bind_trace(py::module_& m) {
 PYBIND11_MODULE(_ssimarch, m) {
   m.doc() = "ssimarch: surface-surface intersection curves and porosity profiles (docs/python.md)";
   py::register_exception<ssimarch::InputError>(m, "InputError", PyExc_ValueError);
+  ssimarch::python::main_thread() = std::this_thread::get_id();  // imports run on the main thread
   ssimarch::bind_trace(m);
   ssimarch::bind_surface(m);
   ssimarch::bind_curve_geometry(m);

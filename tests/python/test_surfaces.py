@@ -1,6 +1,8 @@
 """ssimarch.Surface and its constructors against closed forms: points, derivatives, normals and
 curvatures of both forms on numpy arrays, input edge cases, and traces of Python-built surfaces."""
+import json
 import math
+import subprocess
 
 import numpy as np
 import pytest
@@ -270,3 +272,24 @@ def test_trace_with_constants_of_both_surfaces():
     clash = ssimarch.Plane([0, 0, "R"], [0, 0, 1], constants={"R": 0.5})
     with pytest.raises(ssimarch.InputError, match="constants.R"):
         ssimarch.trace(a, clash)
+
+
+def strip_timing(x):
+    if isinstance(x, dict):
+        return {k: strip_timing(v) for k, v in x.items() if k != "time_ms"}
+    if isinstance(x, list):
+        return [strip_timing(v) for v in x]
+    return x
+
+
+def test_python_surfaces_round_trip_through_the_cli(cli, tmp_path):
+    # The descriptions written as a scene file give the CLI the same curves as trace(a, b).
+    a = ssimarch.Torus([0, 0, 0], [0, 0, 1], 2.0, 0.5)
+    b = ssimarch.ParametricSurface("u", "v", "0.3*u", domain=((-3, 3), (-3, 3)))
+    scene = tmp_path / "scene.json"
+    scene.write_text(json.dumps({"surfaces": {"a": a.description, "b": b.description},
+                                 "intersections": [{"name": "a-b", "surfaces": ["a", "b"]}]}))
+    out = subprocess.run([cli, "trace", "-q", str(scene)], check=True, capture_output=True, text=True).stdout
+    mine = ssimarch.trace(a, b)
+    assert strip_timing(json.loads(mine.to_json())) == strip_timing(json.loads(out))
+    assert len(mine["a-b"].curves) >= 1
