@@ -164,6 +164,30 @@ py::tuple pack(const std::string& kind, double radius, long count, double diamet
   return py::make_tuple(particle_array(r.particles, kind == "spherocylinders"), info);
 }
 
+// The packing generator and the de Klerk correlation, the companions of the profiles.
+void bind_packing(py::module_& m) {
+  m.def("pack", &pack, py::arg("kind"), py::arg("container_radius"), py::arg("count") = 1000, py::kw_only(),
+        py::arg("diameter") = 1.0, py::arg("diameter_max") = py::none(), py::arg("length") = py::none(),
+        py::arg("height") = py::none(), py::arg("solid_fraction") = py::none(), py::arg("seed") = 1u,
+        "Generates a packing in a cylinder (`ssimarch packing`): kind 'spheres' (drop and roll on the floor z = 0; "
+        "diameter_max > diameter: diameters uniform in [diameter, diameter_max]) or 'spherocylinders' (random "
+        "sequential addition; length l, default 2; container height, default from solid_fraction, default 0.2). "
+        "Deterministic for a seed. Returns (particles, info): an N×4 (spheres) or N×8 array as the functions above "
+        "take, and a dict placed, attempts, height, max_overlap, unstable, container_radius, height_range, "
+        "bulk_porosity.");
+  m.def(
+      "de_klerk",
+      [](const py::object& x_wall, double eps_bulk) {
+        const Array x = python::as_double_array(x_wall, "x_wall");
+        Array out = python::new_array(python::shape_with(x, {}));
+        for (py::ssize_t i = 0; i < x.size(); ++i) out.mutable_data()[i] = de_klerk_porosity(x.data()[i], eps_bulk);
+        return out;
+      },
+      py::arg("x_wall"), py::arg("eps_bulk"),
+      "The de Klerk (2003) correlation of the radial porosity of monodisperse sphere beds "
+      "(porosity/correlation.hpp) at distances x_wall = (R - r) / d from the wall (an array), for comparison plots.");
+}
+
 }  // namespace
 
 void bind_porosity(py::module_& m) {
@@ -229,26 +253,7 @@ void bind_porosity(py::module_& m) {
       py::arg("height_range") = py::none(), py::arg("tolerance") = 1e-8, py::arg("threads") = 0u,
       "Porosity map eps(r, z) at the centres of radii x heights cells (the CLI's --map): returns (r, z, eps) with "
       "eps of shape (heights, radii), eps[i, j] at z[i], r[j].");
-  m.def("pack", &pack, py::arg("kind"), py::arg("container_radius"), py::arg("count") = 1000, py::kw_only(),
-        py::arg("diameter") = 1.0, py::arg("diameter_max") = py::none(), py::arg("length") = py::none(),
-        py::arg("height") = py::none(), py::arg("solid_fraction") = py::none(), py::arg("seed") = 1u,
-        "Generates a packing in a cylinder (`ssimarch packing`): kind 'spheres' (drop and roll on the floor z = 0; "
-        "diameter_max > diameter: diameters uniform in [diameter, diameter_max]) or 'spherocylinders' (random "
-        "sequential addition; length l, default 2; container height, default from solid_fraction, default 0.2). "
-        "Deterministic for a seed. Returns (particles, info): an N×4 (spheres) or N×8 array as the functions above "
-        "take, and a dict placed, attempts, height, max_overlap, unstable, container_radius, height_range, "
-        "bulk_porosity.");
-  m.def(
-      "de_klerk",
-      [](const py::object& x_wall, double eps_bulk) {
-        const Array x = python::as_double_array(x_wall, "x_wall");
-        Array out = python::new_array(python::shape_with(x, {}));
-        for (py::ssize_t i = 0; i < x.size(); ++i) out.mutable_data()[i] = de_klerk_porosity(x.data()[i], eps_bulk);
-        return out;
-      },
-      py::arg("x_wall"), py::arg("eps_bulk"),
-      "The de Klerk (2003) correlation of the radial porosity of monodisperse sphere beds "
-      "(porosity/correlation.hpp) at distances x_wall = (R - r) / d from the wall (an array), for comparison plots.");
+  bind_packing(m);
 }
 
 }  // namespace ssimarch

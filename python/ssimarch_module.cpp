@@ -210,8 +210,9 @@ void bind_intersection(py::module_& m) {
         return python_of(singular_points_to_json(x.run->result.singular_points)); },
         "As the JSON's singular_points: list of dicts xyz, params, type, ak, multiplicity, milnor, curves and "
         "half_branches, each with tangent, param_tangent, continuation and expansion {coefficient, exponent (the "
-        "leading term), normal, terms [{exponent, coefficient}]}: the half-branch's offset along `normal` from its "
-        "tangent line is sum coefficient X^exponent at distance X along the tangent.")
+        "leading term), normal, terms [{exponent, coefficient}]}: the Puiseux expansion W = sum coefficient "
+        "X^exponent of the half-branch in the local curve's tangent-plane coordinates, X along tangent, W along "
+        "normal (docs/python.md).")
       .def_property_readonly("isolated_points", [](const PyIntersection& x) {
         return python_of(singular_points_to_json(x.run->result.isolated_points)); }, "As the JSON's isolated_points.")
       .def_property_readonly("stats", [](const PyIntersection& x) { return python_of(stats_to_json(x.run->result.stats)); },
