@@ -9,9 +9,17 @@
 // returns, PyErr_CheckSignals runs Python's handler, which raises KeyboardInterrupt, and the
 // result is discarded. No thread is started and nothing polls: the cost is two sigaction calls.
 //
-// The flag lives here until the library has a cancellation flag of its own (core/interrupt,
-// issue 15/16); then on_sigint raises that one too and the progress callbacks become unnecessary.
+// The flag lives here until the library's cancellation flag (core/interrupt.hpp, checked in the
+// library's own long loops) is merged; where that header exists, the handler raises the library's
+// flag too and its Interrupted is caught as well, so both work together without edits here.
 #pragma once
+
+#if __has_include("ssimarch/core/interrupt.hpp")
+#include "ssimarch/core/interrupt.hpp"
+#define SSIMARCH_PYTHON_LIBRARY_INTERRUPT 1
+#else
+#define SSIMARCH_PYTHON_LIBRARY_INTERRUPT 0
+#endif
 
 #include <pybind11/pybind11.h>
 
@@ -31,14 +39,32 @@ inline std::atomic<bool>& stop_flag() {
 }
 inline bool stop_requested() { return stop_flag().load(std::memory_order_relaxed); }
 
+// Async-signal-safe (lock-free atomic stores).
+inline void request_stop() {
+  stop_flag().store(true);
+#if SSIMARCH_PYTHON_LIBRARY_INTERRUPT
+  request_interrupt();
+#endif
+}
+
+// Lowers the flags; returns whether one was up.
+inline bool clear_stop() {
+  bool was = stop_flag().exchange(false);
+#if SSIMARCH_PYTHON_LIBRARY_INTERRUPT
+  was = interrupt_requested() || was;
+  clear_interrupt();
+#endif
+  return was;
+}
+
 /// Thrown by the module's loops and callbacks when the stop flag is up; never reaches Python
 /// (run_interruptible raises the KeyboardInterrupt instead).
-struct Interrupted : std::runtime_error {
-  Interrupted() : std::runtime_error("interrupted") {}
+struct StopRequested : std::runtime_error {
+  StopRequested() : std::runtime_error("interrupted") {}
 };
 
 inline void throw_if_stop_requested() {
-  if (stop_requested()) throw Interrupted();
+  if (stop_requested()) throw StopRequested();
 }
 
 /// The thread that imported the module (Python's main thread, which alone handles signals).
@@ -56,7 +82,7 @@ inline struct sigaction& chained_sigint() {
 
 // Async-signal-safe: an atomic store and Python's own handler (which only records the signal).
 inline void on_sigint(int sig, siginfo_t* info, void* context) {
-  stop_flag().store(true);
+  request_stop();
   const struct sigaction& p = chained_sigint();
   if (p.sa_flags & SA_SIGINFO) p.sa_sigaction(sig, info, context);
   else if (p.sa_handler != SIG_DFL && p.sa_handler != SIG_IGN) p.sa_handler(sig);
@@ -90,7 +116,7 @@ class SigintScope {
 }  // namespace internal
 
 /// Runs f() (no Python objects inside) with the GIL released and returns its value; after Ctrl-C
-/// raises KeyboardInterrupt instead (once f returns, or throws Interrupted at a poll of the flag).
+/// raises KeyboardInterrupt instead (once f returns, or throws at a poll of the flag).
 /// Must be called with the GIL held.
 template <class F>
 auto run_interruptible(F&& f) -> std::invoke_result_t<F&> {
@@ -98,7 +124,7 @@ auto run_interruptible(F&& f) -> std::invoke_result_t<F&> {
   using Stored = std::conditional_t<std::is_void_v<R>, bool, std::optional<R>>;
   Stored result{};
   bool interrupted = false;
-  stop_flag().store(false);
+  clear_stop();
   {
     internal::SigintScope sigint;
     pybind11::gil_scoped_release release;
@@ -109,9 +135,12 @@ auto run_interruptible(F&& f) -> std::invoke_result_t<F&> {
       } else {
         result.emplace(f());
       }
-    } catch (const Interrupted&) {
+    } catch (const StopRequested&) {
+#if SSIMARCH_PYTHON_LIBRARY_INTERRUPT
+    } catch (const Interrupted&) {  // the library's (core/interrupt.hpp)
+#endif
     }
-    interrupted = stop_flag().exchange(false);
+    interrupted = clear_stop();
   }
   if (interrupted) {
     // Python's handler recorded the signal: raise what it raises (KeyboardInterrupt by default).

@@ -48,3 +48,36 @@ def test_sigint_interrupts_a_long_porosity_job():
     # loaded machine; the uninterrupted job takes minutes.
     assert latency < 15.0, latency
     assert lines[1].startswith("after ") and abs(float(lines[1].split()[1]) - (1 - 1 / 24)) < 1e-9, out
+
+
+TRACE_CHILD = textwrap.dedent("""
+    import sys, time
+    import ssimarch
+
+    print("start", flush=True)
+    t0 = time.monotonic()
+    try:
+        # Seconds: a step of R/4000 along Viviani's curve (68 000 points).
+        ssimarch.trace(sys.argv[1], only="viviani", step_length=0.0005, max_points=10000000)
+        print("finished", time.monotonic() - t0, flush=True)
+    except KeyboardInterrupt:
+        print("interrupted", time.monotonic() - t0, flush=True)
+""")
+
+
+def test_sigint_during_a_trace_raises_keyboard_interrupt(viviani):
+    # A trace polls no flag in this module's own code: the call runs to its end, then the pending
+    # KeyboardInterrupt is raised and the result dropped (docs/python.md, Interrupting).
+    child = subprocess.Popen([sys.executable, "-c", TRACE_CHILD, str(viviani)], stdout=subprocess.PIPE,
+                             stderr=subprocess.PIPE, text=True, env=dict(os.environ))
+    try:
+        assert child.stdout.readline().strip() == "start", child.stderr.read()
+        time.sleep(0.3)
+        assert child.poll() is None, "the trace ended before the signal"
+        child.send_signal(signal.SIGINT)
+        out, err = child.communicate(timeout=120)
+    finally:
+        if child.poll() is None:
+            child.kill()
+    assert out.startswith("interrupted"), (out, err)
+    assert child.returncode == 0, err
