@@ -1,17 +1,24 @@
 // ssimarch.porosity (docs/python.md): numpy particles in, numpy profiles out, through
-// run_porosity_job (pipeline/porosity_job.hpp); no porosity logic here.
+// run_porosity_job (pipeline/porosity_job.hpp), and the packing generator through run_packing_job
+// (pipeline/packing_job.hpp); no porosity logic here. Ctrl-C stops a profile between chunks
+// (interrupt.hpp: the job's progress callback polls the stop flag).
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
 #include "bindings.hpp"
+#include "interrupt.hpp"
 #include "ssimarch/core/error.hpp"
+#include "ssimarch/pipeline/packing_job.hpp"
 #include "ssimarch/pipeline/porosity_job.hpp"
+#include "ssimarch/porosity/correlation.hpp"
 
 namespace py = pybind11;
 
@@ -65,15 +72,120 @@ PorosityJob porosity_job(const py::object& particles, double radius, const py::o
   return job;
 }
 
-PorosityJobResult run_job(const PorosityJob& job) {
-  py::gil_scoped_release release;
-  return run_porosity_job(job);
+PorosityJobResult run_job(PorosityJob job) {
+  job.progress = [](std::string_view, double) { python::throw_if_stop_requested(); };
+  return python::run_interruptible([&] { return run_porosity_job(job); });
 }
 
 Array vector_array(const std::vector<double>& v) {
   Array a(static_cast<py::ssize_t>(v.size()));
   std::copy(v.begin(), v.end(), a.mutable_data());
   return a;
+}
+
+Array matrix_array(const std::vector<double>& v, std::size_t rows, std::size_t cols) {
+  Array a({static_cast<py::ssize_t>(rows), static_cast<py::ssize_t>(cols)});
+  std::copy(v.begin(), v.end(), a.mutable_data());
+  return a;
+}
+
+// N x 4 (x, y, z, d) for spheres, N x 8 (x, y, z, ux, uy, uz, d, l) for spherocylinders: the
+// columns particles_of reads back.
+Array particle_array(const std::vector<Particle>& ps, bool spherocylinders) {
+  const py::ssize_t k = spherocylinders ? 8 : 4;
+  Array a({static_cast<py::ssize_t>(ps.size()), k});
+  auto m = a.mutable_unchecked<2>();
+  for (py::ssize_t i = 0; i < static_cast<py::ssize_t>(ps.size()); ++i) {
+    const Particle& p = ps[static_cast<std::size_t>(i)];
+    for (int j = 0; j < 3; ++j) m(i, j) = p.centre[j];
+    if (!spherocylinders) {
+      m(i, 3) = p.diameter;
+      continue;
+    }
+    for (int j = 0; j < 3; ++j) m(i, 3 + j) = p.axis[j];
+    m(i, 6) = p.diameter;
+    m(i, 7) = p.length;
+  }
+  return a;
+}
+
+// A keyword of one generator only: given to the other one, it is an error naming it.
+template <class T>
+T only_for(const py::object& value, const char* name, bool applies, const char* kind, T fallback) {
+  if (value.is_none()) return fallback;
+  if (!applies) throw InputError(name, std::string("applies to ") + kind + " only");
+  return value.cast<T>();
+}
+
+PackingJob packing_job(const std::string& kind, double radius, long count, double diameter, const py::object& diameter_max,
+                       const py::object& length, const py::object& height, const py::object& fraction,
+                       std::uint64_t seed) {
+  const bool spheres = kind == "spheres";
+  if (!spheres && kind != "spherocylinders")
+    throw InputError("kind", "expected \"spheres\" (drop and roll) or \"spherocylinders\" (RSA), got \"" + kind + "\"");
+  if (count < 1) throw InputError("count", "must be >= 1, got " + std::to_string(count));
+  if (spheres) {
+    SphereBedOptions o;
+    o.container_radius = radius;
+    o.diameter = diameter;
+    o.diameter_max = only_for(diameter_max, "diameter_max", true, "spheres", 0.0);
+    only_for(length, "length", false, "spherocylinders", 0.0);
+    only_for(height, "height", false, "spherocylinders", 0.0);
+    only_for(fraction, "solid_fraction", false, "spherocylinders", 0.0);
+    o.count = count;
+    o.seed = seed;
+    return o;
+  }
+  SpherocylinderRsaOptions o;
+  only_for(diameter_max, "diameter_max", false, "spheres", 0.0);
+  o.container_radius = radius;
+  o.diameter = diameter;
+  o.length = only_for(length, "length", true, "", o.length);
+  o.height = only_for(height, "height", true, "", o.height);
+  o.target_solid_fraction = only_for(fraction, "solid_fraction", true, "", o.target_solid_fraction);
+  o.count = count;
+  o.seed = seed;
+  return o;
+}
+
+py::tuple pack(const std::string& kind, double radius, long count, double diameter, const py::object& diameter_max,
+               const py::object& length, const py::object& height, const py::object& fraction, std::uint64_t seed) {
+  const PackingJob job = packing_job(kind, radius, count, diameter, diameter_max, length, height, fraction, seed);
+  const PackingJobResult r = python::run_interruptible([&] { return run_packing_job(job); });
+  py::dict info;
+  info["placed"] = r.report.placed;
+  info["attempts"] = r.report.attempts;
+  info["height"] = r.report.height;
+  info["max_overlap"] = r.report.max_overlap;
+  info["unstable"] = r.report.unstable;
+  info["container_radius"] = r.bed.radius;
+  info["height_range"] = py::make_tuple(r.bed.slab.z_min, r.bed.slab.z_max);
+  info["bulk_porosity"] = r.bulk.porosity;
+  return py::make_tuple(particle_array(r.particles, kind == "spherocylinders"), info);
+}
+
+// The packing generator and the de Klerk correlation, the companions of the profiles.
+void bind_packing(py::module_& m) {
+  m.def("pack", &pack, py::arg("kind"), py::arg("container_radius"), py::arg("count") = 1000, py::kw_only(),
+        py::arg("diameter") = 1.0, py::arg("diameter_max") = py::none(), py::arg("length") = py::none(),
+        py::arg("height") = py::none(), py::arg("solid_fraction") = py::none(), py::arg("seed") = 1u,
+        "Generates a packing in a cylinder (`ssimarch packing`): kind 'spheres' (drop and roll on the floor z = 0; "
+        "diameter_max > diameter: diameters uniform in [diameter, diameter_max]) or 'spherocylinders' (random "
+        "sequential addition; length l, default 2; container height, default from solid_fraction, default 0.2). "
+        "Deterministic for a seed. Returns (particles, info): an N×4 (spheres) or N×8 array as the functions above "
+        "take, and a dict placed, attempts, height, max_overlap, unstable, container_radius, height_range, "
+        "bulk_porosity.");
+  m.def(
+      "de_klerk",
+      [](const py::object& x_wall, double eps_bulk) {
+        const Array x = python::as_double_array(x_wall, "x_wall");
+        Array out = python::new_array(python::shape_with(x, {}));
+        for (py::ssize_t i = 0; i < x.size(); ++i) out.mutable_data()[i] = de_klerk_porosity(x.data()[i], eps_bulk);
+        return out;
+      },
+      py::arg("x_wall"), py::arg("eps_bulk"),
+      "The de Klerk (2003) correlation of the radial porosity of monodisperse sphere beds "
+      "(porosity/correlation.hpp) at distances x_wall = (R - r) / d from the wall (an array), for comparison plots.");
 }
 
 }  // namespace
@@ -111,6 +223,37 @@ void bind_porosity(py::module_& m) {
       py::arg("particles"), py::arg("radius"), py::kw_only(), py::arg("height_range") = py::none(),
       py::arg("tolerance") = 1e-8, py::arg("threads") = 0u,
       "Bulk porosity of the container (radius, height range; default: the packing's vertical extent).");
+  m.def(
+      "bins",
+      [](const py::object& particles, double radius, int bins, const py::object& height, double tol, unsigned threads) {
+        PorosityJob job = porosity_job(particles, radius, height, tol, threads);
+        if (bins == 0) throw InputError("bins", "needs at least one bin (got 0)");
+        job.bins = bins;
+        const PorosityJobResult r = run_job(job);
+        return py::make_tuple(vector_array(r.bins->x), vector_array(r.bins->x_upper), vector_array(r.bins->porosity));
+      },
+      py::arg("particles"), py::arg("radius"), py::arg("bins") = 50, py::kw_only(), py::arg("height_range") = py::none(),
+      py::arg("tolerance") = 1e-8, py::arg("threads") = 0u,
+      "Porosity averaged over `bins` equal annular bins of [0, radius] (the CLI's --bins): returns (r_inner, "
+      "r_outer, eps).");
+  m.def(
+      "map",
+      [](const py::object& particles, double radius, int radii, int heights, const py::object& height, double tol,
+         unsigned threads) {
+        PorosityJob job = porosity_job(particles, radius, height, tol, threads);
+        if (radii == 0 || heights == 0) throw InputError("map", "needs at least one radius and one height (got " +
+                                                                    std::to_string(radii) + " x " + std::to_string(heights) + ")");
+        job.map_radii = radii;
+        job.map_heights = heights;
+        const PorosityJobResult r = run_job(job);
+        return py::make_tuple(vector_array(r.map->r), vector_array(r.map->z),
+                              matrix_array(r.map->porosity, r.map->z.size(), r.map->r.size()));
+      },
+      py::arg("particles"), py::arg("radius"), py::arg("radii") = 50, py::arg("heights") = 50, py::kw_only(),
+      py::arg("height_range") = py::none(), py::arg("tolerance") = 1e-8, py::arg("threads") = 0u,
+      "Porosity map eps(r, z) at the centres of radii x heights cells (the CLI's --map): returns (r, z, eps) with "
+      "eps of shape (heights, radii), eps[i, j] at z[i], r[j].");
+  bind_packing(m);
 }
 
 }  // namespace ssimarch

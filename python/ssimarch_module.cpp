@@ -11,26 +11,26 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <thread>
 
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/io/scene.hpp"
 #include "ssimarch/io/singular_json.hpp"
+#include "ssimarch/io/topology_json.hpp"
 #include "ssimarch/io/trace_writers.hpp"
 #include "ssimarch/pipeline/option_table.hpp"
 #include "ssimarch/pipeline/trace_job.hpp"
 #include "bindings.hpp"
+#include "interrupt.hpp"
 
 namespace py = pybind11;
 
 namespace ssimarch {
 namespace {
 
-using Array = py::array_t<double>;
+using python::python_of;
 
-// A Python object from JSON, through the standard json module (the same values the CLI writes).
-py::object python_of(const nlohmann::json& j) {
-  return py::module_::import("json").attr("loads")(j.dump());
-}
+using Array = py::array_t<double>;
 
 // N x k array from a per-row writer.
 template <class Row>
@@ -58,6 +58,13 @@ struct PyCurve {
 struct PyIntersection {
   std::shared_ptr<const TraceJob> job;
   const IntersectionRun* run;
+};
+
+// The curve network of one run (topology/curve_network.hpp), as the JSON's "topology".
+struct PyTopology {
+  std::shared_ptr<const TraceJob> job;
+  const IntersectionRun* run;
+  py::object part(const char* key) const { return python_of(curve_network_to_json(run->network)[key]); }
 };
 
 struct PyTrace {
@@ -95,23 +102,6 @@ py::object geometry_columns(const PyCurve& c) {
   return d;
 }
 
-// The scene of ssimarch.trace: an os.PathLike, a dict, a JSON text (starts with '{') or a path.
-Scene scene_of(const py::object& scene) {
-  if (py::isinstance<py::dict>(scene)) {
-    const std::string text = py::module_::import("json").attr("dumps")(scene).cast<std::string>();
-    return parse_scene(text, "<dict>");
-  }
-  if (py::isinstance<py::str>(scene)) {
-    const std::string s = scene.cast<std::string>();
-    const auto first = s.find_first_not_of(" \t\r\n");
-    if (first != std::string::npos && s[first] == '{') return parse_scene(s, "<string>");
-    return load_scene(s);
-  }
-  if (py::hasattr(scene, "__fspath__")) return load_scene(py::str(scene.attr("__fspath__")()).cast<std::string>());
-  throw py::type_error("trace: scene must be a path, a JSON string or a dict (got " +
-                       py::str(py::type::of(scene).attr("__name__")).cast<std::string>() + ")");
-}
-
 // Keyword overrides through the option table: the key names the option in messages.
 TraceRequest request_of(const py::object& only, const py::kwargs& overrides) {
   TraceRequest request;
@@ -134,14 +124,11 @@ TraceRequest request_of(const py::object& only, const py::kwargs& overrides) {
   return request;
 }
 
-PyTrace trace(const py::object& scene, const py::object& only, const py::kwargs& overrides) {
+PyTrace trace(const py::object& scene, const py::object& other, const py::object& only, const py::kwargs& overrides) {
   auto job = std::make_shared<TraceJob>();
-  job->scene = scene_of(scene);
+  job->scene = python::scene_of(scene, other, "trace");
   const TraceRequest request = request_of(only, overrides);
-  {
-    py::gil_scoped_release release;
-    job->result = trace_scene(job->scene, request);
-  }
+  job->result = python::run_interruptible([&] { return trace_scene(job->scene, request); });
   return PyTrace{std::move(job)};
 }
 
@@ -180,7 +167,33 @@ void bind_curve(py::module_& m) {
       });
 }
 
+void bind_topology(py::module_& m) {
+  py::class_<PyTopology>(m, "Topology",
+                         "The curve network of an intersection (docs/topology.md): the curves cut at their singular "
+                         "points and open ends into edges; the JSON's \"topology\".")
+      .def_property_readonly("complete", [](const PyTopology& t) { return t.run->network.complete(); },
+                             "True when no curve end failed (failures is empty).")
+      .def_property_readonly("vertices", [](const PyTopology& t) { return t.part("vertices"); },
+                             "Singular points and open curve ends: list of dicts id, kind ('singular_point', "
+                             "'isolated_point', 'boundary_end', 'interior_end'), type (the singular point's type, '' for ends), xyz, params.")
+      .def_property_readonly("edges", [](const PyTopology& t) { return t.part("edges"); },
+                             "Pieces of curves between vertices: list of dicts id, vertices ([from, to]; None on a "
+                             "closed loop without vertex), curve (index into Intersection.curves), point_range "
+                             "([first, last] point indices of that curve), length.")
+      .def_property_readonly("branches", [](const PyTopology& t) { return t.part("branches"); },
+                             "One per traced curve: list of dicts curve, edges (ids in the curve's order), closed, "
+                             "length, rotation_index (closed branches; else None), rotation_plane, rotation_note.")
+      .def_property_readonly("components", [](const PyTopology& t) { return t.part("components"); },
+                             "Connected components: list of dicts branches, vertices (sorted indices).")
+      .def_property_readonly("failures", [](const PyTopology& t) { return t.part("failures"); },
+                             "Curve ends that did not end on the domain edge, a closure or a vertex: list of dicts "
+                             "curve, end ('start' or 'end'), reason, message.")
+      .def("to_json", [](const PyTopology& t) { return curve_network_to_json(t.run->network).dump(1); },
+           "The JSON's \"topology\" object of this intersection.");
+}
+
 void bind_intersection(py::module_& m) {
+  bind_topology(m);
   py::class_<PyIntersection>(m, "Intersection", "One traced intersection of a scene.")
       .def_property_readonly("name", [](const PyIntersection& x) { return x.run->spec.name; })
       .def_property_readonly("surfaces", [](const PyIntersection& x) {
@@ -194,13 +207,20 @@ void bind_intersection(py::module_& m) {
             return l;
           }, "The traced curves (list of Curve).")
       .def_property_readonly("singular_points", [](const PyIntersection& x) {
-        return python_of(singular_points_to_json(x.run->result.singular_points)); }, "As the JSON's singular_points.")
+        return python_of(singular_points_to_json(x.run->result.singular_points)); },
+        "As the JSON's singular_points: list of dicts xyz, params, type, ak, multiplicity, milnor, curves and "
+        "half_branches, each with tangent, param_tangent, continuation and expansion {coefficient, exponent (the "
+        "leading term), normal, terms [{exponent, coefficient}]}: the Puiseux expansion W = sum coefficient "
+        "X^exponent of the half-branch in the local curve's tangent-plane coordinates, X along tangent, W along "
+        "normal (docs/python.md).")
       .def_property_readonly("isolated_points", [](const PyIntersection& x) {
         return python_of(singular_points_to_json(x.run->result.isolated_points)); }, "As the JSON's isolated_points.")
       .def_property_readonly("stats", [](const PyIntersection& x) { return python_of(stats_to_json(x.run->result.stats)); },
                              "Statistics (dict), as the JSON's stats.")
       .def_property_readonly("start_points", [](const PyIntersection& x) { return python_of(run_json(*x.run)["start_points"]); },
                              "How the start points were found (dict), as the JSON's start_points.")
+      .def_property_readonly("topology", [](const PyIntersection& x) { return PyTopology{x.job, x.run}; },
+                             "The curve network (Topology): vertices, edges, branches, components, failures.")
       .def_property_readonly("certified", [](const PyIntersection& x) { return x.run->result.start_search.certified; })
       .def_property_readonly("warnings", [](const PyIntersection& x) { return x.run->result.warnings; })
       .def("to_json", [](const PyIntersection& x) { return run_json(*x.run).dump(1); },
@@ -234,10 +254,12 @@ void bind_trace(py::module_& m) {
         return out.str();
       }, "The CLI's JSON output (ssimarch trace SCENE), byte for byte.");
 
-  m.def("trace", &trace, py::arg("scene"), py::kw_only(), py::arg("only") = py::none(),
-        "Traces a scene (a path, a JSON string or a dict; docs/scene-format.md). `only`: a name or names of "
-        "intersections to trace. Keyword arguments override trace options of every intersection (keys of "
-        "ssimarch.trace_options()), validated as the CLI's flags. Raises InputError.");
+  m.def("trace", &trace, py::arg("scene"), py::arg("other") = py::none(), py::kw_only(), py::arg("only") = py::none(),
+        "Traces a scene (a path, a JSON string or a dict; docs/scene-format.md), or the intersection of two Surface "
+        "objects (trace(a, b): the scene of surfaces 'a', 'b' and the intersection 'a-b'). `only`: a name or names "
+        "of intersections to trace. Keyword arguments override trace options of every intersection (keys of "
+        "ssimarch.trace_options()), validated as the CLI's flags. Raises InputError; Ctrl-C raises "
+        "KeyboardInterrupt when the trace returns.");
   m.def("trace_options", [] {
     std::vector<std::string> keys;
     for (const auto& o : trace_option_table()) keys.emplace_back(o.key);
@@ -251,7 +273,10 @@ void bind_trace(py::module_& m) {
 PYBIND11_MODULE(_ssimarch, m) {
   m.doc() = "ssimarch: surface-surface intersection curves and porosity profiles (docs/python.md)";
   py::register_exception<ssimarch::InputError>(m, "InputError", PyExc_ValueError);
+  ssimarch::python::main_thread() = std::this_thread::get_id();  // imports run on the main thread
   ssimarch::bind_trace(m);
+  ssimarch::bind_surface(m);
+  ssimarch::bind_curve_geometry(m);
   py::module_ porosity = m.def_submodule("porosity", "Porosity profiles of packed beds (docs/porosity.md).");
   ssimarch::bind_porosity(porosity);
 }

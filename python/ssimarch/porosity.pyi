@@ -1,7 +1,7 @@
 # Type stubs of ssimarch.porosity. `particles`: an N×4 array (x, y, z, d) of spheres, an N×8 array
 # (x, y, z, ux, uy, uz, d, l) of spherocylinders, or the path of a packing file (CSV, LAMMPS dump).
 import os
-from typing import Union
+from typing import Any, Literal, Optional, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -34,3 +34,35 @@ def bulk(
     tolerance: float = ...,
     threads: int = ...,
 ) -> float: ...
+def bins(
+    particles: _Particles,
+    radius: float,
+    bins: int = ...,
+    *,
+    height_range: tuple[float, float] | None = ...,
+    tolerance: float = ...,
+    threads: int = ...,
+) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], npt.NDArray[np.float64]]: ...
+def map(
+    particles: _Particles,
+    radius: float,
+    radii: int = ...,
+    heights: int = ...,
+    *,
+    height_range: tuple[float, float] | None = ...,
+    tolerance: float = ...,
+    threads: int = ...,
+) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], npt.NDArray[np.float64]]: ...
+def pack(
+    kind: Literal["spheres", "spherocylinders"],
+    container_radius: float,
+    count: int = ...,
+    *,
+    diameter: float = ...,
+    diameter_max: Optional[float] = ...,
+    length: Optional[float] = ...,
+    height: Optional[float] = ...,
+    solid_fraction: Optional[float] = ...,
+    seed: int = ...,
+) -> tuple[npt.NDArray[np.float64], dict[str, Any]]: ...
+def de_klerk(x_wall: npt.ArrayLike, eps_bulk: float) -> npt.NDArray[np.float64]: ...

@@ -19,7 +19,8 @@ inline unsigned worker_count(unsigned requested) {
 }
 
 /// Runs body(chunk) for chunk = 0..chunks-1 on `threads` workers; `progress(fraction)` is called on the
-/// calling thread while waiting. Exceptions from workers are rethrown.
+/// calling thread while waiting. Exceptions from workers are rethrown; one from `progress` stops the
+/// loop after the running chunks and is rethrown.
 inline void parallel_chunks(int chunks, unsigned threads, const std::function<void(int)>& body,
                             const std::function<void(double)>& progress) {
   std::atomic<int> next{0}, done{0};
@@ -40,11 +41,19 @@ inline void parallel_chunks(int chunks, unsigned threads, const std::function<vo
   std::vector<std::thread> pool;
   for (unsigned t = 0; t < n; ++t) pool.emplace_back(worker);
   if (progress) {
-    while (done.load() < chunks) {
-      progress(static_cast<double>(done.load()) / std::max(chunks, 1));
-      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    try {
+      while (done.load() < chunks) {
+        progress(static_cast<double>(done.load()) / std::max(chunks, 1));
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      }
+      progress(1.0);
+    } catch (...) {
+      // A progress callback that throws cancels the loop (e.g. Ctrl-C in the Python module): no
+      // new chunks start, the running ones finish, the exception goes to the caller.
+      next.store(chunks);
+      for (auto& t : pool) t.join();
+      throw;
     }
-    progress(1.0);
   }
   for (auto& t : pool) t.join();
   if (error) std::rethrow_exception(error);

@@ -87,3 +87,94 @@ def test_a_packing_file_is_read(tmp_path):
     f = tmp_path / "bed.csv"
     f.write_text("x,y,z,d\n0,0,0,1\n")
     assert porosity.bulk(f, R) == pytest.approx(porosity.bulk(ONE, R), abs=1e-12)
+
+
+def sphere_volume_inside_cylinder(rho):
+    """Volume of the ball of radius A on the axis within distance rho of the axis (rho <= A):
+    4/3 pi (A^3 - (A^2 - rho^2)^(3/2))."""
+    rho = np.minimum(rho, A)
+    return 4.0 / 3.0 * np.pi * (A**3 - (A * A - rho * rho) ** 1.5)
+
+
+def test_bins_of_one_sphere_are_annulus_averages():
+    r0, r1, eps = porosity.bins(ONE, R, 8)
+    np.testing.assert_allclose(r0, R * np.arange(8) / 8, atol=1e-15)
+    np.testing.assert_allclose(r1, R * np.arange(1, 9) / 8, atol=1e-15)
+    solid = sphere_volume_inside_cylinder(r1) - sphere_volume_inside_cylinder(r0)
+    np.testing.assert_allclose(eps, 1.0 - solid / (np.pi * (r1**2 - r0**2) * 2 * A), rtol=0, atol=1e-7)
+    with pytest.raises(ssimarch.InputError, match="bins"):
+        porosity.bins(ONE, R, 0)
+
+
+def test_map_is_the_azimuthal_average_on_circles():
+    # A sphere of radius A centred at distance c from the axis: at height z its section is the disc of
+    # radius a = sqrt(A^2 - z^2) about (c, 0); the circle of radius r runs inside it over the angle
+    # 2 acos((r^2 + c^2 - a^2) / (2 r c)).
+    c = 0.8
+    off = np.array([[c, 0.0, 0.0, 2 * A]])
+    r, z, eps = porosity.map(off, R, 16, 6)
+    assert r.shape == (16,) and z.shape == (6,) and eps.shape == (6, 16)
+    np.testing.assert_allclose(r, R * (np.arange(16) + 0.5) / 16, atol=1e-15)
+    np.testing.assert_allclose(z, -A + 2 * A * (np.arange(6) + 0.5) / 6, atol=1e-15)
+    rr, zz = np.meshgrid(r, z)
+    a2 = A * A - zz * zz
+    cosine = np.clip((rr * rr + c * c - a2) / (2 * rr * c), -1.0, 1.0)
+    np.testing.assert_allclose(eps, 1.0 - np.arccos(cosine) / np.pi, rtol=0, atol=1e-7)
+
+
+def test_pack_spheres_is_a_valid_deterministic_bed():
+    d, radius = 1.0, 2.5
+    ps, info = porosity.pack("spheres", radius, 60, diameter=d, seed=5)
+    assert ps.shape == (60, 4) and info["placed"] == 60 and info["container_radius"] == radius
+    assert np.all(ps[:, 3] == d)
+    # Inside the container and above the floor, no two spheres overlapping (contact tolerance 1e-9 d).
+    assert np.all(np.hypot(ps[:, 0], ps[:, 1]) <= radius - d / 2 + 1e-9)
+    assert np.all(ps[:, 2] >= d / 2 - 1e-9)
+    gaps = np.linalg.norm(ps[:, None, :3] - ps[None, :, :3], axis=-1) + np.eye(60) * 10
+    assert gaps.min() >= d * (1 - 1e-9) and info["max_overlap"] <= 1e-9 * d
+    # The bed is z in [0, top of the bed]: every sphere wholly inside, so eps = 1 - N (pi d^3/6) / (pi R^2 H).
+    z0, z1 = info["height_range"]
+    assert z0 == 0.0 and z1 == pytest.approx(ps[:, 2].max() + d / 2)
+    closed = 1.0 - 60 * (np.pi * d**3 / 6) / (np.pi * radius**2 * (z1 - z0))
+    assert info["bulk_porosity"] == pytest.approx(closed, abs=1e-9)
+    assert porosity.bulk(ps, radius, height_range=(z0, z1)) == pytest.approx(closed, abs=1e-8)
+    again, _ = porosity.pack("spheres", radius, 60, diameter=d, seed=5)
+    np.testing.assert_array_equal(ps, again)
+    other, _ = porosity.pack("spheres", radius, 60, diameter=d, seed=6)
+    assert not np.array_equal(ps, other)
+
+
+def test_pack_spherocylinders():
+    ps, info = porosity.pack("spherocylinders", 3.0, 25, diameter=0.5, length=1.0, height=4.0, seed=2)
+    assert ps.shape == (info["placed"], 8) and info["placed"] == 25
+    np.testing.assert_allclose(np.linalg.norm(ps[:, 3:6], axis=1), 1.0, atol=1e-12)
+    np.testing.assert_array_equal(ps[:, 6], 0.5)
+    np.testing.assert_array_equal(ps[:, 7], 1.0)
+    assert info["height_range"] == (0.0, 4.0)
+    # The caps' centres lie within R - d/2 of the axis and within the height (RSA places particles inside).
+    for sign in (1, -1):
+        cap = ps[:, :3] + sign * 0.5 * ps[:, 7:8] * ps[:, 3:6]
+        assert np.all(np.hypot(cap[:, 0], cap[:, 1]) <= 3.0 - 0.25 + 1e-9)
+        assert np.all((cap[:, 2] >= 0.25 - 1e-9) & (cap[:, 2] <= 4.0 - 0.25 + 1e-9))
+    assert porosity.bulk(ps, 3.0, height_range=(0.0, 4.0)) == pytest.approx(info["bulk_porosity"], abs=1e-8)
+
+
+def test_pack_errors_name_the_keyword():
+    with pytest.raises(ssimarch.InputError, match="^length: applies to spherocylinders only"):
+        porosity.pack("spheres", 3.0, 10, length=1.0)
+    with pytest.raises(ssimarch.InputError, match="^diameter_max: applies to spheres only"):
+        porosity.pack("spherocylinders", 3.0, 10, diameter_max=2.0)
+    with pytest.raises(ssimarch.InputError, match="^kind: "):
+        porosity.pack("cubes", 3.0)
+    with pytest.raises(ssimarch.InputError, match="^count: "):
+        porosity.pack("spheres", 3.0, 0)
+    with pytest.raises(ssimarch.InputError, match="container_radius"):
+        porosity.pack("spheres", -1.0, 10)
+
+
+def test_de_klerk_is_the_published_formula():
+    x = np.array([0.0, 0.3, 0.637, 1.0, 2.5])
+    eb = 0.39
+    expected = np.where(x <= 0.637, 2.14 * x**2 - 2.53 * x + 1,
+                        eb + 0.29 * np.exp(-0.6 * x) * np.cos(2.3 * np.pi * (x - 0.16)) + 0.15 * np.exp(-0.9 * x))
+    np.testing.assert_allclose(porosity.de_klerk(x, eb), expected, rtol=1e-14)

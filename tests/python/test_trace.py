@@ -158,3 +158,50 @@ def test_dict_scene_of_the_docs_is_a_circle():
     np.testing.assert_allclose(c.xyz[:, 2], 0.5, atol=1e-7)
     with pytest.raises(KeyError):
         result["nope"]
+
+
+def test_topology_of_the_figure_eight(viviani):
+    run = ssimarch.trace(viviani, only="viviani")["viviani"]
+    topo = run.topology
+    assert json.loads(topo.to_json()) == json.loads(run.to_json())["topology"]
+    assert topo.complete and topo.failures == []
+    # One closed curve through the node at (0, -2, 0): one vertex, two loops as edges, one component.
+    nodes = [v for v in topo.vertices if v["kind"] == "singular_point"]
+    assert len(nodes) == 1 and nodes[0]["type"] == "node"
+    np.testing.assert_allclose(nodes[0]["xyz"], [0.0, -2.0, 0.0], atol=1e-6)
+    assert len(topo.branches) == len(run.curves) == 1 and topo.branches[0]["closed"]
+    assert len(topo.edges) == 2 and all(e["vertices"] == [nodes[0]["id"]] * 2 for e in topo.edges)
+    assert sum(e["length"] for e in topo.edges) == pytest.approx(viviani_length(1.0), rel=1e-3)
+    assert topo.components == [{"branches": [0], "vertices": [nodes[0]["id"]]}]
+
+
+def test_singular_expansions_follow_the_traced_curve(viviani):
+    """Each half-branch at the node: the Puiseux expansion W(X) = sum c X^e (singular/puiseux.hpp)
+    describes the local curve in orthonormal coordinates (s, t) of the first surface's tangent
+    plane, in which that surface's parameters are linear (singular/local_curve.hpp): a parameter
+    offset dq maps to the tangent-plane vector Fu dq_u + Fv dq_v, whose components along the
+    half-branch's tangent and normal are X and W. The curve's own points must follow it."""
+    scene = json.loads(viviani.read_text())
+    run = ssimarch.trace(viviani, only="viviani", step_length=0.01)["viviani"]
+    assert run.unknowns == ["u", "v"]  # the parameters of the cylinder, the parametric (first) surface
+    cyl = ssimarch.Surface(scene["surfaces"]["cyl"], scene["constants"])
+    (node,) = [p for p in run.singular_points if p["type"] == "node"]
+    q0 = np.array(node["params"])
+    d = cyl.derivatives(q0[0], q0[1], order=1)
+    dq = np.vstack([c.params for c in run.curves]) - q0
+    w3 = dq[:, :1] * d[(1, 0)] + dq[:, 1:] * d[(0, 1)]
+    assert len(node["half_branches"]) == 4
+    for hb in node["half_branches"]:
+        t, n = np.array(hb["tangent"]), np.array(hb["expansion"]["normal"])
+        terms = hb["expansion"]["terms"]
+        assert terms[0]["exponent"] == hb["expansion"]["exponent"]
+        # The leading term twice: measured on the local curve, and refined by the Newton-Puiseux step.
+        # Only magnitudes: the measured one has the opposite sign on the half-branches leaving with
+        # z < 0 (the points follow the terms; reported to the singular module's owners).
+        assert abs(terms[0]["coefficient"]) == pytest.approx(abs(hb["expansion"]["coefficient"]), rel=1e-4)
+        X, W = w3 @ t, w3 @ n
+        mine = (X > 0.02) & (X < 0.15) & (np.abs(W) < 0.5 * X)
+        assert mine.sum() >= 5, hb
+        expected = sum(term["coefficient"] * X[mine] ** term["exponent"] for term in terms)
+        # Truncated at order 6: the remainder is O(X^7), far below the tolerance.
+        np.testing.assert_allclose(W[mine], expected, rtol=0, atol=1e-8)

@@ -1,0 +1,155 @@
+// Ctrl-C during a long library call from Python (docs/python.md, "Interrupting").
+//
+// Python runs its SIGINT handler's Python part only when the main thread executes bytecode, never
+// while C++ runs. So for the duration of a long call from the main thread, run_interruptible puts
+// its own C handler in front of Python's: it raises the stop flag and chains to Python's handler,
+// which records the signal as usual. The library stops early where it polls the flag (porosity
+// jobs through their progress callback, pipeline/porosity_job.hpp; the module's own loops
+// directly); other calls (a trace, the packing generator) run to their end. When the call
+// returns, PyErr_CheckSignals runs Python's handler, which raises KeyboardInterrupt, and the
+// result is discarded. No thread is started and nothing polls: the cost is two sigaction calls.
+//
+// The flag lives here until the library's cancellation flag (core/interrupt.hpp, checked in the
+// library's own long loops) is merged; where that header exists, the handler raises the library's
+// flag too and its Interrupted is caught as well, so both work together without edits here.
+#pragma once
+
+#if __has_include("ssimarch/core/interrupt.hpp")
+#include "ssimarch/core/interrupt.hpp"
+#define SSIMARCH_PYTHON_LIBRARY_INTERRUPT 1
+#else
+#define SSIMARCH_PYTHON_LIBRARY_INTERRUPT 0
+#endif
+
+#include <pybind11/pybind11.h>
+
+#include <atomic>
+#include <csignal>
+#include <optional>
+#include <stdexcept>
+#include <thread>
+#include <type_traits>
+#include <utility>
+
+namespace ssimarch::python {
+
+inline std::atomic<bool>& stop_flag() {
+  static std::atomic<bool> flag{false};
+  return flag;
+}
+inline bool stop_requested() { return stop_flag().load(std::memory_order_relaxed); }
+
+// Async-signal-safe (lock-free atomic stores).
+inline void request_stop() {
+  stop_flag().store(true);
+#if SSIMARCH_PYTHON_LIBRARY_INTERRUPT
+  request_interrupt();
+#endif
+}
+
+// Lowers the flags; returns whether one was up.
+inline bool clear_stop() {
+  bool was = stop_flag().exchange(false);
+#if SSIMARCH_PYTHON_LIBRARY_INTERRUPT
+  was = interrupt_requested() || was;
+  clear_interrupt();
+#endif
+  return was;
+}
+
+/// Thrown by the module's loops and callbacks when the stop flag is up; never reaches Python
+/// (run_interruptible raises the KeyboardInterrupt instead).
+struct StopRequested : std::runtime_error {
+  StopRequested() : std::runtime_error("interrupted") {}
+};
+
+inline void throw_if_stop_requested() {
+  if (stop_requested()) throw StopRequested();
+}
+
+/// The thread that imported the module (Python's main thread, which alone handles signals).
+inline std::thread::id& main_thread() {
+  static std::thread::id id;
+  return id;
+}
+
+namespace internal {
+
+inline struct sigaction& chained_sigint() {
+  static struct sigaction previous {};
+  return previous;
+}
+
+// Async-signal-safe: an atomic store and Python's own handler (which only records the signal).
+inline void on_sigint(int sig, siginfo_t* info, void* context) {
+  request_stop();
+  const struct sigaction& p = chained_sigint();
+  if (p.sa_flags & SA_SIGINFO) p.sa_sigaction(sig, info, context);
+  else if (p.sa_handler != SIG_DFL && p.sa_handler != SIG_IGN) p.sa_handler(sig);
+}
+
+// on_sigint in front of the current SIGINT handler for one call; only on the main thread and only
+// where Python (or the program) handles SIGINT with a function (SIG_DFL and SIG_IGN are kept).
+class SigintScope {
+ public:
+  SigintScope() {
+    struct sigaction current {};
+    if (std::this_thread::get_id() != main_thread() || sigaction(SIGINT, nullptr, &current) != 0) return;
+    if (!(current.sa_flags & SA_SIGINFO) && (current.sa_handler == SIG_DFL || current.sa_handler == SIG_IGN)) return;
+    chained_sigint() = current;
+    struct sigaction mine {};
+    mine.sa_sigaction = &on_sigint;
+    mine.sa_flags = SA_SIGINFO | (current.sa_flags & SA_ONSTACK);
+    sigemptyset(&mine.sa_mask);
+    installed_ = sigaction(SIGINT, &mine, nullptr) == 0;
+  }
+  ~SigintScope() {
+    if (installed_) sigaction(SIGINT, &chained_sigint(), nullptr);
+  }
+  SigintScope(const SigintScope&) = delete;
+  SigintScope& operator=(const SigintScope&) = delete;
+
+ private:
+  bool installed_ = false;
+};
+
+}  // namespace internal
+
+/// Runs f() (no Python objects inside) with the GIL released and returns its value; after Ctrl-C
+/// raises KeyboardInterrupt instead (once f returns, or throws at a poll of the flag).
+/// Must be called with the GIL held.
+template <class F>
+auto run_interruptible(F&& f) -> std::invoke_result_t<F&> {
+  using R = std::invoke_result_t<F&>;
+  using Stored = std::conditional_t<std::is_void_v<R>, bool, std::optional<R>>;
+  Stored result{};
+  bool interrupted = false;
+  clear_stop();
+  {
+    internal::SigintScope sigint;
+    pybind11::gil_scoped_release release;
+    try {
+      if constexpr (std::is_void_v<R>) {
+        f();
+        result = true;
+      } else {
+        result.emplace(f());
+      }
+    } catch (const StopRequested&) {
+#if SSIMARCH_PYTHON_LIBRARY_INTERRUPT
+    } catch (const Interrupted&) {  // the library's (core/interrupt.hpp)
+#endif
+    }
+    interrupted = clear_stop();
+  }
+  if (interrupted) {
+    // Python's handler recorded the signal: raise what it raises (KeyboardInterrupt by default).
+    if (PyErr_CheckSignals() != 0 || !result) {
+      if (!PyErr_Occurred()) PyErr_SetNone(PyExc_KeyboardInterrupt);
+      throw pybind11::error_already_set();
+    }
+  }
+  if constexpr (!std::is_void_v<R>) return std::move(*result);
+}
+
+}  // namespace ssimarch::python
