@@ -341,6 +341,7 @@ std::vector<VecX> certified_start_points(const Tracer& tracer, TraceStats* stats
     // there), so no other k can be decided; their Newton candidates are start points already.
     if (!budget_spent) break;
   }
+  report_progress("start points", systems, systems);  // the turning loop may stop early
   if (!loops_decided)
     for (const auto& [s, r] : undecided_turning) {
       RootSearchResult regions_only{{}, r.undecided, 0};
