@@ -9,6 +9,7 @@
 #include "commands.hpp"
 #include "flag_error.hpp"
 #include "run_budget.hpp"
+#include "run_progress.hpp"
 #include "ssimarch/io/output_files.hpp"
 #include "ssimarch/pipeline/packing_job.hpp"
 #include "ssimarch/porosity/packing.hpp"
@@ -22,6 +23,7 @@ struct PackingArgs {
   double radius = 0, diameter = 1, diameter_max = 0, length = 2, height = 0, fraction = 0.2;
   long count = 1000;
   std::uint64_t seed = 1;
+  bool quiet = false;
 };
 
 // The flag that sets each generator option, to name it in errors.
@@ -54,8 +56,9 @@ void check_no_overlap(const char* what, const PackingJobResult& r, double limit)
   throw CliError(m.str(), 1);
 }
 
-PackingJobResult run_job(const PackingJob& job) {
+PackingJobResult run_job(const PackingJob& job, bool quiet) {
   try {
+    RunProgress progress(quiet);  // the generators report to the thread's meter
     return run_packing_job(job);
   } catch (const InputError& e) {
     throw flag_error(e, kFlagOfOption);
@@ -70,10 +73,10 @@ void generate_spheres(const PackingArgs& a) {
   o.diameter_max = a.diameter_max;
   o.count = a.count;
   o.seed = a.seed;
-  const PackingJobResult r = run_job(o);
+  const PackingJobResult r = run_job(o, a.quiet);
   check_no_overlap("drop-and-roll", r, o.contact_tolerance * o.diameter);
   write(a.output, r.particles);
-  report("drop-and-roll", r);
+  if (!a.quiet) report("drop-and-roll", r);
 }
 
 void generate_spherocylinders(const PackingArgs& a) {
@@ -86,13 +89,13 @@ void generate_spherocylinders(const PackingArgs& a) {
   o.height = a.height;
   o.target_solid_fraction = a.fraction;
   o.seed = a.seed;
-  const PackingJobResult r = run_job(o);
+  const PackingJobResult r = run_job(o, a.quiet);
   check_no_overlap("RSA", r, 0.0);
   write(a.output, r.particles);
   if (r.report.placed < a.count)
     std::cerr << "ssimarch: warning: RSA jammed after " << r.report.attempts << " attempts: placed " << r.report.placed
               << " of " << a.count << "\n";
-  report("RSA", r);
+  if (!a.quiet) report("RSA", r);
 }
 
 }  // namespace
@@ -109,6 +112,8 @@ void add_packing_command(CLI::App& app) {
     s->add_option("--diameter", a->diameter, "particle diameter d (default 1)");
     s->add_option("--seed", a->seed, "random seed (default 1)");
     s->add_option("-o,--output", a->output, "output CSV (default stdout)");
+    s->add_flag("-q,--quiet", a->quiet, "no progress and no summary line on stderr (warnings stay)");
+    add_progress_option(s);
   }
   sp->add_option("--diameter-max", a->diameter_max, "if > d: diameters uniform in [d, diameter-max]");
   sc->add_option("--length", a->length, "cylinder length l (default 2)");

@@ -1,8 +1,6 @@
 // `ssimarch porosity`: exact porosity profiles of a packing file (issue 5). Argument parsing and
 // output only; the run itself is the library's porosity job (pipeline/porosity_job.hpp). See
 // docs/porosity.md.
-#include <unistd.h>
-
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -15,7 +13,9 @@
 #include "commands.hpp"
 #include "flag_error.hpp"
 #include "run_budget.hpp"
+#include "run_progress.hpp"
 #include "ssimarch/io/output_files.hpp"
+#include "ssimarch/io/porosity_vtk.hpp"
 #include "ssimarch/io/profile_plot.hpp"
 #include "ssimarch/pipeline/porosity_job.hpp"
 
@@ -24,11 +24,11 @@ namespace ssimarch::cli {
 namespace {
 
 struct PorosityArgs {
-  std::string packing, output, plot, summary, z_range, map, method = "chord";
+  std::string packing, output, plot, summary, z_range, map, method = "chord", format;
   double radius = 0, tolerance = 1e-8;
   int radii = 0, bins = 0, axial = 0;
   unsigned threads = 0;
-  bool strict = false;
+  bool strict = false, quiet = false;
 };
 
 // The flag that sets each field of PorosityJob, to name it in errors.
@@ -50,16 +50,11 @@ std::pair<double, double> parse_pair(const std::string& s, const char* opt) {
   }
 }
 
-// Progress bar on stderr, only when stderr is a terminal.
-std::function<void(std::string_view, double)> progress_bar() {
-  if (!isatty(fileno(stderr))) return {};
-  return [](std::string_view what, double f) {
-    const int w = 30, n = static_cast<int>(f * w + 0.5);
-    std::fprintf(stderr, "\r%-8s [%s%s] %3d%%", std::string(what).c_str(), std::string(n, '#').c_str(),
-                 std::string(w - n, ' ').c_str(), static_cast<int>(f * 100 + 0.5));
-    if (f >= 1.0) std::fprintf(stderr, "\r%*s\r", w + 18, "");
-    std::fflush(stderr);
-  };
+// VTK XML (io/porosity_vtk.hpp) by --format, or else by -o's extension.
+bool vtk_format(const PorosityArgs& a) {
+  if (!a.format.empty()) return a.format != "csv";
+  const std::string e = std::filesystem::path(a.output).extension().string();
+  return e == ".vtm" || e == ".vtp" || e == ".vti";
 }
 
 // The job the flags describe; flag syntax and combinations are checked here, values by the job.
@@ -89,8 +84,10 @@ PorosityJob make_job(const PorosityArgs& a) {
   job.options.tolerance = a.tolerance;
   job.options.threads = a.threads;
   job.options.method = a.method == "kernel" ? ProfileMethod::kKernel : ProfileMethod::kChord;
-  job.progress = progress_bar();
   const int kinds = (job.radial_points > 0) + (job.bins > 0) + (job.axial_slices > 0) + (job.map_radii > 0);
+  if (a.format != "" && a.format != "csv" && a.format != "vtk" && a.format != "vtk-ascii")
+    throw CliError("--format must be csv, vtk or vtk-ascii, got '" + a.format + "'");
+  if (vtk_format(a) && a.output.empty()) throw CliError("VTK output needs -o FILE.vtm, FILE.vtp or FILE.vti");
   if (kinds > 1 && a.output.empty())
     throw CliError("several profiles requested: give -o FILE (the others go to FILE_axial.csv, FILE_map.csv)");
   if (!a.plot.empty()) {
@@ -166,6 +163,56 @@ nlohmann::json write_profiles(OutputFiles& files, const PorosityArgs& a, const P
   return outputs;
 }
 
+// Each profile as VTK: a 1-D profile as a .vtp polyline, the map as .vti image data. -o itself takes
+// the first output of its own extension; the others are named <stem>_radial.vtp, <stem>_axial.vtp,
+// <stem>_map.vti beside it; with -o FILE.vtm (or another extension) FILE.vtm lists them all.
+nlohmann::json write_profiles_vtk(OutputFiles& files, const PorosityArgs& a, const PorosityJobResult& r) {
+  const VtkEncoding enc = a.format == "vtk-ascii" ? VtkEncoding::kAscii : VtkEncoding::kBase64;
+  const std::filesystem::path out(a.output);
+  bool output_used = false;
+  std::vector<std::pair<std::string, std::string>> blocks;
+  nlohmann::json outputs = nlohmann::json::object();
+  auto path_for = [&](const char* suffix, const char* ext) {
+    if (!output_used && out.extension() == ext) {
+      output_used = true;
+      return out;
+    }
+    return out.parent_path() / (out.stem().string() + "_" + suffix + ext);
+  };
+  auto put = [&](const char* key, const std::filesystem::path& p, const char* arrays, nlohmann::json n) {
+    blocks.emplace_back(key, p.filename().string());
+    outputs[key] = {{"file", p.string()}, {"format", p.extension().string().substr(1)}, {"columns", arrays}, {"n", std::move(n)}};
+  };
+  if (r.radial) {
+    const auto p = path_for("radial", ".vtp");
+    write_vtp(files.open(p), radial_profile_poly_data(*r.radial, r.container), enc);
+    put("radial", p, "r,porosity", r.radial->x.size());
+    outputs["radial"]["stats"] = stats_json(r.radial->stats);
+  } else if (r.bins) {
+    const auto p = path_for("radial", ".vtp");
+    write_vtp(files.open(p), bin_profile_poly_data(*r.bins, r.container), enc);
+    put("bins", p, "r_inner,r_outer,porosity", r.bins->x.size());
+    outputs["bins"]["stats"] = stats_json(r.bins->stats);
+  }
+  if (r.axial) {
+    const auto p = path_for("axial", ".vtp");
+    write_vtp(files.open(p), axial_profile_poly_data(*r.axial), enc);
+    put("axial", p, "z,porosity", r.axial->x.size());
+    outputs["axial"]["stats"] = stats_json(r.axial->stats);
+  }
+  if (r.map) {
+    const auto p = path_for("map", ".vti");
+    write_vti(files.open(p), porosity_map_image_data(*r.map), enc);
+    put("map", p, "porosity", {r.map->r.size(), r.map->z.size()});
+  }
+  if (out.extension() != ".vtp" && out.extension() != ".vti") {
+    const std::filesystem::path vtm = out.parent_path() / (out.stem().string() + ".vtm");
+    write_vtm(files.open(vtm), blocks);
+    outputs["multiblock"] = vtm.string();
+  }
+  return outputs;
+}
+
 // The first 1D profile against r (radial or bins) or else z.
 void write_plot(OutputFiles& files, const PorosityArgs& a, const PorosityJobResult& r) {
   ProfilePlot plot;
@@ -207,7 +254,7 @@ nlohmann::json summary(const PorosityArgs& a, const PorosityJobResult& r) {
   return js;
 }
 
-void report(const PorosityJobResult& r) {
+void report(const PorosityJobResult& r, bool quiet) {
   const Container& c = r.container;
   if (r.bulk.stats.particles_clipped > 0)
     std::cerr << "ssimarch: note: " << r.bulk.stats.particles_clipped
@@ -219,7 +266,7 @@ void report(const PorosityJobResult& r) {
   msg.precision(10);
   msg << "bulk porosity: " << r.bulk.porosity << " (R = " << c.radius << ", z in [" << c.slab.z_min << ", "
       << c.slab.z_max << "], " << r.bulk.stats.particles_used << " particles)\n";
-  std::cerr << msg.str();
+  if (!quiet) std::cerr << msg.str();
   if (r.unconverged > 0)
     std::cerr << "ssimarch: warning: " << r.unconverged
               << " per-particle integrals did not reach the requested tolerance (see --summary)\n";
@@ -253,18 +300,22 @@ std::string overlap_message(const PorosityJobResult& r) {
 }
 
 void run(const PorosityArgs& a) {
-  const PorosityJobResult r = run_job(make_job(a));
+  RunProgress progress(a.quiet);
+  PorosityJob job = make_job(a);
+  job.progress = progress.meter().fraction_callback();
+  const PorosityJobResult r = run_job(job);
+  progress.meter().close();
   if (r.overlaps.pairs > 0) {
     if (a.strict) throw CliError("--strict: " + overlap_message(r) + "; no output was written", 1);
     std::cerr << "ssimarch: warning: " << overlap_message(r) << "\n";
   }
   nlohmann::json js = summary(a, r);
   OutputFiles files;  // every output or none (io/output_files.hpp)
-  js["outputs"] = write_profiles(files, a, r);
+  js["outputs"] = vtk_format(a) ? write_profiles_vtk(files, a, r) : write_profiles(files, a, r);
   if (!a.plot.empty()) write_plot(files, a, r);
   if (!a.summary.empty()) files.open(a.summary) << js.dump(2) << "\n";
   files.commit();
-  report(r);
+  report(r, a.quiet);
 }
 
 }  // namespace
@@ -274,8 +325,9 @@ void add_porosity_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "porosity",
       "Exact porosity profiles of a packing of spheres/spherocylinders in a cylinder (CSV or LAMMPS dump). "
-      "Writes CSV (r,porosity | r_inner,r_outer,porosity | z,porosity | r,z,porosity) to -o or stdout; "
-      "the bulk porosity goes to stderr.");
+      "Writes CSV (r,porosity | r_inner,r_outer,porosity | z,porosity | r,z,porosity) to -o or stdout, or "
+      "VTK XML files for ParaView (--format vtk); the bulk porosity and, on a terminal, a progress bar go to "
+      "stderr. Exit status 130: interrupted (Ctrl-C), nothing written.");
   sub->add_option("packing", args->packing, "packing file: CSV (x,y,z,d or x,y,z,ux,uy,uz,d,l) or LAMMPS dump")->required();
   sub->add_option("--container-radius", args->radius, "container radius R (packing units)")->required();
   sub->add_option("--z-range", args->z_range, "height range A,B (default: the packing's vertical extent)");
@@ -283,7 +335,11 @@ void add_porosity_command(CLI::App& app) {
   sub->add_option("--bins", args->bins, "profile averaged over N equal annular bins on [0, R]");
   sub->add_option("--axial", args->axial, "axial profile at N slice centres of the height range");
   sub->add_option("--map", args->map, "2D map eps(r, z) at NR x NZ cell centres (NR,NZ)");
-  sub->add_option("-o,--output", args->output, "output CSV (default stdout)");
+  sub->add_option("-o,--output", args->output,
+                  "output file (default stdout, CSV); FILE.vtm, FILE.vtp or FILE.vti: VTK XML for ParaView");
+  sub->add_option("--format", args->format,
+                  "csv, vtk (VTK XML, base64 binary: profiles .vtp, map .vti, a .vtm listing them) or vtk-ascii "
+                  "(default: vtk for -o *.vtm|*.vtp|*.vti, else csv; docs/output-format.md)");
   sub->add_option("--plot", args->plot, "plot the profile: FILE.svg");
   sub->add_option("--summary", args->summary, "write a JSON summary (bulk porosity, timings, accuracy)");
   sub->add_option("--tolerance", args->tolerance, "absolute accuracy of each porosity value (default 1e-8)");
@@ -292,6 +348,8 @@ void add_porosity_command(CLI::App& app) {
                 "fail (exit 1, no output) when particles overlap each other instead of warning; their common volume "
                 "would be counted twice");
   sub->add_option("--method", args->method, "chord (fast, default) or kernel (seed kernel integrated directly)");
+  sub->add_flag("-q,--quiet", args->quiet, "no progress and no bulk-porosity line on stderr (notes and warnings stay)");
+  add_progress_option(sub);
   add_budget_options(sub);
   sub->callback([args] { run(*args); });
 }

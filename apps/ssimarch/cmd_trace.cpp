@@ -5,6 +5,7 @@
 
 #include "commands.hpp"
 #include "run_budget.hpp"
+#include "run_progress.hpp"
 #include "ssimarch/io/scene.hpp"
 #include "ssimarch/pipeline/trace_job.hpp"
 #include "trace_output.hpp"
@@ -48,7 +49,15 @@ void run_trace(const TraceArgs& a) {
   const bool bspline_set = std::any_of(request.overrides.begin(), request.overrides.end(),
                                        [&](const OptionOverride& o) { return o.option == bspline; });
   if (f == OutputFormat::kStep && !bspline_set) request.overrides.push_back({bspline, std::string("true"), "--format step"});
+  // VTP carries kappa and tau: the format turns the geometry option on (method mixed) unless a flag sets it.
+  const TraceOptionSpec* geometry = find_trace_option("geometry");
+  const bool geometry_set = std::any_of(request.overrides.begin(), request.overrides.end(),
+                                        [&](const OptionOverride& o) { return o.option == geometry; });
+  if ((f == OutputFormat::kVtp || f == OutputFormat::kVtpAscii) && !geometry_set)
+    request.overrides.push_back({geometry, std::string("mixed"), "--format vtp"});
+  RunProgress progress(a.quiet);  // the trace's loops report to the thread's meter
   const TraceJobResult job = trace_scene(scene, request);
+  progress.meter().close();
   write_runs(job.runs, f, a.output);
   if (!a.quiet) print_summary(job.runs);
   if (!job.complete()) g_exit_status = 1;
@@ -74,18 +83,22 @@ void add_trace_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("trace", "Trace the intersection curves of a scene file");
   cmd->footer(
       "Output: JSON {\"intersections\": [...]} (default; schema in docs/output-format.md), CSV (one row per point), "
-      "OBJ (polylines), SVG (pictures) or STEP AP242 (the certified B-splines and p-curves of the option bspline, "
-      "which --format step turns on). A summary goes to stderr.\n"
+      "OBJ (polylines), SVG (pictures), STEP AP242 (the certified B-splines and p-curves of the option bspline, "
+      "which --format step turns on) or VTK XML for ParaView (--format vtp, base64 binary, or vtp-ascii: FILE.vtp "
+      "the curves with params, t, kappa, tau, arc length and branch per point, FILE_points.vtp the singular points "
+      "and curve ends, FILE.vtm both; the format turns the option geometry on, method mixed). A summary and, on a "
+      "terminal, a progress bar go to stderr.\n"
       "Option values may be numbers or expressions of the scene's constants; each option is a key of a scene's "
       "\"options\" (docs/scene-format.md; --list-options prints the table).\n"
       "Exit status: 0 traced; 1 an intersection found no curve or a start point could not be put on the curve; "
-      "2 invalid input.");
+      "2 invalid input; 130 interrupted (Ctrl-C), nothing written.");
   cmd->add_option("scene", args->scene, "Scene file (JSON, docs/scene-format.md)");
   cmd->add_option("-o,--output", args->output, "Output file; '-' for standard output (default)");
-  cmd->add_option("--format", args->format, "json | csv | obj | svg | step (default: from the output file's extension, else json)");
+  cmd->add_option("--format", args->format, "json | csv | obj | svg | step | vtp | vtp-ascii (default: from the output file's extension, .vtp/.vtm: vtp; else json)");
   cmd->add_option("--intersection", args->only, "Trace only the intersection(s) with this name (repeatable)");
   add_option_flags(cmd, args.get());
-  cmd->add_flag("-q,--quiet", args->quiet, "No summary on stderr");
+  cmd->add_flag("-q,--quiet", args->quiet, "No summary and no progress on stderr");
+  add_progress_option(cmd);
   cmd->add_flag("--list-options", args->list_options,
                 "Print the trace options (scene keys; the flags are --key-with-dashes) as the Markdown table of "
                 "docs/scene-format.md, and exit");

@@ -1,6 +1,7 @@
 // ssimarch: command-line front end. Exit status: 0 success, 1 the computation ran but reported a
 // failure (see each subcommand's help), 2 invalid input or usage, or an output that could not be
-// written, 3 internal error, 4 the run exceeded its time or memory budget (run_budget.hpp).
+// written, 3 internal error, 4 the run exceeded its time or memory budget (run_budget.hpp), 130
+// interrupted by Ctrl-C (SIGINT; core/interrupt.hpp), with no output written.
 #include <CLI/CLI.hpp>
 #include <exception>
 #include <iostream>
@@ -9,6 +10,7 @@
 #include "commands.hpp"
 #include "run_budget.hpp"
 #include "ssimarch/core/error.hpp"
+#include "ssimarch/core/interrupt.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"ssimarch: intersection curves of surfaces, their differential geometry, and exact porosity profiles"};
@@ -22,6 +24,7 @@ int main(int argc, char** argv) {
   ssimarch::cli::add_porosity_command(app);
   ssimarch::cli::add_packing_command(app);
   ssimarch::cli::add_singular_command(app);
+  ssimarch::install_interrupt_handler();
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -32,6 +35,9 @@ int main(int argc, char** argv) {
   } catch (const ssimarch::InputError& e) {
     std::cerr << "ssimarch: error: " << e.what() << "\n";
     return 2;
+  } catch (const ssimarch::Interrupted&) {
+    std::cerr << "ssimarch: interrupted; no output was written\n";
+    return ssimarch::cli::kInterruptedExitStatus;
   } catch (const std::bad_alloc&) {
     const double mib = ssimarch::cli::memory_limit_mib();
     std::cerr << "ssimarch: error: out of memory"

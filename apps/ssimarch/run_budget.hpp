@@ -12,6 +12,8 @@ namespace ssimarch::cli {
 
 /// Exit status of a run that exceeded its time or memory budget.
 inline constexpr int kBudgetExitStatus = 4;
+/// Exit status of a run stopped by Ctrl-C (128 + SIGINT, as shells report it).
+inline constexpr int kInterruptedExitStatus = 130;
 
 /// The input limits the flags set (the library's defaults otherwise).
 const InputLimits& input_limits();

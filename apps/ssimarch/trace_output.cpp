@@ -8,6 +8,7 @@
 #include "ssimarch/io/output_files.hpp"
 #include "ssimarch/io/svg_plot.hpp"
 #include "ssimarch/io/trace_writers.hpp"
+#include "ssimarch/io/vtp_writer.hpp"
 
 namespace ssimarch::cli {
 
@@ -17,7 +18,9 @@ OutputFormat parse_format(const std::string& s) {
   if (s == "obj") return OutputFormat::kObj;
   if (s == "svg") return OutputFormat::kSvg;
   if (s == "step") return OutputFormat::kStep;
-  throw CliError("--format: unknown format \"" + s + "\" (known: json, csv, obj, svg, step)");
+  if (s == "vtp") return OutputFormat::kVtp;
+  if (s == "vtp-ascii") return OutputFormat::kVtpAscii;
+  throw CliError("--format: unknown format \"" + s + "\" (known: json, csv, obj, svg, step, vtp, vtp-ascii)");
 }
 
 OutputFormat format_from_path(const std::filesystem::path& p) {
@@ -26,6 +29,7 @@ OutputFormat format_from_path(const std::filesystem::path& p) {
   if (e == ".obj") return OutputFormat::kObj;
   if (e == ".svg") return OutputFormat::kSvg;
   if (e == ".step" || e == ".stp") return OutputFormat::kStep;
+  if (e == ".vtp" || e == ".vtm") return OutputFormat::kVtp;
   return OutputFormat::kJson;
 }
 
@@ -42,13 +46,25 @@ void write_runs(const std::vector<IntersectionRun>& runs, OutputFormat format, c
     files.commit();
     return;
   }
+  if (format == OutputFormat::kVtp || format == OutputFormat::kVtpAscii) {
+    if (path == "-") throw CliError("--format vtp writes three files: give -o FILE.vtp (or FILE.vtm)");
+    const VtkEncoding encoding = format == OutputFormat::kVtp ? VtkEncoding::kBase64 : VtkEncoding::kAscii;
+    const VtpTraceFiles vtp = vtp_trace_files(path);
+    write_vtp(files.open(vtp.curves), curves_poly_data(runs), encoding);
+    write_vtp(files.open(vtp.points), network_vertices_poly_data(runs), encoding);
+    write_trace_vtm(files.open(vtp.multiblock), vtp);
+    files.commit();
+    return;
+  }
   std::ostream& out = files.open(path);
   switch (format) {
     case OutputFormat::kJson: write_json(out, runs); break;
     case OutputFormat::kCsv: write_csv(out, runs); break;
     case OutputFormat::kObj: write_obj(out, runs); break;
     case OutputFormat::kStep: write_step(out, runs); break;
-    case OutputFormat::kSvg: break;
+    case OutputFormat::kSvg:
+    case OutputFormat::kVtp:
+    case OutputFormat::kVtpAscii: break;
   }
   files.commit();
 }

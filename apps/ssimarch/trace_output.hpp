@@ -9,15 +9,16 @@
 
 namespace ssimarch::cli {
 
-enum class OutputFormat { kJson, kCsv, kObj, kSvg, kStep };
+enum class OutputFormat { kJson, kCsv, kObj, kSvg, kStep, kVtp, kVtpAscii };
 
-/// "json", "csv", "obj", "svg", "step"; throws CliError otherwise.
+/// "json", "csv", "obj", "svg", "step", "vtp", "vtp-ascii"; throws CliError otherwise.
 OutputFormat parse_format(const std::string& s);
 /// From a file name's extension; json when it has none of the known ones.
 OutputFormat format_from_path(const std::filesystem::path& p);
 
 /// Writes runs in the format to `path` ("-" = standard output). SVG writes one file per run
-/// (path itself when there is one run, else <stem>_<name>.svg beside it).
+/// (path itself when there is one run, else <stem>_<name>.svg beside it). VTP writes three files
+/// (io/vtp_writer.hpp: <stem>.vtp, <stem>_points.vtp, <stem>.vtm), never to standard output.
 void write_runs(const std::vector<IntersectionRun>& runs, OutputFormat format, const std::string& path);
 
 /// One line per curve on stderr: closed/open, length, points, time.

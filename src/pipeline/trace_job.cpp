@@ -4,6 +4,8 @@
 
 #include "ssimarch/analytic/closed_form.hpp"
 #include "ssimarch/core/error.hpp"
+#include "ssimarch/core/interrupt.hpp"
+#include "ssimarch/core/progress.hpp"
 #include "ssimarch/geometry/intersection_geometry.hpp"
 #include "ssimarch/march/model_size.hpp"
 #include "ssimarch/pipeline/branch_geometry.hpp"
@@ -142,7 +144,14 @@ std::optional<CurveSpline> spline_of_curve(const Problem& problem, const TracedC
 
 TraceJobResult trace_scene(const Scene& scene, const TraceRequest& request) {
   TraceJobResult job;
-  for (const IntersectionSpec& spec : select_intersections(scene, request)) job.runs.push_back(run_intersection(scene, spec));
+  const std::vector<IntersectionSpec> specs = select_intersections(scene, request);
+  for (std::size_t i = 0; i < specs.size(); ++i) {
+    throw_if_interrupted();  // Ctrl-C between intersections (core/interrupt.hpp)
+    // Shown only for several intersections: one intersection's own stages report themselves.
+    if (specs.size() > 1) report_progress("trace", static_cast<double>(i), static_cast<double>(specs.size()));
+    job.runs.push_back(run_intersection(scene, specs[i]));
+  }
+  if (specs.size() > 1) report_progress("trace", static_cast<double>(specs.size()), static_cast<double>(specs.size()));
   return job;
 }
 

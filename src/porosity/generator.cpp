@@ -12,6 +12,8 @@
 #include <string>
 
 #include "ssimarch/core/error.hpp"
+#include "ssimarch/core/interrupt.hpp"
+#include "ssimarch/core/progress.hpp"
 
 #include "spatial_grid.hpp"
 
@@ -87,6 +89,8 @@ class Deposition {
   std::vector<Particle> run(GeneratorReport* rep) {
     std::uniform_real_distribution<double> U(0, 1);
     for (long n = 0; n < o_.count; ++n) {
+      throw_if_interrupted();  // Ctrl-C (core/interrupt.hpp)
+      report_progress("packing", static_cast<double>(n), static_cast<double>(o_.count));
       const double d = o_.diameter_max > o_.diameter ? o_.diameter + (o_.diameter_max - o_.diameter) * U(rng_) : o_.diameter;
       const double a = d / 2, Rw = o_.container_radius - a;
       const double rr = Rw * std::sqrt(U(rng_)), ph = 2 * kPi * U(rng_);
@@ -97,6 +101,7 @@ class Deposition {
       grid_.insert(p, static_cast<int>(placed_.size()) - 1);
       top_ = std::max(top_, p.z() + a);
     }
+    report_progress("packing", static_cast<double>(o_.count), static_cast<double>(o_.count));
     if (rep) {
       rep->placed = static_cast<long>(placed_.size());
       rep->attempts = rep->placed;
@@ -316,6 +321,7 @@ std::vector<Particle> rsa_spherocylinders(const SpherocylinderRsaOptions& o, Gen
   const long max_attempts = o.max_attempts_per_particle * std::max(1L, o.count);
   while (static_cast<long>(out.size()) < o.count && attempts < max_attempts) {
     ++attempts;
+    throw_if_interrupted();  // Ctrl-C (core/interrupt.hpp)
     Vec3 u(N(rng), N(rng), N(rng));
     if (!(u.norm() > 0)) continue;
     u.normalize();
@@ -336,6 +342,7 @@ std::vector<Particle> rsa_spherocylinders(const SpherocylinderRsaOptions& o, Gen
     p.axis = u;
     out.push_back(p);
     grid.insert(c, static_cast<int>(out.size()) - 1);
+    report_progress("packing", static_cast<double>(out.size()), static_cast<double>(o.count));
   }
   if (report) {
     report->placed = static_cast<long>(out.size());

@@ -10,6 +10,8 @@
 #include <thread>
 #include <vector>
 
+#include "ssimarch/core/interrupt.hpp"
+
 namespace ssimarch::internal {
 
 inline unsigned worker_count(unsigned requested) {
@@ -20,7 +22,8 @@ inline unsigned worker_count(unsigned requested) {
 
 /// Runs body(chunk) for chunk = 0..chunks-1 on `threads` workers; `progress(fraction)` is called on the
 /// calling thread while waiting. Exceptions from workers are rethrown; one from `progress` stops the
-/// loop after the running chunks and is rethrown.
+/// loop after the running chunks and is rethrown. After Ctrl-C (core/interrupt.hpp) the chunks not
+/// yet begun are skipped and Interrupted is thrown once every worker has stopped.
 inline void parallel_chunks(int chunks, unsigned threads, const std::function<void(int)>& body,
                             const std::function<void(double)>& progress) {
   std::atomic<int> next{0}, done{0};
@@ -28,6 +31,10 @@ inline void parallel_chunks(int chunks, unsigned threads, const std::function<vo
   std::mutex error_mutex;
   auto worker = [&] {
     for (int k; (k = next.fetch_add(1)) < chunks;) {
+      if (interrupt_requested()) {
+        done.fetch_add(1);
+        continue;
+      }
       try {
         body(k);
       } catch (...) {
@@ -57,6 +64,7 @@ inline void parallel_chunks(int chunks, unsigned threads, const std::function<vo
   }
   for (auto& t : pool) t.join();
   if (error) std::rethrow_exception(error);
+  throw_if_interrupted();
 }
 
 }  // namespace ssimarch::internal

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "ssimarch/core/error.hpp"
+#include "ssimarch/core/interrupt.hpp"
 
 #include "parallel.hpp"
 
@@ -73,7 +74,8 @@ std::vector<ChunkResult> run_chunks(const std::vector<ParticleShape>& shapes, st
         cr.err.assign(nvalues, 0.0);
         const int b = static_cast<int>(static_cast<long>(n) * k / chunks);
         const int e = static_cast<int>(static_cast<long>(n) * (k + 1) / chunks);
-        for (int i = b; i < e; ++i) per_particle(shapes[i], cr);
+        // Ctrl-C: the rest of the chunk is skipped; parallel_chunks throws Interrupted.
+        for (int i = b; i < e && !interrupt_requested(); ++i) per_particle(shapes[i], cr);
       },
       opt.progress);
   return res;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "ssimarch/core/progress.hpp"
 #include "ssimarch/problem/gauss_newton.hpp"
 #include "ssimarch/problem/singular_tolerances.hpp"
 #include "ssimarch/topology/krawczyk.hpp"
@@ -316,13 +317,20 @@ std::vector<VecX> certified_start_points(const Tracer& tracer, TraceStats* stats
   ro.max_boxes = tracer.options().start_box_budget;
   Collector out{tracer, stats, search, {}};
   bool boundary_decided = true;
-  for (const System& s : boundary_systems(P))
+  // Progress by systems solved: the boundary ones, then at most one turning system per unknown.
+  const std::vector<System> boundary = boundary_systems(P);
+  const double systems = static_cast<double>(boundary.size()) + P.dim();
+  double solved = 0;
+  for (const System& s : boundary) {
+    report_progress("start points", solved++, systems);
     boundary_decided = out.take(s, find_all_roots(s.equations, s.box, ro), true) && boundary_decided;
+  }
   // One turning system decided everywhere suffices for the loops; the others' roots still help.
   bool loops_decided = false;
   long saddle_boxes = 0;
   std::vector<std::pair<System, RootSearchResult>> undecided_turning;
   for (int k = 0; k < P.dim() && !loops_decided; ++k) {
+    report_progress("start points", solved++, systems);
     System s = turning_system(P, k);
     RootSearchResult r = find_all_roots(s.equations, s.box, ro);
     loops_decided = out.take(s, r, false) || decide_by_saddle_boxes(s, r, ro, &out, &saddle_boxes);
@@ -333,6 +341,7 @@ std::vector<VecX> certified_start_points(const Tracer& tracer, TraceStats* stats
     // there), so no other k can be decided; their Newton candidates are start points already.
     if (!budget_spent) break;
   }
+  report_progress("start points", systems, systems);  // the turning loop may stop early
   if (!loops_decided)
     for (const auto& [s, r] : undecided_turning) {
       RootSearchResult regions_only{{}, r.undecided, 0};

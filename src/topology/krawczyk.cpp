@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <deque>
 
+#include "ssimarch/core/interrupt.hpp"
+
 namespace ssimarch {
 
 namespace {
@@ -185,6 +187,7 @@ RootSearchResult find_all_roots(const SquareSystem& s, const IntervalBox& start,
       for (IntervalBox& b : queue) out.undecided.push_back({std::move(b), true});
       break;
     }
+    throw_if_interrupted();  // Ctrl-C (core/interrupt.hpp)
     IntervalBox x = std::move(queue.front());
     queue.pop_front();
     ++out.boxes;
