@@ -9,17 +9,12 @@
 // returns, PyErr_CheckSignals runs Python's handler, which raises KeyboardInterrupt, and the
 // result is discarded. No thread is started and nothing polls: the cost is two sigaction calls.
 //
-// The flag lives here until the library's cancellation flag (core/interrupt.hpp, checked in the
-// library's own long loops) is merged; where that header exists, the handler raises the library's
-// flag too and its Interrupted is caught as well, so both work together without edits here.
+// The module's own flag stops its loops and callbacks; the handler raises the library's
+// cancellation flag too (core/interrupt.hpp, checked in the library's own long loops), whose
+// Interrupted is caught as well.
 #pragma once
 
-#if __has_include("ssimarch/core/interrupt.hpp")
 #include "ssimarch/core/interrupt.hpp"
-#define SSIMARCH_PYTHON_LIBRARY_INTERRUPT 1
-#else
-#define SSIMARCH_PYTHON_LIBRARY_INTERRUPT 0
-#endif
 
 #include <pybind11/pybind11.h>
 
@@ -42,18 +37,14 @@ inline bool stop_requested() { return stop_flag().load(std::memory_order_relaxed
 // Async-signal-safe (lock-free atomic stores).
 inline void request_stop() {
   stop_flag().store(true);
-#if SSIMARCH_PYTHON_LIBRARY_INTERRUPT
   request_interrupt();
-#endif
 }
 
 // Lowers the flags; returns whether one was up.
 inline bool clear_stop() {
   bool was = stop_flag().exchange(false);
-#if SSIMARCH_PYTHON_LIBRARY_INTERRUPT
   was = interrupt_requested() || was;
   clear_interrupt();
-#endif
   return was;
 }
 
@@ -136,9 +127,7 @@ auto run_interruptible(F&& f) -> std::invoke_result_t<F&> {
         result.emplace(f());
       }
     } catch (const StopRequested&) {
-#if SSIMARCH_PYTHON_LIBRARY_INTERRUPT
     } catch (const Interrupted&) {  // the library's (core/interrupt.hpp)
-#endif
     }
     interrupted = clear_stop();
   }
