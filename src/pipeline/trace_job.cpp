@@ -4,6 +4,7 @@
 
 #include "ssimarch/analytic/closed_form.hpp"
 #include "ssimarch/core/error.hpp"
+#include "ssimarch/core/thread_pool.hpp"
 #include "ssimarch/geometry/intersection_geometry.hpp"
 #include "ssimarch/march/model_size.hpp"
 #include "ssimarch/pipeline/branch_geometry.hpp"
@@ -12,17 +13,15 @@
 
 namespace ssimarch {
 
-bool TraceJobResult::complete() const {
-  return std::none_of(runs.begin(), runs.end(),
-                      [](const IntersectionRun& r) {
-                        // No curve is a result when the start-point search proved there is none
-                        // (issue 11 item 6); otherwise an empty trace is incomplete.
-                        // Coincident surfaces are never "proven empty": they share a region.
-                        const bool proven_empty = r.result.curves.empty() && r.result.start_search.certified &&
-                                                  !r.coincidence;
-                        return (r.result.curves.empty() && !proven_empty) || r.result.failed_starts > 0 || !r.network.complete();
-                      });
+bool run_complete(const IntersectionRun& r) {
+  // No curve is a result when the start-point search proved there is none (issue 11 item 6);
+  // otherwise an empty trace is incomplete. Coincident surfaces are never "proven empty": they
+  // share a region.
+  const bool proven_empty = r.result.curves.empty() && r.result.start_search.certified && !r.coincidence;
+  return !((r.result.curves.empty() && !proven_empty) || r.result.failed_starts > 0 || !r.network.complete());
 }
+
+bool TraceJobResult::complete() const { return std::all_of(runs.begin(), runs.end(), run_complete); }
 
 std::vector<IntersectionSpec> select_intersections(const Scene& scene, const TraceRequest& request) {
   for (const std::string& name : request.only)
@@ -140,8 +139,13 @@ std::optional<CurveSpline> spline_of_curve(const Problem& problem, const TracedC
 }
 
 TraceJobResult trace_scene(const Scene& scene, const TraceRequest& request) {
+  // The intersections are independent (each its own Problem; surfaces and compiled programs are
+  // read-only, docs/expressions.md): traced in parallel on the shared pool, kept in scene order.
+  const std::vector<IntersectionSpec> specs = select_intersections(scene, request);
+  std::vector<std::optional<IntersectionRun>> runs(specs.size());
+  parallel_for(specs.size(), [&](std::size_t i) { runs[i].emplace(run_intersection(scene, specs[i])); });
   TraceJobResult job;
-  for (const IntersectionSpec& spec : select_intersections(scene, request)) job.runs.push_back(run_intersection(scene, spec));
+  for (std::optional<IntersectionRun>& r : runs) job.runs.push_back(std::move(*r));
   return job;
 }
 
