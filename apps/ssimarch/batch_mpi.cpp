@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <cstdlib>
+#include <algorithm>
 #include <cstring>
 #include <limits>
 #include <mutex>
@@ -21,11 +22,46 @@ namespace ssimarch::cli {
 
 namespace {
 
-void put_u64(std::string* out, std::uint64_t v) { out->append(reinterpret_cast<const char*>(&v), sizeof v); }
-std::uint64_t get_u64(const char* p) {
-  std::uint64_t v;
-  std::memcpy(&v, p, sizeof v);
+// A rank's results as bytes: per unit its number, rank, wall and CPU seconds, text length, text.
+template <class T>
+void put(std::string* out, T v) {
+  out->append(reinterpret_cast<const char*>(&v), sizeof v);
+}
+template <class T>
+T get(const std::string& in, std::size_t* at) {
+  T v;
+  std::memcpy(&v, in.data() + *at, sizeof v);
+  *at += sizeof v;
   return v;
+}
+
+std::string serialize(const std::vector<UnitResult>& local) {
+  std::string bytes;
+  for (const UnitResult& r : local) {
+    put<std::uint64_t>(&bytes, r.unit);
+    put<std::int32_t>(&bytes, r.rank);
+    put<double>(&bytes, r.wall_s);
+    put<double>(&bytes, r.cpu_s);
+    put<std::uint64_t>(&bytes, r.text.size());
+    bytes += r.text;
+  }
+  return bytes;
+}
+
+std::vector<UnitResult> deserialize(const std::string& bytes, std::size_t units) {
+  std::vector<UnitResult> all(units);
+  for (std::size_t at = 0; at < bytes.size();) {
+    UnitResult r;
+    r.unit = get<std::uint64_t>(bytes, &at);
+    r.rank = get<std::int32_t>(bytes, &at);
+    r.wall_s = get<double>(bytes, &at);
+    r.cpu_s = get<double>(bytes, &at);
+    const auto n = get<std::uint64_t>(bytes, &at);
+    r.text.assign(bytes, at, n);
+    at += n;
+    all.at(r.unit) = std::move(r);
+  }
+  return all;
 }
 
 class MpiRanks final : public BatchRanks {
@@ -73,15 +109,10 @@ class MpiRanks final : public BatchRanks {
     return static_cast<std::size_t>(got);
   }
 
-  std::pair<std::vector<std::string>, std::vector<RankLoad>> gather(std::vector<std::pair<std::size_t, std::string>> local,
-                                                                    std::size_t units, const RankLoad& load) override {
+  std::pair<std::vector<UnitResult>, std::vector<RankLoad>> gather(std::vector<UnitResult> local, std::size_t units,
+                                                                   const RankLoad& load) override {
     close_window();
-    std::string bytes;  // (unit, length, text) records
-    for (const auto& [u, text] : local) {
-      put_u64(&bytes, u);
-      put_u64(&bytes, text.size());
-      bytes += text;
-    }
+    const std::string bytes = serialize(local);
     if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
       throw CliError("batch: rank " + std::to_string(rank_) + "'s results exceed 2 GiB (MPI_Gatherv counts are int)");
     const int count = static_cast<int>(bytes.size());
@@ -91,26 +122,21 @@ class MpiRanks final : public BatchRanks {
     if (rank_ == 0) {
       long long total = 0;
       for (int r = 0; r < size_; ++r) {
-        if (total > std::numeric_limits<int>::max()) throw CliError("batch: the gathered results exceed 2 GiB");
         offsets[static_cast<std::size_t>(r)] = static_cast<int>(total);
         total += counts[static_cast<std::size_t>(r)];
+        if (total > std::numeric_limits<int>::max()) throw CliError("batch: the gathered results exceed 2 GiB");
       }
       all.resize(static_cast<std::size_t>(total));
     }
     MPI_Gatherv(bytes.data(), count, MPI_CHAR, all.data(), counts.data(), offsets.data(), MPI_CHAR, 0, MPI_COMM_WORLD);
-    const double mine[3] = {load.units, load.busy_s, load.finish_s};
-    std::vector<double> loads(3 * static_cast<std::size_t>(size_));
-    MPI_Gather(mine, 3, MPI_DOUBLE, loads.data(), 3, MPI_DOUBLE, 0, MPI_COMM_WORLD);
+    const double mine[4] = {load.units, load.busy_s, load.cpu_s, load.finish_s};
+    std::vector<double> loads(4 * static_cast<std::size_t>(size_));
+    MPI_Gather(mine, 4, MPI_DOUBLE, loads.data(), 4, MPI_DOUBLE, 0, MPI_COMM_WORLD);
     if (rank_ != 0) return {};
-    std::vector<std::string> texts(units);
-    for (std::size_t at = 0; at < all.size();) {
-      const std::uint64_t u = get_u64(all.data() + at), n = get_u64(all.data() + at + 8);
-      texts.at(u).assign(all, at + 16, n);
-      at += 16 + n;
-    }
     std::vector<RankLoad> per_rank;
-    for (std::size_t r = 0; r < static_cast<std::size_t>(size_); ++r) per_rank.push_back({loads[3 * r], loads[3 * r + 1], loads[3 * r + 2]});
-    return {std::move(texts), std::move(per_rank)};
+    for (std::size_t r = 0; r < static_cast<std::size_t>(size_); ++r)
+      per_rank.push_back({loads[4 * r], loads[4 * r + 1], loads[4 * r + 2], loads[4 * r + 3]});
+    return {deserialize(all, units), std::move(per_rank)};
   }
 
   int share_status(int status) override {

@@ -21,11 +21,11 @@ class OneProcess final : public BatchRanks {
   int size() const override { return 1; }
   unsigned default_threads() const override { return hardware_threads(); }
   std::size_t next() override { return next_.fetch_add(1); }
-  std::pair<std::vector<std::string>, std::vector<RankLoad>> gather(std::vector<std::pair<std::size_t, std::string>> local,
-                                                                    std::size_t units, const RankLoad& load) override {
-    std::vector<std::string> texts(units);
-    for (auto& [u, text] : local) texts.at(u) = std::move(text);
-    return {std::move(texts), {load}};
+  std::pair<std::vector<UnitResult>, std::vector<RankLoad>> gather(std::vector<UnitResult> local, std::size_t units,
+                                                                   const RankLoad& load) override {
+    std::vector<UnitResult> all(units);
+    for (UnitResult& r : local) all.at(r.unit) = std::move(r);
+    return {std::move(all), {load}};
   }
   int share_status(int status) override { return status; }
   [[noreturn]] void abort(int status) override { std::exit(status); }

@@ -13,11 +13,21 @@
 
 namespace ssimarch::cli {
 
-/// What one rank did: units run, the sum of their wall times, and when its threads ran out of
-/// units (seconds from the start of the distribution).
+/// One unit's result: its JSON text, which rank ran it, and its cost (wall and thread CPU time).
+struct UnitResult {
+  std::size_t unit = 0;
+  int rank = 0;
+  double wall_s = 0;
+  double cpu_s = 0;
+  std::string text;
+};
+
+/// What one rank did: units run, the sums of their wall and CPU times, and when its threads ran
+/// out of units (seconds from the start of the distribution).
 struct RankLoad {
   double units = 0;
   double busy_s = 0;
+  double cpu_s = 0;
   double finish_s = 0;
 };
 
@@ -30,10 +40,10 @@ class BatchRanks {
   virtual unsigned default_threads() const = 0;
   /// The next unit number (>= the unit count when none is left); thread-safe.
   virtual std::size_t next() = 0;
-  /// Every unit's text in unit order and every rank's load, on rank 0; empty vectors elsewhere.
-  /// `local` holds the (unit, text) pairs this rank ran.
-  virtual std::pair<std::vector<std::string>, std::vector<RankLoad>> gather(
-      std::vector<std::pair<std::size_t, std::string>> local, std::size_t units, const RankLoad& load) = 0;
+  /// Every unit's result in unit order and every rank's load, on rank 0; empty vectors
+  /// elsewhere. `local` holds the units this rank ran.
+  virtual std::pair<std::vector<UnitResult>, std::vector<RankLoad>> gather(std::vector<UnitResult> local, std::size_t units,
+                                                                           const RankLoad& load) = 0;
   /// Rank 0's exit status, on every rank.
   virtual int share_status(int status) = 0;
   /// Ends every rank with `status` (rank 0 could not write the output).

@@ -25,39 +25,51 @@ struct BatchArgs {
   std::string output = "-";
   unsigned threads = 0;
   bool quiet = false;
+  std::string timings;
 };
 
 // This rank's share: units taken from `ranks` until none is left, each as compact JSON text.
-std::vector<std::pair<std::size_t, std::string>> run_share(const Batch& batch, unsigned threads, BatchRanks* ranks,
-                                                           RankLoad* load) {
-  std::vector<std::pair<std::size_t, std::string>> local;
+std::vector<UnitResult> run_share(const Batch& batch, unsigned threads, BatchRanks* ranks, RankLoad* load) {
+  std::vector<UnitResult> local;
   std::mutex m;
   const auto t0 = std::chrono::steady_clock::now();
   run_batch_units(batch, threads, [ranks] { return ranks->next(); }, [&](std::size_t u, BatchOutcome&& outcome) {
-    std::string text = batch_unit_json(batch, u, outcome).dump();
+    UnitResult r{u, ranks->rank(), outcome.seconds, outcome.cpu_seconds, batch_unit_json(batch, u, outcome).dump()};
     std::lock_guard<std::mutex> lock(m);
-    local.emplace_back(u, std::move(text));
     load->units += 1;
-    load->busy_s += outcome.seconds;
+    load->busy_s += r.wall_s;
+    load->cpu_s += r.cpu_s;
+    local.push_back(std::move(r));
   });
   load->finish_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return local;
 }
 
-// Per rank: units, busy time, finish time; and the spread of the busy times (docs/scaling.md).
+// Per rank: units, busy and CPU time, finish time; and the spread of the CPU times (docs/scaling.md).
 void print_loads(const std::vector<RankLoad>& loads, unsigned threads) {
   double most = 0, total = 0, last = 0;
   for (std::size_t r = 0; r < loads.size(); ++r) {
     const RankLoad& l = loads[r];
-    std::cerr << "  rank " << r << ": " << l.units << " units, busy " << std::setprecision(4) << l.busy_s << " s (" << threads
-              << " threads), done at " << l.finish_s << " s\n";
-    most = std::max(most, l.busy_s);
-    total += l.busy_s;
+    std::cerr << "  rank " << r << ": " << l.units << " units, busy " << std::setprecision(4) << l.busy_s << " s, CPU " << l.cpu_s
+              << " s (" << threads << " threads), done at " << l.finish_s << " s\n";
+    most = std::max(most, l.cpu_s);
+    total += l.cpu_s;
     last = std::max(last, l.finish_s);
   }
   const double mean = total / static_cast<double>(loads.size());
-  std::cerr << "  load balance: max busy / mean busy - 1 = " << std::setprecision(3) << (mean > 0 ? most / mean - 1 : 0.0)
-            << "; " << std::setprecision(6) << last << " s wall\n";
+  std::cerr << "  load balance: max CPU / mean CPU - 1 = " << std::setprecision(3) << (mean > 0 ? most / mean - 1 : 0.0) << "; "
+            << std::setprecision(6) << last << " s wall\n";
+}
+
+// --timings: one CSV row per unit (its cost; the input of the model of docs/scaling.md).
+void write_timings(const Batch& batch, const std::vector<UnitResult>& units, const std::string& path, OutputFiles* files) {
+  std::ostream& out = files->open(path);
+  out << "unit,job,intersection,rank,wall_s,cpu_s,bytes\n" << std::setprecision(9);
+  for (const UnitResult& r : units) {
+    const BatchUnit& u = batch.units[r.unit];
+    out << r.unit << "," << u.job << "," << batch.jobs[u.job].intersections[u.intersection].name << "," << r.rank << "," << r.wall_s
+        << "," << r.cpu_s << "," << r.text.size() << "\n";
+  }
 }
 
 void run_batch_command(const BatchArgs& a) {
@@ -68,15 +80,16 @@ void run_batch_command(const BatchArgs& a) {
   set_thread_count(threads);
   RankLoad load;
   auto local = run_share(batch, threads, ranks.get(), &load);
-  auto [texts, loads] = ranks->gather(std::move(local), batch.units.size(), load);
+  auto [units, loads] = ranks->gather(std::move(local), batch.units.size(), load);
   int status = 0;
   if (ranks->rank() == 0) {
     try {
-      std::vector<nlohmann::json> units;
-      for (const std::string& t : texts) units.push_back(nlohmann::json::parse(t));
-      const nlohmann::json result = batch_result_json(batch, units);
+      std::vector<nlohmann::json> entries;
+      for (const UnitResult& u : units) entries.push_back(nlohmann::json::parse(u.text));
+      const nlohmann::json result = batch_result_json(batch, entries);
       OutputFiles files;
       files.open(a.output) << result.dump(1) << "\n";
+      if (!a.timings.empty()) write_timings(batch, units, a.timings, &files);
       files.commit();
       const nlohmann::json& s = result.at("summary");
       if (!a.quiet) {
@@ -113,6 +126,8 @@ void add_batch_command(CLI::App& app) {
   cmd->add_option("-o,--output", args->output, "Output file; '-' for standard output (default)");
   cmd->add_option("--threads", args->threads,
                   "Threads per process (default: every core; under mpirun the node's cores divided among its ranks)");
+  cmd->add_option("--timings", args->timings,
+                  "Also write a CSV of every intersection's cost: unit, job, intersection, rank, wall_s, cpu_s, bytes");
   cmd->add_flag("-q,--quiet", args->quiet, "No summary on stderr");
   add_budget_options(cmd);
   cmd->callback([args] { run_batch_command(*args); });

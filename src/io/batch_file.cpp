@@ -103,7 +103,7 @@ json batch_unit_json(const Batch& batch, std::size_t unit, const BatchOutcome& o
   const BatchUnit& u = batch.units[unit];
   const IntersectionSpec& spec = batch.jobs[u.job].intersections[u.intersection];
   if (!outcome.run)
-    return json{{"name", spec.name}, {"surfaces", {spec.surfaces[0], spec.surfaces[1]}}, {"complete", false}, {"error", outcome.error}};
+    return json{{"name", spec.name}, {"surfaces", json::array({spec.surfaces[0], spec.surfaces[1]})}, {"complete", false}, {"error", outcome.error}};
   json j = to_json(*outcome.run);
   j["complete"] = run_complete(*outcome.run);
   return j;

@@ -64,7 +64,9 @@ void find_curves(const IntersectionSpec& spec, IntersectionRun* run_ptr) {
 // When no curve was found, whether the surfaces coincide over a region (issue 13 item 3).
 void report_coincidence(const IntersectionSpec& spec, IntersectionRun* run_ptr) {
   IntersectionRun& run = *run_ptr;
-  if (!run.result.curves.empty()) return;
+  // Surfaces in disjoint boxes share no region (and the tracer said so without work): skipping the
+  // sampling here makes the empty pairs of a model's all-pairs batch cheap (issue 17).
+  if (!run.result.curves.empty() || run.problem.disjoint()) return;
   // Coincident surfaces share a region, not a curve: say so rather than report "0 curves". The
   // distance test allows for the corrector's tolerance and the rounding of the model's size.
   const double tolerance = std::max(1e3 * spec.options.trace.tolerance, 1e-12 * run.problem.scale());

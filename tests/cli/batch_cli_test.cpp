@@ -56,7 +56,7 @@ std::string jobs_file() {
     "a": {"sphere": {"center": [0,0,0], "radius": 1}}, "b": {"sphere": {"center": [1.2,0,0], "radius": 0.8}},
     "c": {"torus": {"center": [0,0,0.5], "axis": [0,1,0], "major_radius": 1, "minor_radius": 0.3}},
     "d": {"cylinder": {"point": [0,0,0], "axis": [0,0,1], "radius": 0.5, "range": [-2, 2]}},
-    "e": {"torus": {"center": [0.5,0,0], "major_radius": 1.1, "minor_radius": 0.35}},
+    "e": {"torus": {"center": [0.5,0,0], "axis": [0,0,1], "major_radius": 1.1, "minor_radius": 0.35}},
     "f": {"ellipsoid": {"center": [0,0.3,0], "radii": [1.3, 0.6, 0.9]}},
     "g": {"sphere": {"center": [20,0,0], "radius": 1}},
     "h": {"cone": {"apex": [0,0,-1.5], "axis": [0,0,1], "half_angle": 0.5, "range": [0.1, 2.5]}}}})";

@@ -55,7 +55,7 @@ TEST(ParallelTrace, AScenesIntersectionsGiveTheSerialOutputOnAnyThreadCount) {
 TEST(Batch, AllPairsOfAModelAreEveryUnorderedPairOnce) {
   const Scene model = parse_scene(R"({"surfaces": {
       "a": {"sphere": {"center": [0,0,0], "radius": 1}}, "b": {"sphere": {"center": [1,0,0], "radius": 1}},
-      "c": {"torus": {"center": [0,0,0], "major_radius": 1, "minor_radius": 0.3}},
+      "c": {"torus": {"center": [0,0,0], "axis": [0,0,1], "major_radius": 1, "minor_radius": 0.3}},
       "d": {"parametric": ["u", "v", "0.1*u*v"], "u": [-1, 1], "v": [-1, 1]}}})",
                                   "m.json");
   const std::vector<IntersectionSpec> pairs = all_surface_pairs(model, TraceJobOptions{});
@@ -92,7 +92,7 @@ const char* kJobs = R"({"jobs": [
   {"scene": "occt_tori_crossed.json", "intersections": ["tori_crossed"], "options": {"step_length": 0.05}},
   {"scene": {"surfaces": {"s": {"sphere": {"center": [0,0,0], "radius": 1}}}}, "pairs": "everything"},
   {"scene": {"surfaces": {"s": {"sphere": {"center": [0,0,0], "radius": 1e7}}, "t": {"sphere": {"center": [1e7,0,0], "radius": 1e7}}},
-             "intersections": [{"surfaces": ["s", "t"], "options": {"step_length": 1e-9}}]}}
+             "intersections": [{"surfaces": ["s", "t"]}]}}
 ]})";
 
 TEST(Batch, BadJobsAndFailedPairsAreReportedAndTheRestIsTraced) {
@@ -115,10 +115,10 @@ TEST(Batch, BadJobsAndFailedPairsAreReportedAndTheRestIsTraced) {
   EXPECT_EQ(jobs[3]["intersections"].size(), 1u);
   EXPECT_EQ(jobs[3]["intersections"][0]["name"], "tori_crossed");
   EXPECT_FALSE(jobs[3]["intersections"][0]["curves"].empty());
-  // A step far below the model's rounding is refused before tracing: that pair's error.
+  // The default tolerance is below the rounding of a model this large: refused before tracing, that pair's error.
   const json& bad = jobs[5]["intersections"][0];
   EXPECT_FALSE(bad["complete"].get<bool>());
-  EXPECT_THAT(bad["error"].get<std::string>(), HasSubstr("step_length"));
+  EXPECT_THAT(bad["error"].get<std::string>(), HasSubstr("usable range for the model size"));
   EXPECT_EQ(out["summary"]["failed_jobs"], 2);
   EXPECT_EQ(out["summary"]["failed_intersections"], 1);
   EXPECT_EQ(out["summary"]["intersections"], batch.units.size());

@@ -49,7 +49,8 @@ std::vector<IntersectionSpec> all_surface_pairs(const Scene& scene, const TraceJ
 struct BatchOutcome {
   std::optional<IntersectionRun> run;
   std::string error;
-  double seconds = 0;  // wall time of the unit (for load-balance figures; not in the output)
+  double seconds = 0;      // wall time of the unit (for load-balance figures; not in the output)
+  double cpu_seconds = 0;  // CPU time of the thread that ran it (the cost on a loaded machine)
 };
 
 /// Runs units of `batch` on `threads` threads of the shared pool (0: thread_count()) until
