@@ -90,7 +90,7 @@ TEST(BatchCli, StatusZeroWhenEverythingIsTracedAndTwoForAnUnusableFile) {
   const std::string ok = write_file("ok.json", R"({"jobs": [")" + kExamples + R"(viviani.json"]})");
   const CliRun r = ssimarch::testing::run_cli("batch " + ok + " -q");
   EXPECT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(json::parse(r.out)["summary"]["intersections"], 1);
+  EXPECT_EQ(json::parse(r.out)["summary"]["intersections"], 2);  // viviani.json has two
   const CliRun bad = ssimarch::testing::run_cli("batch " + write_file("bad.json", R"({"jobs": 3})"));
   EXPECT_EQ(bad.status, 2);
   EXPECT_THAT(bad.err, HasSubstr("jobs"));
@@ -131,13 +131,18 @@ TEST(BatchMpi, OneTwoAndThreeRanksGiveTheSameOutput) {
 }
 
 TEST(BatchMpi, ARankWithoutWorkAndAnEmptyJobList) {
-  // One intersection, three ranks: two find nothing to do.
+  // Two intersections, three ranks: one rank at least finds nothing to do.
   const std::string one = write_file("one.json", R"({"jobs": [")" + kExamples + R"(viviani.json"]})");
   const CliRun r = run_mpi(3, "batch " + one + " --threads 1");
   EXPECT_EQ(r.status, 0) << r.err;
   const json out = json::parse(r.out);
-  EXPECT_EQ(out["summary"]["intersections"], 1);
-  EXPECT_EQ(out["jobs"][0]["intersections"][0]["curves"].size(), 1u);
+  EXPECT_EQ(out["summary"]["intersections"], 2);
+  // Each entry is what `ssimarch trace` writes for the intersection, plus "complete".
+  const CliRun t = ssimarch::testing::run_cli("trace " + kExamples + "viviani.json -q");
+  ASSERT_EQ(t.status, 0) << t.err;
+  json traced = without_times(json::parse(t.out))["intersections"];
+  for (json& i : traced) i["complete"] = true;
+  EXPECT_EQ(without_times(out["jobs"][0]["intersections"]), traced);
   EXPECT_THAT(r.err, HasSubstr("0 units"));
   const std::string empty = write_file("empty.json", R"({"jobs": []})");
   const CliRun e = run_mpi(2, "batch " + empty);
