@@ -104,6 +104,10 @@ CliRun run_mpi(int ranks, const std::string& args) {
                           SSIMARCH_CLI + " " + args + " 2>" + err.string();
   CliRun r;
   FILE* p = popen(cmd.c_str(), "r");
+  if (!p) {
+    ADD_FAILURE() << "cannot run " << cmd;
+    return r;
+  }
   char buf[4096];
   for (std::size_t n; (n = fread(buf, 1, sizeof buf, p)) > 0;) r.out.append(buf, n);
   const int s = pclose(p);
