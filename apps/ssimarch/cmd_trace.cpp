@@ -6,6 +6,7 @@
 #include "commands.hpp"
 #include "run_budget.hpp"
 #include "run_progress.hpp"
+#include "ssimarch/core/thread_pool.hpp"
 #include "ssimarch/io/scene.hpp"
 #include "ssimarch/pipeline/trace_job.hpp"
 #include "trace_output.hpp"
@@ -21,6 +22,7 @@ struct TraceArgs {
   std::vector<std::string> only;
   bool quiet = false;
   bool list_options = false;
+  unsigned threads = 0;
   // One flag per row of the option table; values stay text until the scene's constants are known.
   std::vector<std::pair<const TraceOptionSpec*, CLI::Option*>> option_flags;
   std::vector<std::string> option_values;
@@ -41,6 +43,7 @@ void run_trace(const TraceArgs& a) {
     return;
   }
   if (a.scene.empty()) throw CliError("trace: a scene file is required (ssimarch trace SCENE.json; --help)");
+  if (a.threads > 0) set_thread_count(a.threads);
   const Scene scene = load_scene(a.scene, input_limits());
   OutputFormat f = a.format.empty() ? (a.output == "-" ? OutputFormat::kJson : format_from_path(a.output)) : parse_format(a.format);
   TraceRequest request = request_of(a);
@@ -97,6 +100,9 @@ void add_trace_command(CLI::App& app) {
   cmd->add_option("--format", args->format, "json | csv | obj | svg | step | vtp | vtp-ascii (default: from the output file's extension, .vtp/.vtm: vtp; else json)");
   cmd->add_option("--intersection", args->only, "Trace only the intersection(s) with this name (repeatable)");
   add_option_flags(cmd, args.get());
+  cmd->add_option("--threads", args->threads,
+                  "Threads for the intersections and the start-point search (default: every core; the result does "
+                  "not depend on it)");
   cmd->add_flag("-q,--quiet", args->quiet, "No summary and no progress on stderr");
   add_progress_option(cmd);
   cmd->add_flag("--list-options", args->list_options,

@@ -1,11 +1,13 @@
 #include "ssimarch/pipeline/trace_job.hpp"
 
 #include <algorithm>
+#include <atomic>
 
 #include "ssimarch/analytic/closed_form.hpp"
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/core/interrupt.hpp"
 #include "ssimarch/core/progress.hpp"
+#include "ssimarch/core/thread_pool.hpp"
 #include "ssimarch/geometry/intersection_geometry.hpp"
 #include "ssimarch/march/model_size.hpp"
 #include "ssimarch/pipeline/branch_geometry.hpp"
@@ -14,17 +16,15 @@
 
 namespace ssimarch {
 
-bool TraceJobResult::complete() const {
-  return std::none_of(runs.begin(), runs.end(),
-                      [](const IntersectionRun& r) {
-                        // No curve is a result when the start-point search proved there is none
-                        // (issue 11 item 6); otherwise an empty trace is incomplete.
-                        // Coincident surfaces are never "proven empty": they share a region.
-                        const bool proven_empty = r.result.curves.empty() && r.result.start_search.certified &&
-                                                  !r.coincidence;
-                        return (r.result.curves.empty() && !proven_empty) || r.result.failed_starts > 0 || !r.network.complete();
-                      });
+bool run_complete(const IntersectionRun& r) {
+  // No curve is a result when the start-point search proved there is none (issue 11 item 6);
+  // otherwise an empty trace is incomplete. Coincident surfaces are never "proven empty": they
+  // share a region.
+  const bool proven_empty = r.result.curves.empty() && r.result.start_search.certified && !r.coincidence;
+  return !((r.result.curves.empty() && !proven_empty) || r.result.failed_starts > 0 || !r.network.complete());
 }
+
+bool TraceJobResult::complete() const { return std::all_of(runs.begin(), runs.end(), run_complete); }
 
 std::vector<IntersectionSpec> select_intersections(const Scene& scene, const TraceRequest& request) {
   for (const std::string& name : request.only)
@@ -68,7 +68,9 @@ void find_curves(const IntersectionSpec& spec, IntersectionRun* run_ptr) {
 void report_coincidence(const IntersectionSpec& spec, IntersectionRun* run_ptr) {
   IntersectionRun& run = *run_ptr;
   // A closed form answers only distinct surfaces (closed_form.hpp: coincident ones are traced).
-  if (!run.result.curves.empty() || run.result.start_search.method == "closed-form") return;
+  // Surfaces in disjoint boxes share no region (and the tracer said so without work): skipping the
+  // sampling here makes the empty pairs of a model's all-pairs batch cheap (issue 17).
+  if (!run.result.curves.empty() || run.result.start_search.method == "closed-form" || run.problem.disjoint()) return;
   // Coincident surfaces share a region, not a curve: say so rather than report "0 curves". The
   // distance test allows for the corrector's tolerance and the rounding of the model's size.
   const double tolerance = std::max(1e3 * spec.options.trace.tolerance, 1e-12 * run.problem.scale());
@@ -143,15 +145,23 @@ std::optional<CurveSpline> spline_of_curve(const Problem& problem, const TracedC
 }
 
 TraceJobResult trace_scene(const Scene& scene, const TraceRequest& request) {
-  TraceJobResult job;
+  // The intersections are independent (each its own Problem; surfaces and compiled programs are
+  // read-only, docs/expressions.md): traced in parallel on the shared pool, kept in scene order.
   const std::vector<IntersectionSpec> specs = select_intersections(scene, request);
-  for (std::size_t i = 0; i < specs.size(); ++i) {
+  std::vector<std::optional<IntersectionRun>> runs(specs.size());
+  std::atomic<std::size_t> finished{0};
+  const double total = static_cast<double>(specs.size());
+  parallel_for(specs.size(), [&](std::size_t i) {
     throw_if_interrupted();  // Ctrl-C between intersections (core/interrupt.hpp)
-    // Shown only for several intersections: one intersection's own stages report themselves.
-    if (specs.size() > 1) report_progress("trace", static_cast<double>(i), static_cast<double>(specs.size()));
-    job.runs.push_back(run_intersection(scene, specs[i]));
-  }
-  if (specs.size() > 1) report_progress("trace", static_cast<double>(specs.size()), static_cast<double>(specs.size()));
+    runs[i].emplace(run_intersection(scene, specs[i]));
+    // Shown only for several intersections (one intersection's own stages report themselves). The
+    // meter is the calling thread's (core/progress.hpp): it reports the count finished so far each
+    // time it finishes one of its own; the pool's workers only count.
+    const double done = static_cast<double>(++finished);
+    if (specs.size() > 1) report_progress("trace", done, total);
+  });
+  TraceJobResult job;
+  for (std::optional<IntersectionRun>& r : runs) job.runs.push_back(std::move(*r));
   return job;
 }
 

@@ -11,14 +11,12 @@
 #include <vector>
 
 #include "ssimarch/core/interrupt.hpp"
+#include "ssimarch/core/thread_pool.hpp"
 
 namespace ssimarch::internal {
 
-inline unsigned worker_count(unsigned requested) {
-  if (requested > 0) return requested;
-  const unsigned h = std::thread::hardware_concurrency();
-  return h == 0 ? 1 : h;
-}
+// 0: the library's thread count (core/thread_pool.hpp: `--threads`, every core by default).
+inline unsigned worker_count(unsigned requested) { return requested > 0 ? requested : thread_count(); }
 
 /// Runs body(chunk) for chunk = 0..chunks-1 on `threads` workers; `progress(fraction)` is called on the
 /// calling thread while waiting. Exceptions from workers are rethrown; one from `progress` stops the

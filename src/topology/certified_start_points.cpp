@@ -6,6 +6,8 @@
 #include <cstdio>
 
 #include "ssimarch/core/progress.hpp"
+#include "ssimarch/core/thread_pool.hpp"
+
 #include "ssimarch/problem/gauss_newton.hpp"
 #include "ssimarch/problem/singular_tolerances.hpp"
 #include "ssimarch/topology/krawczyk.hpp"
@@ -316,23 +318,31 @@ std::vector<VecX> certified_start_points(const Tracer& tracer, TraceStats* stats
   RootSearchOptions ro;
   ro.max_boxes = tracer.options().start_box_budget;
   Collector out{tracer, stats, search, {}};
-  bool boundary_decided = true;
-  // Progress by systems solved: the boundary ones, then at most one turning system per unknown.
+  // The root searches of the boundary systems and of the first turning system are independent
+  // (read-only Problem): run on the shared pool, then taken in the serial order, so the start
+  // points are the serial run's.
   const std::vector<System> boundary = boundary_systems(P);
+  std::vector<System> first{turning_system(P, 0)};
+  std::vector<RootSearchResult> found(boundary.size() + 1);
+  parallel_for(found.size(), [&](std::size_t i) {
+    const System& s = i < boundary.size() ? boundary[i] : first[0];
+    found[i] = find_all_roots(s.equations, s.box, ro);
+  });
+  bool boundary_decided = true;
+  // Progress by systems taken: the boundary ones (solved together above), then at most one turning
+  // system per unknown.
   const double systems = static_cast<double>(boundary.size()) + P.dim();
-  double solved = 0;
-  for (const System& s : boundary) {
-    report_progress("start points", solved++, systems);
-    boundary_decided = out.take(s, find_all_roots(s.equations, s.box, ro), true) && boundary_decided;
-  }
+  double solved = static_cast<double>(boundary.size());
+  report_progress("start points", solved, systems);
+  for (std::size_t i = 0; i < boundary.size(); ++i) boundary_decided = out.take(boundary[i], found[i], true) && boundary_decided;
   // One turning system decided everywhere suffices for the loops; the others' roots still help.
   bool loops_decided = false;
   long saddle_boxes = 0;
   std::vector<std::pair<System, RootSearchResult>> undecided_turning;
   for (int k = 0; k < P.dim() && !loops_decided; ++k) {
     report_progress("start points", solved++, systems);
-    System s = turning_system(P, k);
-    RootSearchResult r = find_all_roots(s.equations, s.box, ro);
+    System s = k == 0 ? std::move(first[0]) : turning_system(P, k);
+    RootSearchResult r = k == 0 ? std::move(found.back()) : find_all_roots(s.equations, s.box, ro);
     loops_decided = out.take(s, r, false) || decide_by_saddle_boxes(s, r, ro, &out, &saddle_boxes);
     if (loops_decided) break;
     const bool budget_spent = std::any_of(r.undecided.begin(), r.undecided.end(), [](const UndecidedBox& u) { return u.budget; });

@@ -57,6 +57,9 @@ struct TraceJobResult {
   bool complete() const;
 };
 
+/// One run by the rule of TraceJobResult::complete.
+bool run_complete(const IntersectionRun& run);
+
 /// The intersections the request selects, with the overrides applied and every option checked,
 /// before anything is traced. Throws InputError for an unknown name in `only`, a bad override
 /// (where = its `where`), or a scene with nothing to trace.
