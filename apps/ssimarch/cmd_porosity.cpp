@@ -9,6 +9,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -18,6 +19,9 @@
 #include "ssimarch/io/output_files.hpp"
 #include "ssimarch/io/profile_plot.hpp"
 #include "ssimarch/pipeline/porosity_job.hpp"
+#ifdef SSIMARCH_WITH_MPI
+#include "ssimarch/porosity_mpi/mpi_communicator.hpp"
+#endif
 
 namespace ssimarch::cli {
 
@@ -252,8 +256,32 @@ std::string overlap_message(const PorosityJobResult& r) {
   return m.str();
 }
 
+void write_outputs(const PorosityArgs& a, const PorosityJobResult& r);
+
+// Under mpirun (an SSIMARCH_MPI build): every rank computes its share and gets the whole result;
+// rank 0 alone writes files, warnings and the progress bar (docs/scaling.md).
 void run(const PorosityArgs& a) {
-  const PorosityJobResult r = run_job(make_job(a));
+  PorosityJob job = make_job(a);
+#ifdef SSIMARCH_WITH_MPI
+  std::optional<MpiCommunicator> mpi;
+  if (launched_by_mpirun()) {
+    mpi.emplace(nullptr, nullptr);
+    job.options.communicator = &*mpi;
+    if (mpi->rank() != 0) job.progress = nullptr;
+  }
+  const bool writer = !mpi || mpi->rank() == 0;
+#else
+  const bool writer = true;
+#endif
+  if (writer) return write_outputs(a, run_job(job));
+  try {
+    run_job(job);  // the overlap search and --strict are rank 0's
+  } catch (const CliError& e) {
+    throw CliError("", e.exit_code());  // the same error as rank 0's: said once, by rank 0
+  }
+}
+
+void write_outputs(const PorosityArgs& a, const PorosityJobResult& r) {
   if (r.overlaps.pairs > 0) {
     if (a.strict) throw CliError("--strict: " + overlap_message(r) + "; no output was written", 1);
     std::cerr << "ssimarch: warning: " << overlap_message(r) << "\n";
