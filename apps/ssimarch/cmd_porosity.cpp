@@ -276,8 +276,9 @@ void run(const PorosityArgs& a) {
   if (writer) return write_outputs(a, run_job(job));
   try {
     run_job(job);  // the overlap search and --strict are rank 0's
-  } catch (const CliError& e) {
-    throw CliError("", e.exit_code());  // the same error as rank 0's: said once, by rank 0
+  } catch (const CliError&) {
+    // Every rank has the same error (the shares agree on it): rank 0 reports it and sets the exit
+    // status. A quiet non-zero exit here would make mpirun kill rank 0 before it prints.
   }
 }
 

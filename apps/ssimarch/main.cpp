@@ -27,8 +27,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;
   } catch (const ssimarch::cli::CliError& e) {
-    // An empty message: another process (MPI rank 0) reports this error.
-    if (*e.what()) std::cerr << "ssimarch: error: " << e.what() << "\n";
+    std::cerr << "ssimarch: error: " << e.what() << "\n";
     return e.exit_code();
   } catch (const ssimarch::InputError& e) {
     std::cerr << "ssimarch: error: " << e.what() << "\n";
