@@ -7,6 +7,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -18,6 +19,9 @@
 #include "ssimarch/io/porosity_vtk.hpp"
 #include "ssimarch/io/profile_plot.hpp"
 #include "ssimarch/pipeline/porosity_job.hpp"
+#ifdef SSIMARCH_WITH_MPI
+#include "ssimarch/porosity_mpi/mpi_communicator.hpp"
+#endif
 
 namespace ssimarch::cli {
 
@@ -299,12 +303,39 @@ std::string overlap_message(const PorosityJobResult& r) {
   return m.str();
 }
 
+void write_outputs(const PorosityArgs& a, const PorosityJobResult& r);
+
+// Under mpirun (an SSIMARCH_MPI build): every rank computes its share and gets the whole result;
+// rank 0 alone writes files, warnings and the progress bar (docs/scaling.md).
 void run(const PorosityArgs& a) {
-  RunProgress progress(a.quiet);
   PorosityJob job = make_job(a);
+#ifdef SSIMARCH_WITH_MPI
+  std::optional<MpiCommunicator> mpi;
+  if (launched_by_mpirun()) {
+    mpi.emplace(nullptr, nullptr);
+    job.options.communicator = &*mpi;
+  }
+  const bool writer = !mpi || mpi->rank() == 0;
+#else
+  const bool writer = true;
+#endif
+  if (!writer) {
+    try {
+      run_job(job);  // the overlap search and --strict are rank 0's
+    } catch (const CliError&) {
+      // Every rank has the same error (the shares agree on it): rank 0 reports it and sets the exit
+      // status. A quiet non-zero exit here would make mpirun kill rank 0 before it prints.
+    }
+    return;
+  }
+  RunProgress progress(a.quiet);
   job.progress = progress.meter().fraction_callback();
   const PorosityJobResult r = run_job(job);
   progress.meter().close();
+  write_outputs(a, r);
+}
+
+void write_outputs(const PorosityArgs& a, const PorosityJobResult& r) {
   if (r.overlaps.pairs > 0) {
     if (a.strict) throw CliError("--strict: " + overlap_message(r) + "; no output was written", 1);
     std::cerr << "ssimarch: warning: " << overlap_message(r) << "\n";

@@ -51,10 +51,11 @@ void require_length_scale(double v, const std::string& where, const char* what) 
                                                    "precision; rescale the packing");
 }
 
-void require_packing_scale(std::span<const Particle> ps, const std::string& source) {
+// `first`: the index of ps[0] in the whole packing (a process's share).
+void require_packing_scale(std::span<const Particle> ps, const std::string& source, long first = 0) {
   for (std::size_t i = 0; i < ps.size(); ++i) {
     const Particle& p = ps[i];
-    const std::string where = source + ": particle " + std::to_string(i + 1);
+    const std::string where = source + ": particle " + std::to_string(static_cast<long>(i) + first + 1);
     require_length_scale(p.diameter, where, "diameter");
     require_length_scale(p.length, where, "length");
     for (int k = 0; k < 3; ++k) require_length_scale(p.centre[k], where, "centre coordinate");
@@ -141,22 +142,71 @@ void validate(const PorosityJob& job) {
   }
 }
 
-PorosityJobResult run_porosity_job(const PorosityJob& job) {
-  validate(job);
-  PorosityJobResult out;
-  Packing read;
-  const std::span<const Particle> ps = packing_of(job, read, &out.spherocylinders);
-  out.particles = static_cast<long>(ps.size());
-  require_packing_scale(ps, job.packing.empty() ? job.packing_file.string() : "packing");
-  if (job.find_overlaps) out.overlaps = find_overlaps(ps);
-  out.container.radius = job.container_radius;
-  out.container.slab = job.height_range ? *job.height_range : vertical_extent(ps);
+namespace {
 
+void run_stages(const PorosityJob& job, std::span<const Particle> ps, PorosityJobResult& out) {
   const auto t0 = Clock::now();
   out.bulk = bulk_porosity(ps, out.container, stage_options(job, "bulk"));
   out.unconverged = out.bulk.stats.unconverged;
   out.timings.bulk = seconds_since(t0);
   run_radial_stages(job, ps, out);
+}
+
+// A packing file on several processes (MPI, docs/scaling.md): each reads and integrates its share
+// of the file; counts, the height range and the profiles are combined over the processes.
+PorosityJobResult run_shared_porosity_job(const PorosityJob& job, const ProfileCommunicator& comm) {
+  PorosityJobResult out;
+  const Packing share = read_packing_share(job.packing_file, job.input_limits, &comm);
+  const std::span<const Particle> ps = share.particles;
+  long count = static_cast<long>(ps.size());
+  const long first = comm.exclusive_prefix_sum(count);
+  comm.sum(std::span<long>(&count, 1));
+  out.particles = count;
+  out.spherocylinders = comm.any(share.spherocylinders);
+  if (count == 0) throw InputError(job.packing_file.string(), "no particles");
+  std::string problem;
+  try {
+    require_packing_scale(ps, job.packing_file.string(), first);
+  } catch (const InputError& e) {
+    problem = e.where() + '\x1f' + e.message();
+  }
+  if (problem = comm.first_error(problem); !problem.empty())
+    throw InputError(problem.substr(0, problem.find('\x1f')), problem.substr(problem.find('\x1f') + 1));
+  // The overlap search needs neighbours from every share: not done on several processes
+  // (docs/scaling.md); out.overlaps stays empty.
+  out.container.radius = job.container_radius;
+  if (job.height_range) {
+    out.container.slab = *job.height_range;
+  } else {
+    out.container.slab = vertical_extent(ps);
+    comm.min_max(out.container.slab.z_min, out.container.slab.z_max);
+  }
+  run_stages(job, ps, out);
+  return out;
+}
+
+}  // namespace
+
+PorosityJobResult run_porosity_job(const PorosityJob& job) {
+  validate(job);
+  const ProfileCommunicator* comm = job.options.communicator;
+  if (comm && comm->size() > 1 && job.packing.empty()) return run_shared_porosity_job(job, *comm);
+  PorosityJobResult out;
+  Packing read;
+  const std::span<const Particle> all = packing_of(job, read, &out.spherocylinders);
+  out.particles = static_cast<long>(all.size());
+  require_packing_scale(all, job.packing.empty() ? job.packing_file.string() : "packing");
+  // Particles in memory on several processes: each integrates its block, and the profile
+  // functions add the blocks' exact sums, so every process gets the single-process result.
+  std::span<const Particle> ps = all;
+  if (comm && comm->size() > 1) {
+    const std::size_t n = all.size(), k = static_cast<std::size_t>(comm->rank()), p = static_cast<std::size_t>(comm->size());
+    ps = all.subspan(n * k / p, n * (k + 1) / p - n * k / p);
+  }
+  if (job.find_overlaps && (!comm || comm->rank() == 0)) out.overlaps = find_overlaps(all);
+  out.container.radius = job.container_radius;
+  out.container.slab = job.height_range ? *job.height_range : vertical_extent(all);
+  run_stages(job, ps, out);
   return out;
 }
 

@@ -47,6 +47,13 @@ QuadResult lateral_area(const ParticleShape& s, double r, const BedSlab& slab, d
                                kKernelSamples);
   }
   const bool clip = slab.z_min > s.z_min() || slab.z_max < s.z_max();
+  if (s.particle().length == 0 && !clip) {
+    // A sphere the height range does not cut: closed form (docs/math/cylinder_in_sphere.md).
+    const Vec3& c = s.particle().centre;
+    out.value = cylinder_area_in_sphere(std::hypot(c.x(), c.y()), s.particle().radius(), r);
+    out.evaluations = 1;
+    return out;
+  }
   auto chord = [&](double th) {
     const Chord c = s.vertical_chord(r * std::cos(th), r * std::sin(th));
     if (c.empty()) return 0.0;

@@ -3,6 +3,8 @@
 #include "ssimarch/porosity/profile.hpp"
 
 #include <algorithm>
+#include <cstdint>
+#include <limits>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -34,69 +36,100 @@ void check_container(const Container& c) {
                                            number(c.slab.z_min) + ", " + number(c.slab.z_max) + "])");
 }
 
+// The particles that overlap the container, as indices (4 bytes each: the shapes are rebuilt where
+// they are used, which costs less than holding them), and how many stick out of it.
 struct Prepared {
-  std::vector<ParticleShape> shapes;
+  std::span<const Particle> particles;
+  std::vector<std::uint32_t> used;
   long clipped = 0;
+  std::size_t size() const { return used.size(); }
+  ParticleShape shape(std::size_t k) const { return ParticleShape(particles[used[k]]); }
 };
 
-// Shapes of the particles that overlap the container; counts those sticking out of it.
 Prepared prepare(std::span<const Particle> ps, const Container& c) {
+  if (ps.size() > std::numeric_limits<std::uint32_t>::max())
+    throw InputError("packing", "more than 2^32 particles in one process: run it on more MPI ranks");
   Prepared out;
-  out.shapes.reserve(ps.size());
-  for (const Particle& p : ps) {
-    ParticleShape s(p);
+  out.particles = ps;
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    const ParticleShape s(ps[i]);
     if (s.rho_min() >= c.radius || s.z_max() <= c.slab.z_min || s.z_min() >= c.slab.z_max) continue;
     if (s.rho_max() > c.radius || s.z_min() < c.slab.z_min || s.z_max() > c.slab.z_max) ++out.clipped;
-    out.shapes.push_back(std::move(s));
+    out.used.push_back(static_cast<std::uint32_t>(i));
   }
   return out;
 }
 
-struct ChunkResult {
-  std::vector<double> sum, err;
-  long evals = 0, unconverged = 0;
-};
+// Sums over this process's particles, with the quantum of each value's FixedPointSum set from its
+// norm (the value a full container would reach).
+ProfileSums empty_sums(std::span<const double> norm) {
+  ProfileSums z;
+  for (double n : norm) {
+    z.solid.emplace_back(n);
+    z.error.emplace_back(n);
+  }
+  return z;
+}
 
-// Runs per-particle work over fixed chunks and reduces in chunk order (thread-count independent).
+// Runs per-particle work over fixed chunks, adds the chunks' exact sums, then those of the other
+// processes (opt.communicator): the result does not depend on threads or ranks.
 template <class F>
-std::vector<ChunkResult> run_chunks(const std::vector<ParticleShape>& shapes, std::size_t nvalues,
-                                    const ProfileOptions& opt, F&& per_particle) {
-  const int n = static_cast<int>(shapes.size());
-  // Each chunk holds its own accumulators: cap their memory at about 32 MB for large maps.
-  const int mem_cap = static_cast<int>(std::max<std::size_t>(8, 2'000'000 / std::max<std::size_t>(1, nvalues)));
+ProfileSums run_chunks(const Prepared& prep, std::span<const double> norm, const ProfileOptions& opt,
+                       F&& per_particle) {
+  const int n = static_cast<int>(prep.size());
+  const std::size_t nvalues = norm.size();
+  // Each chunk holds its own accumulators: cap their memory at about 64 MB for large maps.
+  const int mem_cap = static_cast<int>(std::max<std::size_t>(8, 500'000 / std::max<std::size_t>(1, nvalues)));
   const int chunks = std::max(1, std::min({kMaxChunks, n, mem_cap}));
-  std::vector<ChunkResult> res(chunks);
+  std::vector<ProfileSums> res(chunks);
   internal::parallel_chunks(
       chunks, opt.threads,
       [&](int k) {
-        ChunkResult& cr = res[k];
-        cr.sum.assign(nvalues, 0.0);
-        cr.err.assign(nvalues, 0.0);
+        ProfileSums& cr = res[k];
+        cr = empty_sums(norm);
         const int b = static_cast<int>(static_cast<long>(n) * k / chunks);
         const int e = static_cast<int>(static_cast<long>(n) * (k + 1) / chunks);
         // Ctrl-C: the rest of the chunk is skipped; parallel_chunks throws Interrupted.
-        for (int i = b; i < e && !interrupt_requested(); ++i) per_particle(shapes[i], cr);
+        for (int i = b; i < e && !interrupt_requested(); ++i) per_particle(prep.shape(i), cr);
       },
       opt.progress);
-  return res;
+  ProfileSums total = empty_sums(norm);
+  for (const auto& cr : res) total += cr;
+  total.particles_used = static_cast<long>(prep.size());
+  total.particles_clipped = prep.clipped;
+  if (opt.communicator) opt.communicator->sum(total);
+  return total;
 }
 
-void reduce(const std::vector<ChunkResult>& res, std::vector<double>& sum, std::vector<double>& err,
-            ProfileStats& st) {
-  for (const auto& cr : res) {
-    for (std::size_t j = 0; j < sum.size(); ++j) {
-      sum[j] += cr.sum[j];
-      err[j] += cr.err[j];
-    }
-    st.evaluations += cr.evals;
-    st.unconverged += cr.unconverged;
+// Porosities 1 - solid/norm and the statistics of the summed profile.
+void finish(const ProfileSums& sums, std::span<const double> norm, std::vector<double>& porosity, ProfileStats& st) {
+  porosity.resize(norm.size());
+  for (std::size_t j = 0; j < norm.size(); ++j) {
+    porosity[j] = 1 - sums.solid[j].value() / norm[j];
+    st.max_error = std::max(st.max_error, sums.error[j].value() / norm[j]);
   }
+  st.evaluations = sums.evaluations;
+  st.unconverged = sums.unconverged;
+  st.particles_used = sums.particles_used;
+  st.particles_clipped = sums.particles_clipped;
 }
 
-void account(ChunkResult& cr, std::size_t j, const QuadResult& q) {
-  cr.sum[j] += q.value;
-  cr.err[j] += q.error;
-  cr.evals += q.evaluations;
+// Particles touching each value, over all processes (the accuracy budget is split among them).
+template <class Range>
+std::vector<long> touching(const Prepared& prep, std::size_t m, const ProfileOptions& opt, Range&& range_of) {
+  std::vector<long> count(m, 0);
+  for (std::size_t k = 0; k < prep.size(); ++k) {
+    const auto [b, e] = range_of(prep.shape(k));
+    for (std::size_t j = b; j < e; ++j) ++count[j];
+  }
+  if (opt.communicator) opt.communicator->sum(count);
+  return count;
+}
+
+void account(ProfileSums& cr, std::size_t j, const QuadResult& q) {
+  cr.solid[j].add(q.value);
+  cr.error[j].add(q.error);
+  cr.evaluations += q.evaluations;
   if (q.status != QuadStatus::kConverged) ++cr.unconverged;
 }
 
@@ -148,7 +181,7 @@ std::vector<double> slice_centres(double z0, double z1, int n) {
 }
 
 PorosityProfile radial_profile(std::span<const Particle> particles, const Container& c, std::span<const double> radii,
-                       const ProfileOptions& opt) {
+                               const ProfileOptions& opt) {
   check_container(c);
   require_sorted(radii, "radii");
   for (double r : radii)
@@ -156,44 +189,33 @@ PorosityProfile radial_profile(std::span<const Particle> particles, const Contai
       throw InputError("radii", "must lie in (0, R] = (0, " + number(c.radius) + "] (got " + number(r) + ")");
   const Prepared prep = prepare(particles, c);
   const std::size_t m = radii.size();
-  // Particles touching each radius, to split the accuracy budget.
-  std::vector<long> count(m, 0);
-  for (const auto& s : prep.shapes) {
-    const auto [b, e] = index_range(radii, s.rho_min(), s.rho_max());
-    for (std::size_t j = b; j < e; ++j) ++count[j];
+  // Work proportional to the radii a particle touches: [rho_min, rho_max] located by bisection.
+  auto range_of = [&](const ParticleShape& s) { return index_range(radii, s.rho_min(), s.rho_max()); };
+  const std::vector<long> count = touching(prep, m, opt, range_of);
+  std::vector<double> norm(m), budget(m);
+  for (std::size_t j = 0; j < m; ++j) {
+    norm[j] = 2 * kPi * radii[j] * c.height();
+    budget[j] = 0.5 * opt.tolerance * norm[j] / std::max(1L, count[j]);
   }
-  std::vector<double> budget(m);
-  for (std::size_t j = 0; j < m; ++j)
-    budget[j] = 0.5 * opt.tolerance * 2 * kPi * radii[j] * c.height() / std::max(1L, count[j]);
-  auto res = run_chunks(prep.shapes, m, opt, [&](const ParticleShape& s, ChunkResult& cr) {
-    const auto [b, e] = index_range(radii, s.rho_min(), s.rho_max());
+  const ProfileSums sums = run_chunks(prep, norm, opt, [&](const ParticleShape& s, ProfileSums& cr) {
+    const auto [b, e] = range_of(s);
     for (std::size_t j = b; j < e; ++j)
       account(cr, j, lateral_area(s, radii[j], c.slab, budget[j], opt.method, opt.kernel));
   });
   PorosityProfile out;
   out.x.assign(radii.begin(), radii.end());
-  std::vector<double> sum(m, 0.0), err(m, 0.0);
-  reduce(res, sum, err, out.stats);
-  out.porosity.resize(m);
-  for (std::size_t j = 0; j < m; ++j) {
-    const double norm = 2 * kPi * radii[j] * c.height();
-    out.porosity[j] = 1 - sum[j] / norm;
-    out.stats.max_error = std::max(out.stats.max_error, err[j] / norm);
-  }
-  out.stats.particles_used = static_cast<long>(prep.shapes.size());
-  out.stats.particles_clipped = prep.clipped;
+  finish(sums, norm, out.porosity, out.stats);
   return out;
 }
 
 PorosityProfile bin_profile(std::span<const Particle> particles, const Container& c, std::span<const double> edges,
-                    const ProfileOptions& opt) {
+                            const ProfileOptions& opt) {
   check_container(c);
   require_sorted(edges, "bin edges");
   if (edges.size() < 2 || edges.front() < 0 || edges.back() > c.radius)
     throw InputError("bin edges", "need at least two values within [0, R] = [0, " + number(c.radius) + "]");
   const Prepared prep = prepare(particles, c);
   const std::size_t m = edges.size() - 1;
-  std::vector<long> count(m, 0);
   auto bins_of = [&](const ParticleShape& s) {
     // Bins k with [edges[k], edges[k+1]] overlapping [rho_min, rho_max].
     const auto ub = std::upper_bound(edges.begin(), edges.end(), s.rho_min());
@@ -202,26 +224,23 @@ PorosityProfile bin_profile(std::span<const Particle> particles, const Container
     const std::size_t e = std::min(m, static_cast<std::size_t>(lb - edges.begin()));
     return std::pair{b, std::max(b, e)};
   };
-  for (const auto& s : prep.shapes) {
-    const auto [b, e] = bins_of(s);
-    for (std::size_t k = b; k < e; ++k) ++count[k];
-  }
+  const std::vector<long> count = touching(prep, m, opt, bins_of);
   std::vector<double> norm(m), budget(m);
   for (std::size_t k = 0; k < m; ++k) {
     norm[k] = kPi * (edges[k + 1] * edges[k + 1] - edges[k] * edges[k]) * c.height();
     budget[k] = 0.5 * opt.tolerance * norm[k] / std::max(1L, count[k]);
   }
-  auto res = run_chunks(prep.shapes, m, opt, [&](const ParticleShape& s, ChunkResult& cr) {
+  const ProfileSums sums = run_chunks(prep, norm, opt, [&](const ParticleShape& s, ProfileSums& cr) {
     const auto [b, e] = bins_of(s);
     const bool in_slab = s.z_min() >= c.slab.z_min && s.z_max() <= c.slab.z_max;
     for (std::size_t k = b; k < e; ++k) {
       const bool in_annulus = s.rho_min() >= edges[k] && s.rho_max() <= edges[k + 1];
       if (in_annulus && in_slab) {
-        cr.sum[k] += s.particle().volume();  // whole particle inside this annulus: closed form
+        cr.solid[k].add(s.particle().volume());  // whole particle inside this annulus: closed form
         continue;
       }
       if (in_annulus && s.particle().length == 0) {
-        cr.sum[k] += sphere_slab_volume(s.particle(), c.slab);  // sphere cut by the planes: caps
+        cr.solid[k].add(sphere_slab_volume(s.particle(), c.slab));  // sphere cut by the planes: caps
         continue;
       }
       account(cr, k, shell_volume(s, edges[k], edges[k + 1], c.slab, budget[k], opt.method, opt.kernel));
@@ -230,15 +249,7 @@ PorosityProfile bin_profile(std::span<const Particle> particles, const Container
   PorosityProfile out;
   out.x.assign(edges.begin(), edges.end() - 1);
   out.x_upper.assign(edges.begin() + 1, edges.end());
-  std::vector<double> sum(m, 0.0), err(m, 0.0);
-  reduce(res, sum, err, out.stats);
-  out.porosity.resize(m);
-  for (std::size_t k = 0; k < m; ++k) {
-    out.porosity[k] = 1 - sum[k] / norm[k];
-    out.stats.max_error = std::max(out.stats.max_error, err[k] / norm[k]);
-  }
-  out.stats.particles_used = static_cast<long>(prep.shapes.size());
-  out.stats.particles_clipped = prep.clipped;
+  finish(sums, norm, out.porosity, out.stats);
   return out;
 }
 
@@ -253,34 +264,24 @@ BulkPorosity bulk_porosity(std::span<const Particle> particles, const Container&
 }
 
 PorosityProfile axial_profile(std::span<const Particle> particles, const Container& c, std::span<const double> heights,
-                      const ProfileOptions& opt) {
+                              const ProfileOptions& opt) {
   check_container(c);
   require_sorted(heights, "heights");
   const Prepared prep = prepare(particles, c);
   const std::size_t m = heights.size();
-  std::vector<long> count(m, 0);
-  for (const auto& s : prep.shapes) {
-    const auto [b, e] = index_range(heights, s.z_min(), s.z_max());
-    for (std::size_t j = b; j < e; ++j) ++count[j];
-  }
+  auto range_of = [&](const ParticleShape& s) { return index_range(heights, s.z_min(), s.z_max()); };
+  const std::vector<long> count = touching(prep, m, opt, range_of);
   const double area = kPi * c.radius * c.radius;
-  std::vector<double> budget(m);
+  std::vector<double> norm(m, area), budget(m);
   for (std::size_t j = 0; j < m; ++j) budget[j] = 0.5 * opt.tolerance * area / std::max(1L, count[j]);
-  auto res = run_chunks(prep.shapes, m, opt, [&](const ParticleShape& s, ChunkResult& cr) {
-    const auto [b, e] = index_range(heights, s.z_min(), s.z_max());
-    for (std::size_t j = b; j < e; ++j) account(cr, j, slice_area(s, heights[j], c.radius, budget[j], opt.kernel, opt.method));
+  const ProfileSums sums = run_chunks(prep, norm, opt, [&](const ParticleShape& s, ProfileSums& cr) {
+    const auto [b, e] = range_of(s);
+    for (std::size_t j = b; j < e; ++j)
+      account(cr, j, slice_area(s, heights[j], c.radius, budget[j], opt.kernel, opt.method));
   });
   PorosityProfile out;
   out.x.assign(heights.begin(), heights.end());
-  std::vector<double> sum(m, 0.0), err(m, 0.0);
-  reduce(res, sum, err, out.stats);
-  out.porosity.resize(m);
-  for (std::size_t j = 0; j < m; ++j) {
-    out.porosity[j] = 1 - sum[j] / area;
-    out.stats.max_error = std::max(out.stats.max_error, err[j] / area);
-  }
-  out.stats.particles_used = static_cast<long>(prep.shapes.size());
-  out.stats.particles_clipped = prep.clipped;
+  finish(sums, norm, out.porosity, out.stats);
   return out;
 }
 
@@ -293,26 +294,22 @@ PorosityMap porosity_map(std::span<const Particle> particles, const Container& c
     if (!(r > 0)) throw InputError("map radii", "must be > 0 (got " + number(r) + ")");
   const Prepared prep = prepare(particles, c);
   const std::size_t nr = radii.size(), nz = heights.size();
-  PorosityMap out;
-  out.r.assign(radii.begin(), radii.end());
-  out.z.assign(heights.begin(), heights.end());
-  auto res = run_chunks(prep.shapes, nr * nz, opt, [&](const ParticleShape& s, ChunkResult& cr) {
+  std::vector<double> norm(nr * nz);
+  for (std::size_t iz = 0; iz < nz; ++iz)
+    for (std::size_t ir = 0; ir < nr; ++ir) norm[iz * nr + ir] = 2 * kPi * radii[ir];
+  const ProfileSums sums = run_chunks(prep, norm, opt, [&](const ParticleShape& s, ProfileSums& cr) {
     const auto [zb, ze] = index_range(heights, s.z_min(), s.z_max());
     const auto [rb, re] = index_range(radii, s.rho_min(), s.rho_max());
     for (std::size_t iz = zb; iz < ze; ++iz)
       for (std::size_t ir = rb; ir < re; ++ir) {
-        cr.sum[iz * nr + ir] += arc_length(s.particle(), heights[iz], radii[ir], opt.kernel);
-        ++cr.evals;
+        cr.solid[iz * nr + ir].add(arc_length(s.particle(), heights[iz], radii[ir], opt.kernel));
+        ++cr.evaluations;
       }
   });
-  std::vector<double> sum(nr * nz, 0.0), err(nr * nz, 0.0);
-  reduce(res, sum, err, out.stats);
-  out.porosity.resize(nr * nz);
-  for (std::size_t iz = 0; iz < nz; ++iz)
-    for (std::size_t ir = 0; ir < nr; ++ir)
-      out.porosity[iz * nr + ir] = 1 - sum[iz * nr + ir] / (2 * kPi * radii[ir]);
-  out.stats.particles_used = static_cast<long>(prep.shapes.size());
-  out.stats.particles_clipped = prep.clipped;
+  PorosityMap out;
+  out.r.assign(radii.begin(), radii.end());
+  out.z.assign(heights.begin(), heights.end());
+  finish(sums, norm, out.porosity, out.stats);
   return out;
 }
 

@@ -5,6 +5,9 @@
 #include <cmath>
 #include <numbers>
 
+#include <boost/math/special_functions/ellint_rd.hpp>
+#include <boost/math/special_functions/ellint_rg.hpp>
+
 namespace ssimarch {
 
 double circle_sphere_arc(const Vec3& c, double diameter, double z, double r) {
@@ -19,6 +22,28 @@ double circle_sphere_arc(const Vec3& c, double diameter, double z, double r) {
   if (cosa >= 1) return 0.0;
   if (cosa <= -1) return 2 * pi * r;
   return 2 * r * std::acos(cosa);
+}
+
+double cylinder_area_in_sphere(double rho, double a, double r) {
+  // L = r * integral of the chord 2 sqrt(A + B cos t) over the angles t where it is real, with
+  // A = a^2 - r^2 - rho^2, B = 2 r rho; t = 2 phi turns it into a Legendre integral of modulus
+  // m = 2B / (A + B) (docs/math/cylinder_in_sphere.md, eqs. 3-6).
+  const double pi = std::numbers::pi;
+  if (!(r > 0) || !(a > 0)) return 0.0;
+  const double s = (a - r + rho) * (a + r - rho);  // A + B = a^2 - (r - rho)^2, factored: no cancellation
+  if (!(s > 0)) return 0.0;
+  if (rho == 0) return 4 * pi * r * std::sqrt(s);  // the chord 2 sqrt(a^2 - r^2) all around
+  const double twoB = 4 * r * rho;
+  const double excess = (r + rho - a) * (r + rho + a);  // B - A: > 0 when the circle leaves the shadow
+  if (excess <= 0) {
+    // Whole circle inside the shadow (m <= 1): L = 8 r sqrt(s) E(m), E(m) = 2 R_G(0, 1 - m, 1).
+    const double mc = -excess / s;  // 1 - m = (A - B) / (A + B)
+    return 16 * r * std::sqrt(s) * boost::math::ellint_rg(0.0, mc, 1.0);
+  }
+  // Arc |t| < t0 (m > 1): reciprocal modulus k = 1/m, L = 8 r s / sqrt(2B) * kc/3 * R_D(0, 1, kc)
+  // with kc = 1 - 1/m = (B - A) / (2B); kc R_D(0, 1, kc) -> 3 as kc -> 0 (no cancellation).
+  const double kc = excess / twoB;
+  return 8 * r * s / std::sqrt(twoB) * kc / 3 * boost::math::ellint_rd(0.0, 1.0, kc);
 }
 
 double disk_disk_area(double r1, double r2, double d) {

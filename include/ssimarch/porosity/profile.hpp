@@ -6,8 +6,8 @@
 //   bulk    eps          = 1 - sum_i V_i(0, R) / (pi R^2 H)
 // with H = z_max - z_min and the per-particle integrals of particle_integrals.hpp. Only the parts of
 // particles inside the container count (particles sticking out are clipped, not moved or dropped).
-// Work is split over std::thread workers in fixed chunks and reduced in chunk order, so results do not
-// depend on the thread count. Source: seed 001 (thesis Appendix A, the kernel),
+// Work is split over std::thread workers in fixed chunks; every sum is a FixedPointSum, so results
+// have the same bits for any thread count and any split of the particles over MPI ranks. Source: seed 001 (thesis Appendix A, the kernel),
 // docs/math/circle_spherocylinder.md §2, docs/porosity.md.
 #pragma once
 
@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "ssimarch/porosity/particle_integrals.hpp"
+#include "ssimarch/porosity/profile_communicator.hpp"
 
 namespace ssimarch {
 
@@ -36,6 +37,9 @@ struct ProfileOptions {
   KernelTolerances kernel;
   /// Called on the calling thread with the fraction done (0..1), about every 0.1 s, if set.
   std::function<void(double)> progress;
+  /// Set when this process holds only its share of the particles (MPI, profile_communicator.hpp):
+  /// counts and sums are added over all processes, and every process gets the whole profile.
+  const ProfileCommunicator* communicator = nullptr;
 };
 
 struct ProfileStats {

@@ -13,6 +13,13 @@ namespace ssimarch {
 /// the given centre and diameter. Model length.
 double circle_sphere_arc(const Vec3& centre, double diameter, double z, double r);
 
+/// Area of the part of the cylinder surface x^2 + y^2 = r^2 (unbounded in z) inside the closed ball
+/// of radius a whose centre lies at horizontal distance rho >= 0 from the axis: the lateral area
+/// L(r) of the radial profile for a sphere the height range does not cut. Closed form through
+/// Carlson's symmetric elliptic integrals R_G and R_D (docs/math/cylinder_in_sphere.md); exact to a
+/// few ulps relative to L. Model length^2.
+double cylinder_area_in_sphere(double rho, double a, double r);
+
 /// Area of the intersection of two disks (radii r1, r2, centre distance d), the "lens" area.
 double disk_disk_area(double r1, double r2, double d);
 
