@@ -18,13 +18,16 @@
 #include "ssimarch/io/output_files.hpp"
 #include "ssimarch/io/profile_plot.hpp"
 #include "ssimarch/pipeline/porosity_job.hpp"
+#include "ssimarch/porosity/packing.hpp"
+#include "ssimarch/io/html_writer.hpp"
+#include "viewer_page.hpp"
 
 namespace ssimarch::cli {
 
 namespace {
 
 struct PorosityArgs {
-  std::string packing, output, plot, summary, z_range, map, method = "chord";
+  std::string packing, output, plot, summary, z_range, map, method = "chord", html;
   double radius = 0, tolerance = 1e-8;
   int radii = 0, bins = 0, axial = 0;
   unsigned threads = 0;
@@ -253,7 +256,14 @@ std::string overlap_message(const PorosityJobResult& r) {
 }
 
 void run(const PorosityArgs& a) {
-  const PorosityJobResult r = run_job(make_job(a));
+  PorosityJob job = make_job(a);
+  std::string_view script;
+  if (!a.html.empty()) {  // the viewer page needs the particles: read once, given to the job
+    script = require_viewer_script();
+    job.packing = read_packing(job.packing_file, job.input_limits).particles;
+    job.packing_file.clear();
+  }
+  const PorosityJobResult r = run_job(job);
   if (r.overlaps.pairs > 0) {
     if (a.strict) throw CliError("--strict: " + overlap_message(r) + "; no output was written", 1);
     std::cerr << "ssimarch: warning: " << overlap_message(r) << "\n";
@@ -263,6 +273,9 @@ void run(const PorosityArgs& a) {
   js["outputs"] = write_profiles(files, a, r);
   if (!a.plot.empty()) write_plot(files, a, r);
   if (!a.summary.empty()) files.open(a.summary) << js.dump(2) << "\n";
+  if (!a.html.empty())
+    write_viewer_page(files.open(a.html), porosity_page_data(r, job.packing, std::filesystem::path(a.packing).filename().string()),
+                      script);
   files.commit();
   report(r);
 }
@@ -286,6 +299,8 @@ void add_porosity_command(CLI::App& app) {
   sub->add_option("-o,--output", args->output, "output CSV (default stdout)");
   sub->add_option("--plot", args->plot, "plot the profile: FILE.svg");
   sub->add_option("--summary", args->summary, "write a JSON summary (bulk porosity, timings, accuracy)");
+  sub->add_option("--html", args->html,
+                  "write the viewer page PAGE.html: the bed in 3D and the profiles, one offline file (docs/viewer.md)");
   sub->add_option("--tolerance", args->tolerance, "absolute accuracy of each porosity value (default 1e-8)");
   sub->add_option("--threads", args->threads, "worker threads (default: all cores)");
   sub->add_flag("--strict", args->strict,

@@ -49,7 +49,7 @@ void run_trace(const TraceArgs& a) {
                                        [&](const OptionOverride& o) { return o.option == bspline; });
   if (f == OutputFormat::kStep && !bspline_set) request.overrides.push_back({bspline, std::string("true"), "--format step"});
   const TraceJobResult job = trace_scene(scene, request);
-  write_runs(job.runs, f, a.output);
+  write_runs(job.runs, f, a.output, &scene);
   if (!a.quiet) print_summary(job.runs);
   if (!job.complete()) g_exit_status = 1;
 }
@@ -75,14 +75,14 @@ void add_trace_command(CLI::App& app) {
   cmd->footer(
       "Output: JSON {\"intersections\": [...]} (default; schema in docs/output-format.md), CSV (one row per point), "
       "OBJ (polylines), SVG (pictures) or STEP AP242 (the certified B-splines and p-curves of the option bspline, "
-      "which --format step turns on). A summary goes to stderr.\n"
+      "which --format step turns on) or HTML (the interactive 3D viewer page with the surfaces, docs/viewer.md). A summary goes to stderr.\n"
       "Option values may be numbers or expressions of the scene's constants; each option is a key of a scene's "
       "\"options\" (docs/scene-format.md; --list-options prints the table).\n"
       "Exit status: 0 traced; 1 an intersection found no curve or a start point could not be put on the curve; "
       "2 invalid input.");
   cmd->add_option("scene", args->scene, "Scene file (JSON, docs/scene-format.md)");
   cmd->add_option("-o,--output", args->output, "Output file; '-' for standard output (default)");
-  cmd->add_option("--format", args->format, "json | csv | obj | svg | step (default: from the output file's extension, else json)");
+  cmd->add_option("--format", args->format, "json | csv | obj | svg | step | html (default: from the output file's extension, else json)");
   cmd->add_option("--intersection", args->only, "Trace only the intersection(s) with this name (repeatable)");
   add_option_flags(cmd, args.get());
   cmd->add_flag("-q,--quiet", args->quiet, "No summary on stderr");

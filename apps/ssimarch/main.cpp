@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   ssimarch::cli::add_porosity_command(app);
   ssimarch::cli::add_packing_command(app);
   ssimarch::cli::add_singular_command(app);
+  ssimarch::cli::add_view_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

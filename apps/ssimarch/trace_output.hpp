@@ -9,16 +9,18 @@
 
 namespace ssimarch::cli {
 
-enum class OutputFormat { kJson, kCsv, kObj, kSvg, kStep };
+enum class OutputFormat { kJson, kCsv, kObj, kSvg, kStep, kHtml };
 
-/// "json", "csv", "obj", "svg", "step"; throws CliError otherwise.
+/// "json", "csv", "obj", "svg", "step", "html"; throws CliError otherwise.
 OutputFormat parse_format(const std::string& s);
 /// From a file name's extension; json when it has none of the known ones.
 OutputFormat format_from_path(const std::filesystem::path& p);
 
 /// Writes runs in the format to `path` ("-" = standard output). SVG writes one file per run
 /// (path itself when there is one run, else <stem>_<name>.svg beside it).
-void write_runs(const std::vector<IntersectionRun>& runs, OutputFormat format, const std::string& path);
+/// HTML (the viewer page, docs/viewer.md) needs the scene for the surfaces' meshes.
+void write_runs(const std::vector<IntersectionRun>& runs, OutputFormat format, const std::string& path,
+                const Scene* scene = nullptr);
 
 /// One line per curve on stderr: closed/open, length, points, time.
 void print_summary(const std::vector<IntersectionRun>& runs);
