@@ -2,10 +2,10 @@
 // Page size, load time and orbiting frame rate of viewer pages in headless Chromium (docs/benchmarks.md,
 // "Viewer"): the demo scenes' pages and a porosity page of a 1e5-sphere bed (a simple cubic lattice of
 // spacing 1.02 d in a cylinder, so the bed is made in no time and no two spheres touch).
-//   node bench/viewer_bench.mjs --ssimarch build/bin/ssimarch [--work DIR] [--particles 100000] [--loads 3]
+//   node bench/viewer_bench.mjs --ssimarch build/bin/ssimarch [--work DIR] [--particles 100000] [--loads 3] [--frames 30]
 // Load time: navigation start to the viewer's `ready` (data parsed, scene built, first frame drawn),
-// median of --loads loads. Frame rate: 120 frames of a full turn about the target, each rendered and
-// finished (gl.finish). Chromium renders with SwiftShader (software WebGL) here: a desktop GPU is faster.
+// median of --loads loads. Frame rate: --frames frames (default 30) of a quarter turn about the target,
+// each rendered and finished (gl.finish). Chromium renders with SwiftShader (software WebGL) here: a desktop GPU is faster.
 import { createRequire } from 'node:module';
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
@@ -17,7 +17,7 @@ const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 const args = Object.fromEntries(process.argv.slice(2).reduce((a, x, i, all) => (x.startsWith('--') ? [...a, [x.slice(2), all[i + 1]]] : a), []));
 const ssimarch = args.ssimarch || path.join(root, 'build/bin/ssimarch');
 const work = path.resolve(args.work || path.join(os.tmpdir(), 'ssimarch-viewer-bench'));
-const count = Number(args.particles || 100000), loads = Number(args.loads || 3);
+const count = Number(args.particles || 100000), loads = Number(args.loads || 3), frames = Number(args.frames || 30);
 const puppeteer = createRequire(path.join(root, 'viewer/package.json'))('puppeteer-core');
 const run = (...a) => execFileSync(ssimarch, a, { stdio: ['ignore', 'pipe', 'inherit'] });
 
@@ -42,6 +42,7 @@ pages.push({ name: `bed of ${count} spheres`, file: path.join(work, 'lattice.htm
 const browser = await puppeteer.launch({
   executablePath: args.chromium || '/usr/bin/chromium',
   headless: true,
+  protocolTimeout: 1800000,
   args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
 });
 const version = await browser.version();
@@ -55,7 +56,7 @@ for (const p of pages) {
     await page.goto(pathToFileURL(p.file).href, { waitUntil: 'load', timeout: 300000 });
     await page.waitForFunction(() => window.ssimarchViewer?.ready, { timeout: 300000 });
     times.push(await page.evaluate(() => window.ssimarchViewer.readyMs));
-    if (l === 0) fps = (await page.evaluate(() => window.ssimarchViewer.measureOrbit(120, 360))).fps;
+    if (l === 0) fps = (await page.evaluate((n) => window.ssimarchViewer.measureOrbit(n, 90), frames)).fps;
     await page.close();
   }
   times.sort((x, y) => x - y);

@@ -10,8 +10,6 @@ file(READ ${INPUT} hex HEX)
 string(LENGTH "${hex}" n)
 math(EXPR bytes "${n} / 2")
 string(REGEX REPLACE "([0-9a-f][0-9a-f])" "0x\\1," hex "${hex}")
-# Lines of 32 bytes (5 characters each) keep the generated file readable for diff tools.
-string(REGEX REPLACE "((0x..,){32})" "\\1\n" hex "${hex}")
 file(WRITE ${OUTPUT} "${head}\nnamespace {\nconstexpr unsigned char kBundle[${bytes}] = {\n${hex}};\n}  // namespace\n\n"
      "std::string_view viewer_script() { return {reinterpret_cast<const char*>(kBundle), sizeof kBundle}; }\n\n"
      "}  // namespace ssimarch::cli\n")

@@ -3,6 +3,7 @@
 // also shows the surfaces' meshes.
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include "commands.hpp"
 #include "run_budget.hpp"
@@ -30,7 +31,8 @@ void run_view(const ViewArgs& a) {
       parse_json_text(read_text_file(in, "result file", input_limits().max_packing_bytes), a.result);
   std::optional<Scene> scene;
   if (!a.scene.empty()) scene = load_scene(a.scene, input_limits());
-  std::filesystem::path out = a.output.empty() ? std::filesystem::path(in).replace_extension(".html") : a.output;
+  const std::filesystem::path out = a.output.empty() ? std::filesystem::path(in).replace_extension(".html")
+                                                    : std::filesystem::path(a.output);
   OutputFiles files;
   write_viewer_page(files.open(out), trace_page_data(result, scene ? &*scene : nullptr, in.stem().string()), script);
   files.commit();

@@ -1,6 +1,8 @@
 // Viewer pages (html_writer.hpp).
 #include "ssimarch/io/html_writer.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <set>
 #include <stdexcept>
 
@@ -11,12 +13,17 @@ namespace ssimarch {
 
 namespace {
 
-// Float precision is what the page's WebGL buffers hold; it keeps the page small.
+// Vertices rounded to 1e-5 of the mesh's size in decimal places: the double nearest a short
+// decimal prints as that decimal, so the page stays small; a display needs no more (WebGL holds floats).
 nlohmann::json mesh_json(const Surface& s, const TriangleMesh& m) {
-  std::vector<float> positions;
+  double size = 0;
+  for (const Vec3& p : m.vertices) size = std::max(size, p.cwiseAbs().maxCoeff());
+  const int places = std::clamp(static_cast<int>(std::ceil(-std::log10(1e-5 * std::max(size, 1e-300)))), 0, 15);
+  const double scale = std::pow(10.0, places);
+  std::vector<double> positions;
   positions.reserve(3 * m.vertices.size());
   for (const Vec3& p : m.vertices)
-    for (int a = 0; a < 3; ++a) positions.push_back(static_cast<float>(p[a]));
+    for (int a = 0; a < 3; ++a) positions.push_back(std::round(p[a] * scale) / scale);
   std::vector<std::uint32_t> triangles;
   triangles.reserve(3 * m.triangles.size());
   for (const auto& t : m.triangles) triangles.insert(triangles.end(), t.begin(), t.end());
@@ -121,9 +128,14 @@ void write_viewer_page(std::ostream& out, const nlohmann::json& data, std::strin
   if (script.empty()) throw std::logic_error("write_viewer_page: no viewer script");
   if (script.find("</script") != std::string_view::npos)
     throw std::logic_error("write_viewer_page: the viewer script holds \"</script\" and cannot be inlined");
-  std::string text = data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  const std::string json = data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   // "<\/" is the same JSON string as "</" and cannot close the data's script element.
-  for (std::size_t at = text.find("</"); at != std::string::npos; at = text.find("</", at + 3)) text.insert(at + 1, "\\");
+  std::string text;
+  text.reserve(json.size());
+  for (std::size_t i = 0; i < json.size(); ++i) {
+    text += json[i];
+    if (json[i] == '<' && i + 1 < json.size() && json[i + 1] == '/') text += '\\';
+  }
   const std::string title = data.value("title", std::string("ssimarch"));
   std::string safe_title;
   for (char ch : title) safe_title += ch == '<' ? std::string("&lt;") : ch == '&' ? std::string("&amp;") : std::string(1, ch);

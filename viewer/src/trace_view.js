@@ -29,11 +29,14 @@ export function traceView(data, viewport, side, toolbar) {
   if (bounds.isEmpty()) bounds.set(new THREE.Vector3(-1, -1, -1), new THREE.Vector3(1, 1, 1));
   const size = bounds.getSize(new THREE.Vector3()).length();
 
-  const material = (c) => new LineMaterial({ color: 0xffffff, linewidth: LINE_WIDTH, vertexColors: true, worldUnits: false });
+  // Curves and markers go in the transparent pass after the surfaces (which write no depth), so a
+  // surface in front tints a curve without hiding it.
+  const material = () => new LineMaterial({ color: 0xffffff, linewidth: LINE_WIDTH, vertexColors: true, worldUnits: false,
+    transparent: true });
   for (const c of curves) {
     c.geometry = new LineGeometry();
     c.geometry.setPositions(c.pts.flat());
-    c.line = new Line2(c.geometry, material(c));
+    c.line = new Line2(c.geometry, material());
     c.line.computeLineDistances();
     c.line.renderOrder = 2;
     viewport.scene.add(c.line);
@@ -71,7 +74,7 @@ export function traceView(data, viewport, side, toolbar) {
   side.append(el('h2', { textContent: data.title || 'ssimarch' }), legend, el('h3', { textContent: 'Point' }), info);
   side.append(el('h3', { textContent: 'Surfaces' }));
   for (const [name, m] of Object.entries(surfaceMeshes))
-    side.append(checkbox(`${name} (${surfaces[name].type}, ${surfaces[name].form})`, true, (on) => { m.visible = on; viewport.requestRender(); },
+    side.append(checkbox(`${name} (${surfaces[name].type === surfaces[name].form ? surfaces[name].form : `${surfaces[name].type}, ${surfaces[name].form}`})`, true, (on) => { m.visible = on; viewport.requestRender(); },
       surfaceColors[Object.keys(surfaceMeshes).indexOf(name) % surfaceColors.length]));
   if (Object.keys(surfaceMeshes).length === 0) side.append(el('div', { className: 'legend', textContent: 'no surface meshes (ssimarch view --scene SCENE adds them)' }));
   side.append(el('h3', { textContent: 'Curves' }));
@@ -91,7 +94,7 @@ export function traceView(data, viewport, side, toolbar) {
   });
 
   // Picking: the curve point nearest the pointer on screen, within PICK_RADIUS pixels.
-  const highlight = new THREE.Mesh(new THREE.SphereGeometry(size * 0.008, 16, 12), new THREE.MeshBasicMaterial({ color: 0x000000 }));
+  const highlight = new THREE.Mesh(new THREE.SphereGeometry(size * 0.008, 16, 12), new THREE.MeshBasicMaterial({ color: 0x000000, transparent: true }));
   highlight.visible = false;
   highlight.renderOrder = 3;
   viewport.scene.add(highlight);
@@ -181,7 +184,7 @@ function buildMarkers(data, intersections, viewport, labels, size) {
   const markers = [];
   const sphere = new THREE.SphereGeometry(size * 0.011, 20, 14);
   const add = (xyz, color, label) => {
-    const m = new THREE.Mesh(sphere, new THREE.MeshBasicMaterial({ color }));
+    const m = new THREE.Mesh(sphere, new THREE.MeshBasicMaterial({ color, transparent: true }));
     m.position.copy(vec(xyz));
     m.renderOrder = 3;
     viewport.scene.add(m);

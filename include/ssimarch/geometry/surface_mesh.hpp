@@ -24,8 +24,8 @@ struct TriangleMesh {
 
 /// Resolution of a display mesh.
 struct SurfaceMeshOptions {
-  int grid = 96;   ///< parametric: grid cells along each parameter direction (>= 1)
-  int cells = 56;  ///< implicit: cells along the longest side of the box (>= 2)
+  int grid = 64;   ///< parametric: grid cells along each parameter direction (>= 1)
+  int cells = 48;  ///< implicit: cells along the longest side of the box (>= 2)
 };
 
 /// F(u, v) at (grid+1)^2 points evenly over the domain, two triangles per cell. Non-finite points
