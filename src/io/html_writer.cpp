@@ -13,13 +13,17 @@ namespace ssimarch {
 
 namespace {
 
-// Vertices rounded to 1e-5 of the mesh's size in decimal places: the double nearest a short
-// decimal prints as that decimal, so the page stays small; a display needs no more (WebGL holds floats).
+// 10^places with 10^-places about 1e-5 of `size`: coordinates rounded to that many decimal places
+// print short (the double nearest a short decimal prints as that decimal), so pages stay small; a
+// display needs no more (WebGL holds floats).
+double display_scale(double size) {
+  return std::pow(10.0, std::clamp(static_cast<int>(std::ceil(-std::log10(1e-5 * std::max(size, 1e-300)))), 0, 15));
+}
+
 nlohmann::json mesh_json(const Surface& s, const TriangleMesh& m) {
   double size = 0;
   for (const Vec3& p : m.vertices) size = std::max(size, p.cwiseAbs().maxCoeff());
-  const int places = std::clamp(static_cast<int>(std::ceil(-std::log10(1e-5 * std::max(size, 1e-300)))), 0, 15);
-  const double scale = std::pow(10.0, places);
+  const double scale = display_scale(size);
   std::vector<double> positions;
   positions.reserve(3 * m.vertices.size());
   for (const Vec3& p : m.vertices)
@@ -45,13 +49,17 @@ nlohmann::json profile_json(const PorosityProfile& p) {
 }
 
 nlohmann::json particles_json(std::span<const Particle> particles, bool spherocylinders) {
-  std::vector<float> centre, axis, diameter, length;
+  double size = 0;
+  for (const Particle& q : particles) size = std::max({size, q.centre.cwiseAbs().maxCoeff(), q.diameter + q.length});
+  const double scale = display_scale(size), unit = display_scale(1.0);
+  auto round = [](double x, double k) { return std::round(x * k) / k; };
+  std::vector<double> centre, axis, diameter, length;
   for (const Particle& q : particles) {
-    for (int a = 0; a < 3; ++a) centre.push_back(static_cast<float>(q.centre[a]));
-    diameter.push_back(static_cast<float>(q.diameter));
+    for (int a = 0; a < 3; ++a) centre.push_back(round(q.centre[a], scale));
+    diameter.push_back(round(q.diameter, scale));
     if (!spherocylinders) continue;
-    for (int a = 0; a < 3; ++a) axis.push_back(static_cast<float>(q.axis[a]));
-    length.push_back(static_cast<float>(q.length));
+    for (int a = 0; a < 3; ++a) axis.push_back(round(q.axis[a], unit));
+    length.push_back(round(q.length, scale));
   }
   nlohmann::json js = {{"count", particles.size()}, {"centre", centre}, {"diameter", diameter}};
   if (spherocylinders) js["axis"] = axis, js["length"] = length;
