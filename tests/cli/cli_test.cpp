@@ -341,8 +341,8 @@ TEST(Cli, HtmlPageOfATraceAndOfAResult) {
   ASSERT_NE(a, std::string::npos);
   const auto data = nlohmann::json::parse(text.substr(a + 19, b - a - 19));
   std::set<std::string> used;  // a mesh for every surface an intersection names
-  for (const auto& in : data["intersections"])
-    for (const auto& name : in["surfaces"]) used.insert(name.get<std::string>());
+  for (const auto& inter : data["intersections"])
+    for (const auto& name : inter["surfaces"]) used.insert(name.get<std::string>());
   EXPECT_EQ(data["surfaces"].size(), used.size());
   EXPECT_GE(used.size(), 2u);
   const auto& curve = data["intersections"][0]["curves"][0];
