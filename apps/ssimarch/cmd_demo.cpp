@@ -1,4 +1,5 @@
-// ssimarch demo: traces the built-in examples and writes JSON, CSV, OBJ and SVG under out/demo/.
+// ssimarch demo: traces the built-in examples and writes JSON, CSV, OBJ, SVG and the viewer's HTML pages
+// under out/demo/.
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -13,6 +14,7 @@
 #include "ssimarch/io/porosity_demo.hpp"
 #include "ssimarch/pipeline/trace_job.hpp"
 #include "trace_output.hpp"
+#include "viewer_page.hpp"
 
 namespace ssimarch::cli {
 
@@ -32,9 +34,11 @@ void run_demo(const DemoArgs& a) {
   std::vector<IntersectionRun> runs;
   OutputFiles files;  // scenes and pictures, all or nothing (io/output_files.hpp)
   std::cout << "ssimarch demo: tracing the built-in examples into " << dir.string() << "/\n\n";
+  const bool pages = !viewer_script().empty();
   for (const DemoScene& d : demo_scenes()) {
     files.open(dir / (d.name + ".scene.json")) << d.json << "\n";
     Scene scene = parse_scene(d.json, d.name + ".scene.json");
+    const std::size_t first_run = runs.size();
     for (const auto& spec : scene.intersections) {
       runs.push_back(run_intersection(scene, spec));
       const IntersectionRun& r = runs.back();
@@ -50,16 +54,20 @@ void run_demo(const DemoArgs& a) {
       }
       write_svg(files.open(dir / (spec.name + ".svg")), r);
     }
+    if (pages)
+      write_trace_page(files.open(dir / (d.name + ".html")), {runs.begin() + static_cast<long>(first_run), runs.end()}, scene, d.name);
   }
   files.commit();
   write_runs(runs, OutputFormat::kJson, (dir / "curves.json").string());
   write_runs(runs, OutputFormat::kCsv, (dir / "curves.csv").string());
   write_runs(runs, OutputFormat::kObj, (dir / "curves.obj").string());
   std::cout << "\nwrote " << (dir / "curves.json").string() << ", curves.csv, curves.obj and one SVG per example ("
-            << "3D view and parameter domains)\n";
+            << "3D view and parameter domains)"
+            << (pages ? ", one HTML page per scene (the 3D viewer, docs/viewer.md)\n"
+                      : "\nno HTML pages: this ssimarch was built without the viewer (docs/viewer.md)\n");
   if (!a.skip_porosity) {
     std::cout << "\n* packed bed of spheres: exact radial porosity profile\n";
-    run_porosity_demo(dir / "porosity", std::cout);
+    run_porosity_demo(dir / "porosity", std::cout, viewer_script());
   }
 }
 

@@ -22,13 +22,16 @@
 #ifdef SSIMARCH_WITH_MPI
 #include "ssimarch/porosity_mpi/mpi_communicator.hpp"
 #endif
+#include "ssimarch/porosity/packing.hpp"
+#include "ssimarch/io/html_writer.hpp"
+#include "viewer_page.hpp"
 
 namespace ssimarch::cli {
 
 namespace {
 
 struct PorosityArgs {
-  std::string packing, output, plot, summary, z_range, map, method = "chord", format;
+  std::string packing, output, plot, summary, z_range, map, method = "chord", format, html;
   double radius = 0, tolerance = 1e-8;
   int radii = 0, bins = 0, axial = 0;
   unsigned threads = 0;
@@ -303,7 +306,7 @@ std::string overlap_message(const PorosityJobResult& r) {
   return m.str();
 }
 
-void write_outputs(const PorosityArgs& a, const PorosityJobResult& r);
+void write_outputs(const PorosityArgs& a, const PorosityJobResult& r, const PorosityJob& job, std::string_view script);
 
 // Under mpirun (an SSIMARCH_MPI build): every rank computes its share and gets the whole result;
 // rank 0 alone writes files, warnings and the progress bar (docs/scaling.md).
@@ -312,6 +315,8 @@ void run(const PorosityArgs& a) {
 #ifdef SSIMARCH_WITH_MPI
   std::optional<MpiCommunicator> mpi;
   if (launched_by_mpirun()) {
+    if (!a.html.empty())
+      throw CliError("--html: the viewer page needs every particle in one process; run it without mpirun", 2);
     mpi.emplace(nullptr, nullptr);
     job.options.communicator = &*mpi;
   }
@@ -328,14 +333,20 @@ void run(const PorosityArgs& a) {
     }
     return;
   }
+  std::string_view script;
+  if (!a.html.empty()) {  // the viewer page needs the particles: read once, given to the job
+    script = require_viewer_script();
+    job.packing = read_packing(job.packing_file, job.input_limits).particles;
+    job.packing_file.clear();
+  }
   RunProgress progress(a.quiet);
   job.progress = progress.meter().fraction_callback();
   const PorosityJobResult r = run_job(job);
   progress.meter().close();
-  write_outputs(a, r);
+  write_outputs(a, r, job, script);
 }
 
-void write_outputs(const PorosityArgs& a, const PorosityJobResult& r) {
+void write_outputs(const PorosityArgs& a, const PorosityJobResult& r, const PorosityJob& job, std::string_view script) {
   if (r.overlaps.pairs > 0) {
     if (a.strict) throw CliError("--strict: " + overlap_message(r) + "; no output was written", 1);
     std::cerr << "ssimarch: warning: " << overlap_message(r) << "\n";
@@ -345,6 +356,9 @@ void write_outputs(const PorosityArgs& a, const PorosityJobResult& r) {
   js["outputs"] = vtk_format(a) ? write_profiles_vtk(files, a, r) : write_profiles(files, a, r);
   if (!a.plot.empty()) write_plot(files, a, r);
   if (!a.summary.empty()) files.open(a.summary) << js.dump(2) << "\n";
+  if (!a.html.empty())
+    write_viewer_page(files.open(a.html), porosity_page_data(r, job.packing, std::filesystem::path(a.packing).filename().string()),
+                      script);
   files.commit();
   report(r, a.quiet);
 }
@@ -373,6 +387,8 @@ void add_porosity_command(CLI::App& app) {
                   "(default: vtk for -o *.vtm|*.vtp|*.vti, else csv; docs/output-format.md)");
   sub->add_option("--plot", args->plot, "plot the profile: FILE.svg");
   sub->add_option("--summary", args->summary, "write a JSON summary (bulk porosity, timings, accuracy)");
+  sub->add_option("--html", args->html,
+                  "write the viewer page PAGE.html: the bed in 3D and the profiles, one offline file (docs/viewer.md)");
   sub->add_option("--tolerance", args->tolerance, "absolute accuracy of each porosity value (default 1e-8)");
   sub->add_option("--threads", args->threads, "worker threads (default: all cores)");
   sub->add_flag("--strict", args->strict,

@@ -61,7 +61,7 @@ void run_trace(const TraceArgs& a) {
   RunProgress progress(a.quiet);  // the trace's loops report to the thread's meter
   const TraceJobResult job = trace_scene(scene, request);
   progress.meter().close();
-  write_runs(job.runs, f, a.output);
+  write_runs(job.runs, f, a.output, &scene);
   if (!a.quiet) print_summary(job.runs);
   if (!job.complete()) g_exit_status = 1;
 }
@@ -87,17 +87,18 @@ void add_trace_command(CLI::App& app) {
   cmd->footer(
       "Output: JSON {\"intersections\": [...]} (default; schema in docs/output-format.md), CSV (one row per point), "
       "OBJ (polylines), SVG (pictures), STEP AP242 (the certified B-splines and p-curves of the option bspline, "
-      "which --format step turns on) or VTK XML for ParaView (--format vtp, base64 binary, or vtp-ascii: FILE.vtp "
+      "which --format step turns on), VTK XML for ParaView (--format vtp, base64 binary, or vtp-ascii: FILE.vtp "
       "the curves with params, t, kappa, tau, arc length and branch per point, FILE_points.vtp the singular points "
-      "and curve ends, FILE.vtm both; the format turns the option geometry on, method mixed). A summary and, on a "
-      "terminal, a progress bar go to stderr.\n"
+      "and curve ends, FILE.vtm both; the format turns the option geometry on, method mixed) or HTML (the "
+      "interactive 3D viewer page with the surfaces, docs/viewer.md). A summary and, on a terminal, a progress "
+      "bar go to stderr.\n"
       "Option values may be numbers or expressions of the scene's constants; each option is a key of a scene's "
       "\"options\" (docs/scene-format.md; --list-options prints the table).\n"
       "Exit status: 0 traced; 1 an intersection found no curve or a start point could not be put on the curve; "
       "2 invalid input; 130 interrupted (Ctrl-C), nothing written.");
   cmd->add_option("scene", args->scene, "Scene file (JSON, docs/scene-format.md)");
   cmd->add_option("-o,--output", args->output, "Output file; '-' for standard output (default)");
-  cmd->add_option("--format", args->format, "json | csv | obj | svg | step | vtp | vtp-ascii (default: from the output file's extension, .vtp/.vtm: vtp; else json)");
+  cmd->add_option("--format", args->format, "json | csv | obj | svg | step | vtp | vtp-ascii | html (default: from the output file's extension, .vtp/.vtm: vtp, .html: html; else json)");
   cmd->add_option("--intersection", args->only, "Trace only the intersection(s) with this name (repeatable)");
   add_option_flags(cmd, args.get());
   cmd->add_option("--threads", args->threads,

@@ -32,5 +32,6 @@ void add_porosity_command(CLI::App& app);
 void add_packing_command(CLI::App& app);
 void add_singular_command(CLI::App& app);
 void add_batch_command(CLI::App& app);
+void add_view_command(CLI::App& app);
 
 }  // namespace ssimarch::cli

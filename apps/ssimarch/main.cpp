@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
   ssimarch::cli::add_singular_command(app);
   ssimarch::install_interrupt_handler();
   ssimarch::cli::add_batch_command(app);
+  ssimarch::cli::add_view_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,6 +1,7 @@
 #include "trace_output.hpp"
 
 #include <iomanip>
+#include <stdexcept>
 #include <iostream>
 
 #include "commands.hpp"
@@ -9,6 +10,7 @@
 #include "ssimarch/io/svg_plot.hpp"
 #include "ssimarch/io/trace_writers.hpp"
 #include "ssimarch/io/vtp_writer.hpp"
+#include "viewer_page.hpp"
 
 namespace ssimarch::cli {
 
@@ -20,7 +22,8 @@ OutputFormat parse_format(const std::string& s) {
   if (s == "step") return OutputFormat::kStep;
   if (s == "vtp") return OutputFormat::kVtp;
   if (s == "vtp-ascii") return OutputFormat::kVtpAscii;
-  throw CliError("--format: unknown format \"" + s + "\" (known: json, csv, obj, svg, step, vtp, vtp-ascii)");
+  if (s == "html") return OutputFormat::kHtml;
+  throw CliError("--format: unknown format \"" + s + "\" (known: json, csv, obj, svg, step, vtp, vtp-ascii, html)");
 }
 
 OutputFormat format_from_path(const std::filesystem::path& p) {
@@ -30,10 +33,12 @@ OutputFormat format_from_path(const std::filesystem::path& p) {
   if (e == ".svg") return OutputFormat::kSvg;
   if (e == ".step" || e == ".stp") return OutputFormat::kStep;
   if (e == ".vtp" || e == ".vtm") return OutputFormat::kVtp;
+  if (e == ".html" || e == ".htm") return OutputFormat::kHtml;
   return OutputFormat::kJson;
 }
 
-void write_runs(const std::vector<IntersectionRun>& runs, OutputFormat format, const std::string& path) {
+void write_runs(const std::vector<IntersectionRun>& runs, OutputFormat format, const std::string& path,
+                const Scene* scene) {
   OutputFiles files;  // all files or none (io/output_files.hpp)
   if (format == OutputFormat::kSvg) {
     if (path == "-" && runs.size() != 1)
@@ -62,6 +67,10 @@ void write_runs(const std::vector<IntersectionRun>& runs, OutputFormat format, c
     case OutputFormat::kCsv: write_csv(out, runs); break;
     case OutputFormat::kObj: write_obj(out, runs); break;
     case OutputFormat::kStep: write_step(out, runs); break;
+    case OutputFormat::kHtml:
+      if (!scene) throw std::logic_error("write_runs: an HTML page needs the scene");
+      write_trace_page(out, runs, *scene, runs.size() == 1 ? runs[0].spec.name : scene->source);
+      break;
     case OutputFormat::kSvg:
     case OutputFormat::kVtp:
     case OutputFormat::kVtpAscii: break;

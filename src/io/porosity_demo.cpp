@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "ssimarch/core/error.hpp"
+#include "ssimarch/io/html_writer.hpp"
 #include "ssimarch/io/output_files.hpp"
 #include "ssimarch/io/profile_plot.hpp"
 #include "ssimarch/pipeline/packing_job.hpp"
@@ -60,7 +61,7 @@ double write_plot(OutputFiles& files, const std::filesystem::path& path, const P
 
 }  // namespace
 
-void run_porosity_demo(const std::filesystem::path& out_dir, std::ostream& log) {
+void run_porosity_demo(const std::filesystem::path& out_dir, std::ostream& log, std::string_view viewer_script) {
   using clock = std::chrono::steady_clock;
   std::filesystem::create_directories(out_dir);
   SphereBedOptions gen;
@@ -82,6 +83,11 @@ void run_porosity_demo(const std::filesystem::path& out_dir, std::ostream& log) 
   job.height_range = BedSlab{3.0, bed.report.height - 3.0};
   job.radial_points = 200;
   job.bins = 50;
+  if (!viewer_script.empty()) {  // the page's axial profile and map
+    job.axial_slices = 60;
+    job.map_radii = 25;
+    job.map_heights = 40;
+  }
   const auto t1 = clock::now();
   const PorosityJobResult r = run_porosity_job(job);
   const double t_prof = std::chrono::duration<double>(clock::now() - t1).count();
@@ -101,6 +107,9 @@ void run_porosity_demo(const std::filesystem::path& out_dir, std::ostream& log) 
                        {"profile_s", t_prof},
                        {"correlation", "de Klerk (2003), AIChE J. 49(8) 2022-2029"}};
   files.open(out_dir / "summary.json") << js.dump(2) << "\n";
+  if (!viewer_script.empty())
+    write_viewer_page(files.open(out_dir / "bed.html"),
+                      porosity_page_data(r, bed.particles, "drop-and-roll spheres, D/d = 10"), viewer_script);
   files.commit();
   log << "porosity demo: wrote " << (out_dir / "radial_profile.svg").string() << " (exact vs de Klerk 2003)\n";
 }

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <iterator>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 #include <string>
 #include <tuple>
@@ -321,6 +322,41 @@ TEST(Cli, CoincidentSurfacesAreSaid) {
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_TRUE(j["intersections"][0]["coincident"].get<bool>());
   EXPECT_NEAR(j["intersections"][0]["coincident_region"]["max"][2].get<double>(), 1.0, 0.05);
+}
+
+}  // namespace
+
+namespace {
+
+// The viewer's page of a trace (docs/viewer.md): one file holding the data and the script; or, in a
+// binary built without the viewer's bundle, exit 2 with a message saying how to get it.
+TEST(Cli, HtmlPageOfATraceAndOfAResult) {
+  const fs::path page = scratch() / "viviani.html", result = scratch() / "viviani_result.json";
+  CliRun r = run("trace " + kExamples + "viviani.json -q --format html -o " + page.string());
+  if (r.status == 2 && r.err.find("without the HTML viewer") != std::string::npos) GTEST_SKIP() << r.err;
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ifstream in(page);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto a = text.find("id=\"ssimarch-data\">"), b = text.find("</script>", a);
+  ASSERT_NE(a, std::string::npos);
+  const auto data = nlohmann::json::parse(text.substr(a + 19, b - a - 19));
+  std::set<std::string> used;  // a mesh for every surface an intersection names
+  for (const auto& inter : data["intersections"])
+    for (const auto& name : inter["surfaces"]) used.insert(name.get<std::string>());
+  EXPECT_EQ(data["surfaces"].size(), used.size());
+  EXPECT_GE(used.size(), 2u);
+  const auto& curve = data["intersections"][0]["curves"][0];
+  EXPECT_NEAR(curve["length"].get<double>() / 15.2807911561 - 1, 0.0, 1e-6);
+  EXPECT_TRUE(curve["points"][10]["kappa"].is_number());  // the exact geometry for the panel
+  EXPECT_EQ(text.find("src="), std::string::npos);
+  EXPECT_NE(text.find("<script>"), std::string::npos);
+  // view: the same page from a result; without --scene no meshes; a result it cannot read: status 2.
+  ASSERT_EQ(run("trace " + kExamples + "viviani.json -q -o " + result.string()).status, 0);
+  CliRun v = run("view " + result.string() + " -o " + (scratch() / "v.html").string());
+  ASSERT_EQ(v.status, 0) << v.err;
+  CliRun bad = run("view " + write_file("not_result.json", "{\"bulk_porosity\": 0.4}"));
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_THAT(bad.err, HasSubstr("no \"intersections\" array"));
 }
 
 }  // namespace
