@@ -51,6 +51,11 @@ double segment_distance(const Vec3& p0, const Vec3& p1, const Vec3& q0,
 namespace {
 
 constexpr double kPi = std::numbers::pi;
+// Roll step lengths, in particle diameters: the first trial step, and the step below which a sphere
+// that still has a descent direction is taken as resting (a thousandth of the contact tolerance's
+// default scale would be invisible in any profile).
+constexpr double kRollStart = 0.05;
+constexpr double kRollStop = 1e-9;
 
 std::string number(double v) {
   std::ostringstream o;
@@ -214,11 +219,20 @@ class Deposition {
     return Vec3::Zero();  // over-constrained: treat as stable
   }
 
+  // Termination: every roll pass either lowers the centre by at least `progress` (a roll step that
+  // lowers it less halves h; a fall only follows a pass that left every contact, and ends in one) or
+  // halves h, which starts at kRollStart d and stops the roll below kRollStop d. The passes are thus
+  // bounded by the height to fall over `progress` plus log2(kRollStart / kRollStop) halvings; the budget
+  // below is that bound, so reaching it would be a broken invariant, counted as unstable.
   void settle(Vec3& p, double a) {
     gather(p, a);
-    double h = 0.05 * o_.diameter;
+    double h = kRollStart * o_.diameter;
     Vec3 prev_dir = Vec3::Zero();
-    for (int it = 0; it < 20000; ++it) {
+    const double halvings = std::ceil(std::log2(kRollStart / kRollStop)) + 1;
+    const double progress = std::max(tol_, kRollStop * o_.diameter);
+    // A fall always ends in contact, so falls are at most one more than the roll passes.
+    const double budget = 2 * (std::ceil((p.z() - a) / progress) + 2 * halvings + 2);
+    for (double pass = 0; pass < budget; ++pass) {
       if (p.z() - a <= tol_) return;  // resting on the floor
       if ((p - nb_centre_).norm() > dmax_ / 2) gather(p, a);
       std::vector<Constraint> act;
@@ -238,7 +252,7 @@ class Deposition {
       if (nd < 1e-10) return;  // gravity balanced by the contacts: stable
       const Vec3 dir = d / nd;
       if (dir.dot(prev_dir) < 0) h *= 0.5;  // overshot the bottom of a groove
-      if (h < 1e-9 * o_.diameter) return;
+      if (h < kRollStop * o_.diameter) return;
       prev_dir = dir;
       auto trial = [&](double s) {
         Vec3 q = p + s * dir;
@@ -259,7 +273,7 @@ class Deposition {
           return;
         }
       }
-      if (q.z() > p.z() + tol_) h *= 0.5;
+      if (q.z() > p.z() - progress) h *= 0.5;  // no progress at this step length
       p = q;
     }
     ++unstable_;

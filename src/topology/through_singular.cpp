@@ -127,7 +127,9 @@ BranchMarch march_branch(const Tracer& tracer, const CurvePoint& start, const Cu
     }
     fine.reset();
     trim_beyond(loc.point, begin, &out);
-    if (close_at && closes_before(*close_at, out.points.back(), loc.point, close_tolerance)) {
+    // Only once the branch has left its start: a start placed half a step before a singular point
+    // (regular_start) is the last accepted point when the first step already reaches the point.
+    if (close_at && out.points.size() > 1 && closes_before(*close_at, out.points.back(), loc.point, close_tolerance)) {
       const CurvePoint last = out.points.back();
       close_on_start(last.p, last.t, *close_at, "closed at its start, passed just before a singular point", &out);
       return out;

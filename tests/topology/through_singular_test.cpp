@@ -68,6 +68,19 @@ TEST(ThroughSingular, VivianiIsOneClosedCurveThroughItsNode) {
     }
 }
 
+// A start given on the node is moved half a step off it (regular_start); at short steps the first
+// step already reaches the node, and the loop must not close there before it has left its start
+// (it came back as one point of length 0 at steps <= 4e-4).
+TEST(ThroughSingular, VivianiFromItsNodeAtShortStepsIsTheWholeLoop) {
+  const Scene scene = load_scene(std::string(SSIMARCH_SOURCE_DIR) + "/examples/viviani.json");
+  IntersectionSpec spec = scene.intersections.at(0);
+  spec.options.trace.step_length = 4e-4;
+  const TraceResult r = run_intersection(scene, spec).result;
+  ASSERT_EQ(r.curves.size(), 1u);
+  EXPECT_TRUE(r.curves[0].closed);
+  EXPECT_NEAR(r.curves[0].length, 15.2807911561, 1e-6);
+}
+
 TEST(ThroughSingular, CardioidIsOneClosedCurveOverItsCusp) {
   const TraceResult r = run_example("thesis_ex20_cardioid.json").result;
   ASSERT_EQ(r.curves.size(), 1u);

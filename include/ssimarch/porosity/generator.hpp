@@ -45,7 +45,7 @@ struct GeneratorReport {
   long attempts = 0;
   double height = 0.0;       ///< container height used (RSA) or top of the bed (spheres)
   double max_overlap = 0.0;  ///< largest overlap depth found between particles, model length
-  long unstable = 0;         ///< spheres that hit the iteration limit while rolling (left where they were)
+  long unstable = 0;         ///< spheres whose roll broke its termination bound (left where they were; 0 unless a bug)
 };
 
 /// Both throw InputError, located by the option's field name (e.g. "diameter"), for impossible options.
