@@ -31,5 +31,6 @@ void add_curve_geometry_command(CLI::App& app);
 void add_porosity_command(CLI::App& app);
 void add_packing_command(CLI::App& app);
 void add_singular_command(CLI::App& app);
+void add_faces_command(CLI::App& app);
 
 }  // namespace ssimarch::cli
