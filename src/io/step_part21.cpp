@@ -163,7 +163,8 @@ class Part21Parser {
     } else {
       inst.records.push_back(record(0));
     }
-    expect(';');
+    if (peek() != ';') fail(cat("instance #", inst.id, " (line ", inst.line, ") does not end with ';', found ", shown(peek())));
+    ++pos_;
     return inst;
   }
 
