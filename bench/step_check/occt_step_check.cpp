@@ -8,6 +8,7 @@
 #include <BRep_Tool.hxx>
 #include <GCPnts_AbscissaPoint.hxx>
 #include <IFSelect_ReturnStatus.hxx>
+#include <Interface_Check.hxx>
 #include <Interface_CheckIterator.hxx>
 #include <STEPControl_Reader.hxx>
 #include <TopExp_Explorer.hxx>
@@ -21,11 +22,15 @@
 
 namespace {
 
-// Fails and warnings of a check list (Interface_CheckIterator walks the entities with checks).
+// Fails and warnings of a check list (Interface_CheckIterator walks the entities with checks);
+// each fail's message goes to stderr.
 void count_checks(const Interface_CheckIterator& list, int* fails, int* warnings) {
   for (list.Start(); list.More(); list.Next()) {
-    *fails += list.Value()->NbFails();
-    *warnings += list.Value()->NbWarnings();
+    const Handle(Interface_Check)& check = list.Value();
+    *fails += check->NbFails();
+    *warnings += check->NbWarnings();
+    for (int i = 1; i <= check->NbFails(); ++i)
+      std::fprintf(stderr, "OCCT fail (entity %d): %s\n", list.Number(), check->CFail(i, Standard_False));
   }
 }
 

@@ -22,12 +22,6 @@ namespace ssimarch {
 using ControlNet = std::vector<std::vector<Vec3>>;
 using WeightNet = std::vector<std::vector<double>>;
 
-/// Point k of a row-major homogeneous net (w x, w y, w z, w), divided by its weight.
-inline Vec3 net_point(const std::vector<std::array<double, 4>>& net, int k) {
-  const auto& h = net[static_cast<std::size_t>(k)];
-  return {h[0] / h[3], h[1] / h[3], h[2] / h[3]};
-}
-
 class BezierPatch {
  public:
   /// Throws InputError (where = `where`) for a net with fewer than 2 x 2 points, ragged rows,
@@ -39,10 +33,6 @@ class BezierPatch {
   bool is_rational() const { return rational_; }
   const ParamDomain& domain() const { return domain_; }
   const Box& box() const { return box_; }
-  /// The net as given (for writers): (degree_u() + 1) x (degree_v() + 1) points, weights 1
-  /// when polynomial.
-  Vec3 control_point(int i, int j) const { return net_point(*homogeneous_, i * (m_ + 1) + j); }
-  double weight(int i, int j) const { return (*homogeneous_)[static_cast<std::size_t>(i * (m_ + 1) + j)][3]; }
 
   template <class T>
   Vec3T<T> point(const T& u, const T& v) const {

@@ -38,11 +38,6 @@ class BSplineSurface {
   const std::vector<double>& knots_v() const { return data_->knots_v; }
   const ParamDomain& domain() const { return domain_; }
   const Box& box() const { return box_; }
-  /// The net as given (for writers): count_u() x count_v() points, weights 1 when polynomial.
-  int count_u() const { return nu_; }
-  int count_v() const { return nv_; }
-  Vec3 control_point(int i, int j) const { return net_point(data_->homogeneous, i * nv_ + j); }
-  double weight(int i, int j) const { return data_->homogeneous[static_cast<std::size_t>(i * nv_ + j)][3]; }
 
   template <class T>
   Vec3T<T> point(const T& u, const T& v) const {
