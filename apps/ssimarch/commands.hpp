@@ -33,5 +33,6 @@ void add_packing_command(CLI::App& app);
 void add_singular_command(CLI::App& app);
 void add_batch_command(CLI::App& app);
 void add_view_command(CLI::App& app);
+void add_faces_command(CLI::App& app);
 
 }  // namespace ssimarch::cli

@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   ssimarch::cli::add_eval_command(app);
   ssimarch::cli::add_demo_command(app);
   ssimarch::cli::add_surfaces_command(app);
+  ssimarch::cli::add_faces_command(app);
   ssimarch::cli::add_curve_geometry_command(app);
   ssimarch::cli::add_porosity_command(app);
   ssimarch::cli::add_packing_command(app);

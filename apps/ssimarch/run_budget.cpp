@@ -57,8 +57,9 @@ void add_budget_options(CLI::App* cmd) {
            const auto bytes = static_cast<std::uint64_t>(mib * 1024 * 1024);
            g_limits.max_scene_bytes = bytes;
            g_limits.max_packing_bytes = bytes;
+           g_limits.max_step_bytes = bytes;
          },
-         "largest input file read, MiB (default 64 for scenes, 2048 for packings); guards against a wrong path "
+         "largest input file read, MiB (default 64 for scenes, 1024 for STEP files, 2048 for packings); guards against a wrong path "
          "such as /dev/zero")
       ->type_name("MIB");
   cmd->add_option_function<double>(

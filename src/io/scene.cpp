@@ -6,6 +6,7 @@
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/expr/referenced_names.hpp"
 #include "ssimarch/io/json_reader.hpp"
+#include "ssimarch/io/step_surface_json.hpp"
 #include "ssimarch/io/surface_json.hpp"
 
 namespace ssimarch {
@@ -146,7 +147,8 @@ void read_trace_options(const json& options, const Constants& c, const std::stri
   check_trace_options(*out, where);
 }
 
-Scene parse_scene(const std::string& text, const std::string& source) {
+Scene parse_scene(const std::string& text, const std::string& source, const std::filesystem::path& base_dir,
+                  const InputLimits& limits) {
   const json root = parse_json_text(text, source);
   Scene scene;
   scene.source = source;
@@ -157,10 +159,13 @@ Scene parse_scene(const std::string& text, const std::string& source) {
   const json& surfaces = root.contains("surfaces") ? root["surfaces"] : json();
   if (!surfaces.is_object() || surfaces.empty())
     throw InputError(source + ": surfaces", "must be a non-empty object of name: surface pairs");
+  StepFileCache step_files;
   for (const auto& [name, spec] : surfaces.items()) {
     if (name.empty()) throw InputError(source + ": surfaces", "a surface name must not be empty");
     scene.surface_names.push_back(name);
-    scene.surfaces.emplace(name, surface_from_json(spec, scene.constants, source + ": surfaces." + name));
+    const std::string where = source + ": surfaces." + name;
+    scene.surfaces.emplace(name, is_step_surface(spec) ? step_surface_from_json(spec, base_dir, &step_files, limits, where)
+                                                       : surface_from_json(spec, scene.constants, where));
   }
 
   const json& list = root.contains("intersections") ? root["intersections"] : json::array();
@@ -176,7 +181,7 @@ Scene parse_scene(const std::string& text, const std::string& source) {
 }
 
 Scene load_scene(const std::filesystem::path& path, const InputLimits& limits) {
-  return parse_scene(read_text_file(path, "scene file", limits.max_scene_bytes), path.string());
+  return parse_scene(read_text_file(path, "scene file", limits.max_scene_bytes), path.string(), path.parent_path(), limits);
 }
 
 }  // namespace ssimarch

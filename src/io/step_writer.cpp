@@ -1,11 +1,13 @@
 #include "ssimarch/io/step_writer.hpp"
 
 #include <charconv>
+#include <map>
 #include <sstream>
 #include <string>
 
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/io/trace_writers.hpp"
+#include "ssimarch/surface/frame.hpp"
 
 namespace ssimarch {
 
@@ -97,7 +99,7 @@ std::array<int, 3> add_frame(StepData* d, double tolerance) {
   const int formation = d->add("PRODUCT_DEFINITION_FORMATION('','',", ref(product), ")");
   const int pdc = d->add("PRODUCT_DEFINITION_CONTEXT('part definition',", ref(app), ",'design')");
   const int pd = d->add("PRODUCT_DEFINITION('design','',", ref(formation), ",", ref(pdc), ")");
-  const int shape = d->add("PRODUCT_DEFINITION_SHAPE('',", ref(pd), ",", ref(pd), ")");
+  const int shape = d->add("PRODUCT_DEFINITION_SHAPE('','',", ref(pd), ")");
   const int length = d->add("(LENGTH_UNIT()NAMED_UNIT(*)SI_UNIT(.MILLI.,.METRE.))");
   const int angle = d->add("(NAMED_UNIT(*)PLANE_ANGLE_UNIT()SI_UNIT($,.RADIAN.))");
   const int solid = d->add("(NAMED_UNIT(*)SI_UNIT($,.STERADIAN.)SOLID_ANGLE_UNIT())");
@@ -109,6 +111,84 @@ std::array<int, 3> add_frame(StepData* d, double tolerance) {
   const int ctx2 = d->add("(GEOMETRIC_REPRESENTATION_CONTEXT(2)PARAMETRIC_REPRESENTATION_CONTEXT()REPRESENTATION_CONTEXT("
                           "'2D','parameter space'))");
   return {ctx3, ctx2, shape};
+}
+
+
+std::string reals(std::initializer_list<double> xs) { return list(std::vector<double>(xs), step_real); }
+
+std::string vec3(const Vec3& v) { return reals({v.x(), v.y(), v.z()}); }
+
+// AXIS2_PLACEMENT_3D of a primitive's frame: location, axis e2, reference direction e0.
+int add_placement(StepData* d, const Frame& f) {
+  const int o = d->add("CARTESIAN_POINT('',", vec3(f.origin), ")");
+  const int z = d->add("DIRECTION('',", vec3(f.e2), ")");
+  const int x = d->add("DIRECTION('',", vec3(f.e0), ")");
+  return d->add("AXIS2_PLACEMENT_3D('',", ref(o), ",", ref(z), ",", ref(x), ")");
+}
+
+// A surface bounded to its domain (ISO 10303-42 §4.4.35): the parameters stay the basis's.
+int add_trimmed(StepData* d, const std::string& name, int basis, const ParamDomain& dom) {
+  std::ostringstream o;
+  o << "RECTANGULAR_TRIMMED_SURFACE(" << step_string(name) << "," << ref(basis) << ","
+    << step_real(dom.u.lo) << "," << step_real(dom.u.hi) << "," << step_real(dom.v.lo) << "," << step_real(dom.v.hi)
+    << ",.T.,.T.)";
+  return d->add(o.str());
+}
+
+// The surface in ISO 10303-42 form with ssimarch's parameterisation (docs/cad.md), or 0 for a
+// kind STEP has no entity for (expression surfaces, ellipsoids, paraboloids, capsules) and for
+// B-spline and Bezier patches, whose control nets surface/ does not expose yet (docs/cad.md).
+int add_surface(StepData* d, const std::string& name, const Surface& surface) {
+  const std::string n = step_string(name);
+  if (const auto* p = surface.get_if<Plane>())
+    return add_trimmed(d, name, d->add("PLANE(", n, ",", ref(add_placement(d, p->frame())), ")"), p->domain());
+  if (const auto* c = surface.get_if<Cylinder>())
+    return add_trimmed(d, name, d->add("CYLINDRICAL_SURFACE(", n, ",", ref(add_placement(d, c->frame())), ",",
+                                       step_real(c->radius()), ")"), c->domain());
+  if (const auto* c = surface.get_if<Cone>())  // placed at the apex with radius 0: v is ssimarch's
+    return add_trimmed(d, name, d->add("CONICAL_SURFACE(", n, ",", ref(add_placement(d, c->frame())), ",0.,",
+                                       step_real(c->half_angle()), ")"), c->domain());
+  if (const auto* s = surface.get_if<Sphere>())
+    return d->add("SPHERICAL_SURFACE(", n, ",", ref(add_placement(d, s->frame())), ",", step_real(s->radius()), ")");
+  if (const auto* t = surface.get_if<Torus>())
+    return d->add("TOROIDAL_SURFACE(", n, ",", ref(add_placement(d, t->frame())), ",", step_real(t->major_radius()), ",",
+                  step_real(t->minor_radius()), ")");
+  return 0;
+}
+
+// Curve c of a run with its p-curves: a SURFACE_CURVE (one surface written) or an
+// INTERSECTION_CURVE (both) whose associated geometry is the PCURVE on each parametric surface
+// and the surface itself for an implicit one (ISO 10303-42 §4.4.66-4.4.71); the bare
+// B-spline when neither surface has a STEP form.
+int add_curve(StepData* d, const IntersectionRun& r, std::size_t c, int ctx2, std::map<std::string, int>* surface_ids) {
+  const auto names = parametric_surface_names(r);
+  const std::array<const Surface*, 2> surfaces{&r.problem.first(), &r.problem.second()};
+  std::array<int, 2> surface_id{};
+  for (std::size_t k = 0; k < 2; ++k) {
+    auto [it, fresh] = surface_ids->emplace(names[k], 0);
+    if (fresh) it->second = add_surface(d, names[k], *surfaces[k]);
+    surface_id[k] = it->second;
+  }
+  std::ostringstream named;
+  named << r.spec.name << " curve " << c;
+  const std::string name = named.str();
+  const CurveSpline& spline = *r.splines[c];
+  const int curve = add_bspline(d, name, spline.curve);
+  std::array<int, 2> assoc{surface_id[0], surface_id[1]};  // implicit sides: the surface
+  for (std::size_t k = 0; k < spline.pcurves.size(); ++k) {
+    std::ostringstream pnamed;
+    pnamed << name << " pcurve on " << names[k];
+    const std::string pname = pnamed.str();
+    const int pc = add_bspline(d, pname, spline.pcurves[k]);
+    const int rep = d->add("DEFINITIONAL_REPRESENTATION(", step_string(pname), ",(", ref(pc), "),", ref(ctx2), ")");
+    if (surface_id[k]) assoc[k] = d->add("PCURVE(", step_string(pname), ",", ref(surface_id[k]), ",", ref(rep), ")");
+  }
+  std::vector<int> given;
+  for (int a : assoc)
+    if (a) given.push_back(a);
+  if (given.empty()) return curve;
+  return d->add(given.size() == 2 ? "INTERSECTION_CURVE(" : "SURFACE_CURVE(", step_string(name), ",", ref(curve), ",",
+                list(given, ref), ",.CURVE_3D.)");
 }
 
 }  // namespace
@@ -126,23 +206,10 @@ void write_step(std::ostream& out, const std::vector<IntersectionRun>& runs) {
   StepData d;
   const auto [ctx3, ctx2, shape] = add_frame(&d, largest > 0 ? largest : 1e-12);
   std::vector<int> curves;
-  for (const IntersectionRun& r : runs) {
-    const auto surfaces = parametric_surface_names(r);
-    for (std::size_t c = 0; c < r.splines.size(); ++c) {
-      if (!r.splines[c]) continue;
-      std::ostringstream named;
-      named << r.spec.name << " curve " << c;
-      const std::string name = named.str();
-      curves.push_back(add_bspline(&d, name, r.splines[c]->curve));
-      for (std::size_t k = 0; k < r.splines[c]->pcurves.size(); ++k) {
-        std::ostringstream pnamed;
-        pnamed << name << " pcurve on " << surfaces[k];
-        const std::string pname = pnamed.str();
-        const int pc = add_bspline(&d, pname, r.splines[c]->pcurves[k]);
-        d.add("DEFINITIONAL_REPRESENTATION(", step_string(pname), ",(", ref(pc), "),", ref(ctx2), ")");
-      }
-    }
-  }
+  std::map<std::string, int> surface_ids;  // scene surface name -> STEP id (0: no STEP form)
+  for (const IntersectionRun& r : runs)
+    for (std::size_t c = 0; c < r.splines.size(); ++c)
+      if (r.splines[c]) curves.push_back(add_curve(&d, r, c, ctx2, &surface_ids));
   const int set = d.add("GEOMETRIC_CURVE_SET('intersection curves',", list(curves, ref), ")");
   const int rep = d.add("GEOMETRICALLY_BOUNDED_WIREFRAME_SHAPE_REPRESENTATION('ssimarch',(", ref(set), "),", ref(ctx3), ")");
   d.add("SHAPE_DEFINITION_REPRESENTATION(", ref(shape), ",", ref(rep), ")");

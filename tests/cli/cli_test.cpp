@@ -169,8 +169,28 @@ TEST(Cli, DemoWritesWhatReadmePromises) {
   EXPECT_THAT(r.out, HasSubstr("relative error"));
 }
 
+// ssimarch faces: the hand-written AP214-like half cylinder (tests/io/data): its NURBS side and
+// planar bottom with their domains; a broken file is a clean error naming file:line.
+TEST(Cli, FacesListsAStepFilesFaces) {
+  const std::string file = std::string(SSIMARCH_SOURCE_DIR) + "/tests/io/data/half_cylinder_nurbs.step";
+  CliRun r = run("faces " + file);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("RATIONAL_B_SPLINE_SURFACE    bspline u [0, 2] v [0, 3]"));
+  EXPECT_THAT(r.out, HasSubstr("#60"));
+  EXPECT_THAT(r.out, HasSubstr("plane u [-2, 2] v [-2, 0]"));
+  CliRun j = run("faces --json " + file);
+  ASSERT_EQ(j.status, 0) << j.err;
+  const auto parsed = nlohmann::json::parse(j.out);
+  ASSERT_EQ(parsed["faces"].size(), 2u);
+  EXPECT_EQ(parsed["faces"][0]["entity"], 20);
+  EXPECT_EQ(parsed["faces"][1]["surface"], "plane");
+  CliRun bad = run("faces " + write_file("bad.step", "ISO-10303-21;\nHEADER;\nENDSEC;\nDATA;\n#1=A(1,;\nENDSEC;\n"));
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_THAT(bad.err, HasSubstr("bad.step:5: expected a parameter, found ';'"));
+}
+
 TEST(Cli, HelpOnEverySubcommand) {
-  for (const char* sub : {"trace", "eval", "demo", "surfaces", "curve-geometry"}) {
+  for (const char* sub : {"trace", "eval", "demo", "surfaces", "curve-geometry", "faces"}) {
     CliRun r = run(std::string(sub) + " --help");
     EXPECT_EQ(r.status, 0) << sub;
     EXPECT_THAT(r.out, HasSubstr("Usage")) << sub;

@@ -14,6 +14,8 @@ struct InputLimits {
   std::uint64_t max_scene_bytes = std::uint64_t{64} << 20;
   /// Largest packing file (CSV or LAMMPS dump), bytes: about 25 million particles.
   std::uint64_t max_packing_bytes = std::uint64_t{2} << 30;
+  /// Largest STEP file (ISO 10303-21), bytes: CAD assemblies reach hundreds of MiB.
+  std::uint64_t max_step_bytes = std::uint64_t{1} << 30;
   /// Longest line of a packing file, bytes (a row of 8 numbers is under 200).
   std::uint64_t max_line_bytes = std::uint64_t{1} << 16;
 };

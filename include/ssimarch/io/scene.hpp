@@ -16,8 +16,11 @@ namespace ssimarch {
 /// line and column, duplicate or unknown keys, wrong types, bad values with their JSON path, a
 /// file larger than limits.max_scene_bytes).
 Scene load_scene(const std::filesystem::path& path, const InputLimits& limits = {});
-/// Same, from text; `source` names it in messages.
-Scene parse_scene(const std::string& text, const std::string& source);
+/// Same, from text; `source` names it in messages. STEP files the scene names
+/// ({"step": FILE, ...}, io/step_surface_json.hpp) are found relative to `base_dir` (the
+/// current folder when empty) and read within `limits`.
+Scene parse_scene(const std::string& text, const std::string& source, const std::filesystem::path& base_dir = {},
+                  const InputLimits& limits = {});
 
 /// Applies the keys of an "options" object (trace_option_table(); numbers may be expressions
 /// using the constants) to *out, then checks the rules between options. Throws InputError

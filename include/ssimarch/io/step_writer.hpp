@@ -2,7 +2,12 @@
 // AP242 exchange file (ISO 10303-21 clear text; ISO 10303-42 geometry): each 3D curve a
 // B_SPLINE_CURVE_WITH_KNOTS in a GEOMETRIC_CURVE_SET of a wireframe shape representation, and
 // each p-curve a 2D B_SPLINE_CURVE_WITH_KNOTS in a DEFINITIONAL_REPRESENTATION of a parametric
-// context named after its curve and surface. Surfaces are not written.
+// context named after its curve and surface. Surfaces with a STEP form are written once each,
+// with ssimarch's parameterisation (planes, cylinders, cones bounded to their domain by a
+// RECTANGULAR_TRIMMED_SURFACE; spheres, tori; not yet B-spline and Bezier patches, whose
+// control nets surface/ does not expose), and each curve is then a SURFACE_CURVE or
+// INTERSECTION_CURVE whose associated geometry is the PCURVE on each written parametric
+// surface (the surface itself for an implicit one); io/step_reader.hpp reads them back.
 #pragma once
 
 #include <ostream>

@@ -1,0 +1,74 @@
+// ssimarch faces MODEL.step: the faces of a STEP file, numbered as a scene names them
+// ({"step": "MODEL.step", "face": N}, docs/scene-format.md), with their surface type and the
+// parameter domain ssimarch gives them (io/step_reader.hpp), as a table or JSON.
+#include <iostream>
+#include <memory>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "commands.hpp"
+#include "run_budget.hpp"
+#include "ssimarch/core/error.hpp"
+#include "ssimarch/io/step_reader.hpp"
+
+namespace ssimarch::cli {
+
+namespace {
+
+struct FacesArgs {
+  std::string file;
+  bool json = false;
+};
+
+nlohmann::json face_json(const StepModel& model, const StepFace& f) {
+  nlohmann::json j{{"face", f.index},          {"entity", f.entity}, {"line", f.line},
+                   {"surface_entity", f.surface_entity}, {"step_type", f.surface_type}, {"same_sense", f.same_sense}};
+  try {
+    const Surface s = model.surface(f.entity);
+    const ParamDomain& d = s.domain();
+    j["surface"] = std::string(s.type_name());
+    j["u"] = {d.u.lo, d.u.hi};
+    j["v"] = {d.v.lo, d.v.hi};
+    j["periodic"] = {d.periodic_u, d.periodic_v};
+  } catch (const InputError& e) {
+    j["error"] = e.what();
+  }
+  return j;
+}
+
+void run_faces(const FacesArgs& a) {
+  const StepModel model = StepModel::read(a.file, input_limits());
+  nlohmann::json list = nlohmann::json::array();
+  for (const StepFace& f : model.faces()) list.push_back(face_json(model, f));
+  if (a.json) {
+    std::cout << nlohmann::json{{"file", a.file}, {"faces", list}}.dump(2) << "\n";
+    return;
+  }
+  std::cout << fmt::format("{:>5} {:>9} {:>7}  {:<28} {}\n", "face", "entity", "line", "STEP surface", "ssimarch surface, domain");
+  for (const auto& j : list) {
+    std::string what;
+    if (j.contains("error")) what = "not read: " + j["error"].get<std::string>();
+    else
+      what = fmt::format("{} u [{:.6g}, {:.6g}]{} v [{:.6g}, {:.6g}]{}", j["surface"].get<std::string>(), j["u"][0].get<double>(),
+                         j["u"][1].get<double>(), j["periodic"][0].get<bool>() ? " periodic" : "", j["v"][0].get<double>(),
+                         j["v"][1].get<double>(), j["periodic"][1].get<bool>() ? " periodic" : "");
+    std::cout << fmt::format("{:>5} {:>9} {:>7}  {:<28} {}\n", j["face"].get<int>(), "#" + std::to_string(j["entity"].get<std::int64_t>()),
+                             j["line"].get<int>(), j["step_type"].get<std::string>(), what);
+  }
+}
+
+}  // namespace
+
+void add_faces_command(CLI::App& app) {
+  auto args = std::make_shared<FacesArgs>();
+  CLI::App* cmd = app.add_subcommand("faces", "List the faces of a STEP file (AP203/AP214/AP242) with their surfaces");
+  cmd->footer("A scene names a face as {\"step\": \"MODEL.step\", \"face\": N} or by its instance id, "
+              "{\"step\": \"MODEL.step\", \"entity\": ID} (docs/scene-format.md, docs/cad.md).");
+  cmd->add_option("file", args->file, "STEP file (ISO 10303-21)")->required();
+  cmd->add_flag("--json", args->json, "print JSON instead of a table");
+  add_budget_options(cmd);
+  cmd->callback([args] { run_faces(*args); });
+}
+
+}  // namespace ssimarch::cli

@@ -1,0 +1,93 @@
+// Checked access to the parameters of Part 21 instances for the STEP readers (private to io/):
+// each accessor throws InputError naming "file:line: #id", the entity and the attribute.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ssimarch/core/error.hpp"
+#include "ssimarch/core/vec3.hpp"
+#include "ssimarch/io/step_part21.hpp"
+#include "text_cat.hpp"
+
+namespace ssimarch::internal {
+
+class StepAccess {
+ public:
+  explicit StepAccess(const StepFile& file) : file_(file) {}
+  const StepFile& file() const { return file_; }
+
+  [[noreturn]] void fail(const StepInstance& inst, const std::string& message) const {
+    throw InputError(file_.where(inst), cat(inst.type_text(), ": ", message));
+  }
+  /// The record `type` of `inst`, or (simple instance) its only record when `type` is empty.
+  const StepRecord& record(const StepInstance& inst, const std::string& type) const {
+    const StepRecord* r = type.empty() ? &inst.records.front() : inst.record(type);
+    if (!r) fail(inst, cat("has no ", type, " part"));
+    return *r;
+  }
+  /// Parameter `k` of a record, which must have at least `k + 1`.
+  const StepValue& param(const StepInstance& inst, const StepRecord& r, std::size_t k, const char* what) const {
+    if (k >= r.params.size())
+      fail(inst, cat("attribute ", what, " (parameter ", k + 1, " of ", r.type, ") is missing"));
+    return r.params[k];
+  }
+  double number(const StepInstance& inst, const StepValue& v, const char* what) const {
+    const StepValue* x = &v;
+    if (x->kind == StepValue::Kind::kTyped && x->items.size() == 1) x = &x->items[0];  // LENGTH_MEASURE(2.)
+    if (!x->is_number()) fail(inst, cat(what, " must be a number"));
+    return x->number;
+  }
+  int integer(const StepInstance& inst, const StepValue& v, const char* what, int lo, int hi) const {
+    const double x = number(inst, v, what);
+    if (v.kind != StepValue::Kind::kInteger || x < lo || x > hi)
+      fail(inst, cat(what, " must be an integer in [", lo, ", ", hi, "]"));
+    return static_cast<int>(x);
+  }
+  const std::vector<StepValue>& list(const StepInstance& inst, const StepValue& v, const char* what) const {
+    if (v.kind != StepValue::Kind::kList) fail(inst, cat(what, " must be a list"));
+    return v.items;
+  }
+  std::vector<double> numbers(const StepInstance& inst, const StepValue& v, const char* what) const {
+    std::vector<double> out;
+    for (const StepValue& x : list(inst, v, what)) out.push_back(number(inst, x, what));
+    return out;
+  }
+  bool boolean(const StepInstance& inst, const StepValue& v, const char* what) const {
+    if (v.kind != StepValue::Kind::kEnum || (v.text != "T" && v.text != "F"))
+      fail(inst, cat(what, " must be .T. or .F."));
+    return v.text == "T";
+  }
+  const StepInstance& ref(const StepInstance& inst, const StepValue& v, const char* what) const {
+    if (v.kind != StepValue::Kind::kRef) fail(inst, cat(what, " must be a reference #id"));
+    return file_.at(v.ref, inst);
+  }
+  /// CARTESIAN_POINT or DIRECTION coordinates (2D points get z = 0).
+  Vec3 coordinates(const StepInstance& inst, const char* type) const {
+    const StepRecord& r = record(inst, type);
+    const std::vector<double> c = numbers(inst, param(inst, r, 1, "coordinates"), "coordinates");
+    if (c.size() < 2 || c.size() > 3) fail(inst, "must have 2 or 3 coordinates");
+    return {c[0], c[1], c.size() == 3 ? c[2] : 0.0};
+  }
+  Vec3 point(const StepInstance& from, const StepValue& v, const char* what) const {
+    return coordinates(ref(from, v, what), "CARTESIAN_POINT");
+  }
+
+ private:
+  const StepFile& file_;
+};
+
+/// An AXIS2_PLACEMENT_3D: location, axis (default z) and reference direction (default: none,
+/// Frame::from_axis's choice, which is x for the z axis as ISO 10303-42 has it).
+struct StepPlacement {
+  Vec3 origin, axis;
+  std::optional<Vec3> reference;
+};
+StepPlacement step_placement(const StepAccess& a, const StepInstance& inst);
+
+/// Points along a face's boundary (see io/step_reader.hpp, "Trimming"): empty when the face
+/// has no bounds.
+std::vector<Vec3> step_boundary_points(const StepAccess& a, const StepInstance& face);
+
+}  // namespace ssimarch::internal

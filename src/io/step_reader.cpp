@@ -1,0 +1,249 @@
+// STEP faces and surfaces -> ssimarch surfaces (ISO 10303-42 §4.4 geometry: the surfaces'
+// parameterisations below are the standard's, which are those of surface/'s primitives).
+#include "ssimarch/io/step_reader.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "ssimarch/io/json_reader.hpp"
+#include "ssimarch/surface/frame.hpp"
+#include "step_access.hpp"
+#include "text_cat.hpp"
+
+namespace ssimarch {
+
+using internal::cat;
+using internal::StepAccess;
+using internal::StepPlacement;
+
+namespace {
+
+bool is_face(const StepInstance& inst) {
+  const std::string& t = inst.records.front().type;
+  return inst.records.size() == 1 && (t == "ADVANCED_FACE" || t == "FACE_SURFACE");
+}
+
+// The surface's name for listings: the defining entity of a complex B-spline instance.
+std::string surface_type_of(const StepInstance& s) {
+  for (const char* t : {"RATIONAL_B_SPLINE_SURFACE", "B_SPLINE_SURFACE_WITH_KNOTS", "BEZIER_SURFACE"})
+    if (s.records.size() > 1 && s.record(t)) return t;
+  return s.type_text();
+}
+
+// Where the parameters of a surface are bounded: a face's boundary points, or the rectangle of
+// a RECTANGULAR_TRIMMED_SURFACE (u1, u2, v1, v2).
+struct Trim {
+  std::vector<Vec3> boundary;
+  std::optional<std::array<double, 4>> rectangle;
+};
+
+// The interval of the coordinate `axis` (0, 1, 2 of a frame's local coordinates) over the
+// boundary points, or the rectangle's side; fails for neither.
+Interval trimmed(const StepAccess& a, const StepInstance& s, const Trim& trim, const Frame& f, int axis, int side) {
+  if (trim.rectangle) {
+    const auto& r = *trim.rectangle;
+    return {std::min(r[2 * side], r[2 * side + 1]), std::max(r[2 * side], r[2 * side + 1])};
+  }
+  if (trim.boundary.empty())
+    a.fail(s, "is unbounded: select a face whose boundary bounds it, or wrap it in a RECTANGULAR_TRIMMED_SURFACE");
+  Interval i{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+  for (const Vec3& p : trim.boundary) {
+    const double x = (p - f.origin).dot(axis == 0 ? f.e0 : axis == 1 ? f.e1 : f.e2);
+    i.lo = std::min(i.lo, x);
+    i.hi = std::max(i.hi, x);
+  }
+  return i;
+}
+
+template <class Make>
+Surface checked(const StepAccess& a, const StepInstance& s, Make make) {
+  try {
+    return Surface(make());
+  } catch (const InputError& e) {
+    a.fail(s, e.message());
+  }
+}
+
+Surface elementary(const StepAccess& a, const StepInstance& s, const Trim& trim, double angle_unit) {
+  const StepRecord& r = s.records.front();
+  const StepPlacement p = internal::step_placement(a, a.ref(s, a.param(s, r, 1, "position"), "position"));
+  const Frame f = Frame::from_axis(p.origin, p.axis, p.reference, a.file().where(s));
+  auto length = [&](std::size_t k, const char* what) { return a.number(s, a.param(s, r, k, what), what); };
+  if (r.type == "PLANE") {
+    const ParamDomain d{trimmed(a, s, trim, f, 0, 0), trimmed(a, s, trim, f, 1, 1)};
+    return checked(a, s, [&] { return Plane(p.origin, p.axis, d, p.reference); });
+  }
+  if (r.type == "CYLINDRICAL_SURFACE") {
+    const double radius = length(2, "radius");
+    const Interval v = trimmed(a, s, trim, f, 2, 1);
+    return checked(a, s, [&] { return Cylinder(p.origin, p.axis, radius, v, p.reference); });
+  }
+  if (r.type == "CONICAL_SURFACE") {
+    // STEP: radius R at v = 0, v along the axis from the placement; ours: v from the apex.
+    const double radius = length(2, "radius"), alpha = length(3, "semi_angle") * angle_unit;
+    if (!(alpha > 0 && alpha < std::numbers::pi / 2)) a.fail(s, "semi_angle must be in (0, 90) degrees");
+    const double shift = radius / std::tan(alpha);
+    const Vec3 apex = f.to_world(0.0, 0.0, -shift);
+    Interval v = trimmed(a, s, trim, f, 2, 1);
+    v = {v.lo + shift, v.hi + shift};
+    return checked(a, s, [&] { return Cone(apex, p.axis, alpha, v, p.reference); });
+  }
+  if (r.type == "SPHERICAL_SURFACE") {
+    const double radius = length(2, "radius");
+    return checked(a, s, [&] { return Sphere(p.origin, radius, p.axis, p.reference); });
+  }
+  const double major = length(2, "major_radius"), minor = length(3, "minor_radius");
+  return checked(a, s, [&] { return Torus(p.origin, p.axis, major, minor, p.reference); });
+}
+
+// Knots from distinct values and multiplicities, at most `expected` of them.
+std::vector<double> expand_knots(const StepAccess& a, const StepInstance& s, const StepValue& mults,
+                                 const StepValue& values, std::size_t expected) {
+  const std::vector<double> m = a.numbers(s, mults, "knot multiplicities"), k = a.numbers(s, values, "knots");
+  if (m.size() != k.size()) a.fail(s, cat("has ", m.size(), " multiplicities for ", k.size(), " knots"));
+  std::vector<double> out;
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    if (!(m[i] >= 1 && m[i] == std::floor(m[i]) && out.size() + static_cast<std::size_t>(m[i]) <= expected))
+      a.fail(s, cat("knot multiplicities must be integers >= 1 adding up to ", expected, " (control points + degree + 1)"));
+    out.insert(out.end(), static_cast<std::size_t>(m[i]), k[i]);
+  }
+  if (out.size() != expected)
+    a.fail(s, cat("knot multiplicities add up to ", out.size(), ", not ", expected, " (control points + degree + 1)"));
+  return out;
+}
+
+std::vector<double> bezier_knots(int degree) {
+  std::vector<double> k(static_cast<std::size_t>(degree) + 1, 0.0);
+  k.resize(2 * k.size(), 1.0);
+  return k;
+}
+
+// B_SPLINE_SURFACE_WITH_KNOTS and BEZIER_SURFACE, simple or in a complex instance with
+// RATIONAL_B_SPLINE_SURFACE (ISO 10303-42 §4.4.16-4.4.20).
+Surface spline_surface(const StepAccess& a, const StepInstance& s) {
+  const StepRecord* base = s.record("B_SPLINE_SURFACE");
+  const std::size_t o = base ? 0 : 1;  // a simple instance starts with its name
+  const StepRecord& b = base ? *base : s.records.front();
+  const int p = a.integer(s, a.param(s, b, o, "u_degree"), "u_degree", 1, 64);
+  const int q = a.integer(s, a.param(s, b, o + 1, "v_degree"), "v_degree", 1, 64);
+  ControlNet net;
+  for (const StepValue& row : a.list(s, a.param(s, b, o + 2, "control_points_list"), "control_points_list")) {
+    net.emplace_back();
+    for (const StepValue& v : a.list(s, row, "a row of control points")) net.back().push_back(a.point(s, v, "control point"));
+  }
+  if (net.empty() || net[0].empty()) a.fail(s, "has no control points");
+  const std::size_t nu = net.size(), nv = net[0].size();
+  std::vector<double> ku, kv;
+  if (s.record("BEZIER_SURFACE")) {
+    ku = bezier_knots(p);
+    kv = bezier_knots(q);
+  } else {
+    const StepRecord& k = base ? a.record(s, "B_SPLINE_SURFACE_WITH_KNOTS") : b;
+    const std::size_t ko = base ? 0 : 8;
+    ku = expand_knots(a, s, a.param(s, k, ko, "u_multiplicities"), a.param(s, k, ko + 2, "u_knots"), nu + p + 1);
+    kv = expand_knots(a, s, a.param(s, k, ko + 1, "v_multiplicities"), a.param(s, k, ko + 3, "v_knots"), nv + q + 1);
+  }
+  WeightNet w;
+  if (const StepRecord* rat = s.record("RATIONAL_B_SPLINE_SURFACE"))
+    for (const StepValue& row : a.list(s, a.param(s, *rat, 0, "weights_data"), "weights_data"))
+      w.push_back(a.numbers(s, row, "weights"));
+  return checked(a, s, [&] { return BSplineSurface(p, q, ku, kv, net, w, a.file().where(s)); });
+}
+
+Surface any_surface(const StepAccess& a, const StepInstance& s, Trim trim, double angle_unit) {
+  const std::string& t = s.records.front().type;
+  if (s.records.size() == 1 && (t == "PLANE" || t == "CYLINDRICAL_SURFACE" || t == "CONICAL_SURFACE" ||
+                                t == "SPHERICAL_SURFACE" || t == "TOROIDAL_SURFACE"))
+    return elementary(a, s, trim, angle_unit);
+  if (s.record("B_SPLINE_SURFACE_WITH_KNOTS") || s.record("BEZIER_SURFACE")) return spline_surface(a, s);
+  if (s.records.size() == 1 && t == "RECTANGULAR_TRIMMED_SURFACE") {
+    const StepRecord& r = s.records.front();
+    std::array<double, 4> rect{};
+    for (std::size_t k = 0; k < 4; ++k) rect[k] = a.number(s, a.param(s, r, 2 + k, "trim parameter"), "trim parameter");
+    const StepInstance& basis = a.ref(s, r.params[1], "basis_surface");
+    if (&basis == &s) a.fail(s, "trims itself");
+    if (basis.records.front().type == "RECTANGULAR_TRIMMED_SURFACE") a.fail(s, "trims a trimmed surface");
+    return any_surface(a, basis, Trim{{}, rect}, angle_unit);
+  }
+  a.fail(s, "is not a surface type this reader knows (PLANE, CYLINDRICAL_SURFACE, CONICAL_SURFACE, "
+            "SPHERICAL_SURFACE, TOROIDAL_SURFACE, B_SPLINE_SURFACE_WITH_KNOTS, BEZIER_SURFACE, rational ones, "
+            "RECTANGULAR_TRIMMED_SURFACE)");
+}
+
+// Radians per plane-angle unit: a CONVERSION_BASED_UNIT with PLANE_ANGLE_UNIT (ISO 10303-41)
+// whose factor is a PLANE_ANGLE_MEASURE_WITH_UNIT in radians, e.g. 0.0174532925 for degrees.
+double plane_angle_unit(const StepAccess& a) {
+  for (std::int64_t id : a.file().order) {
+    const StepInstance& u = *a.file().find(id);
+    const StepRecord* conv = u.record("CONVERSION_BASED_UNIT");
+    if (!conv || !u.record("PLANE_ANGLE_UNIT")) continue;
+    const StepInstance& m = a.ref(u, a.param(u, *conv, 1, "conversion_factor"), "conversion_factor");
+    const double f = a.number(m, a.param(m, m.records.front(), 0, "value_component"), "value_component");
+    if (!(f > 0)) a.fail(m, "an angle unit must be > 0");
+    return f;
+  }
+  return 1.0;
+}
+
+}  // namespace
+
+StepModel::StepModel(StepFile file) : file_(std::move(file)) {
+  const StepAccess a(file_);
+  angle_unit_ = plane_angle_unit(a);
+  for (std::int64_t id : file_.order) {
+    const StepInstance& f = *file_.find(id);
+    if (!is_face(f)) continue;
+    const StepRecord& r = f.records.front();
+    const StepInstance& s = a.ref(f, a.param(f, r, 2, "face_geometry"), "face_geometry");
+    faces_.push_back({static_cast<int>(faces_.size()) + 1, id, s.id, f.line, surface_type_of(s),
+                      a.boolean(f, a.param(f, r, 3, "same_sense"), "same_sense")});
+  }
+}
+
+StepModel StepModel::read(const std::filesystem::path& path, const InputLimits& limits) {
+  return StepModel(read_step_file(path, limits));
+}
+
+const StepFace& StepModel::face(int index, const std::string& where) const {
+  if (index < 1 || static_cast<std::size_t>(index) > faces_.size())
+    throw InputError(where, cat("face ", index, " does not exist: ", file_.source, " has ", faces_.size(), " faces, numbered from 1"));
+  return faces_[static_cast<std::size_t>(index) - 1];
+}
+
+Surface StepModel::surface(std::int64_t entity) const {
+  const StepInstance* inst = file_.find(entity);
+  if (!inst) throw InputError(file_.source, cat("has no instance #", entity));
+  const StepAccess a(file_);
+  if (!is_face(*inst)) return any_surface(a, *inst, {}, angle_unit_);
+  const StepInstance& s = a.ref(*inst, inst->records.front().params.at(2), "face_geometry");
+  return any_surface(a, s, Trim{internal::step_boundary_points(a, *inst), std::nullopt}, angle_unit_);
+}
+
+BSplineCurve StepModel::bspline_curve(std::int64_t entity) const {
+  const StepInstance* c = file_.find(entity);
+  if (!c) throw InputError(file_.source, cat("has no instance #", entity));
+  const StepAccess a(file_);
+  if (c->records.size() != 1 || c->records.front().type != "B_SPLINE_CURVE_WITH_KNOTS")
+    a.fail(*c, "is not a (non-rational) B_SPLINE_CURVE_WITH_KNOTS");
+  const StepRecord& r = c->records.front();
+  BSplineCurve b;
+  b.degree = a.integer(*c, a.param(*c, r, 1, "degree"), "degree", 1, 64);
+  for (const StepValue& v : a.list(*c, a.param(*c, r, 2, "control_points_list"), "control_points_list")) {
+    const StepInstance& pt = a.ref(*c, v, "control point");
+    const std::vector<double> x = a.numbers(pt, a.param(pt, a.record(pt, "CARTESIAN_POINT"), 1, "coordinates"), "coordinates");
+    if (!b.control_points.empty() && x.size() != static_cast<std::size_t>(b.control_points[0].size()))
+      a.fail(pt, "has another dimension than the curve's first control point");
+    b.control_points.push_back(Eigen::Map<const VecX>(x.data(), static_cast<Eigen::Index>(x.size())));
+  }
+  if (b.control_points.size() < static_cast<std::size_t>(b.degree) + 1) a.fail(*c, "has fewer than degree + 1 control points");
+  b.knots = expand_knots(a, *c, a.param(*c, r, 6, "knot_multiplicities"), a.param(*c, r, 7, "knots"),
+                         b.control_points.size() + static_cast<std::size_t>(b.degree) + 1);
+  for (std::size_t i = 1; i < b.knots.size(); ++i)
+    if (!(b.knots[i] >= b.knots[i - 1])) a.fail(*c, "knots must not decrease");
+  return b;
+}
+
+}  // namespace ssimarch
