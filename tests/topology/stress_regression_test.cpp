@@ -110,11 +110,12 @@ TEST(StressRegression, ExcursionOutsideTheDomainIsNotJumped) {
   constexpr int kSamples = 20000;
   double previous = 0;
   for (int i = 0; i <= kSamples; ++i) {
-    const double x[2] = {U.lo, V.lo + V.width() * i / kSamples};
-    double h = 0;
-    P.residual(x, &h);
-    if (i > 0 && (h > 0) != (previous > 0)) roots.push_back(x[1] - 0.5 * V.width() / kSamples);
-    previous = h;
+    // Sized for every pair kind (Problem::residual indexes up to 4 unknowns and 3 equations).
+    const double x[4] = {U.lo, V.lo + V.width() * i / kSamples, 0, 0};
+    double h[3] = {0, 0, 0};
+    P.residual(x, h);
+    if (i > 0 && (h[0] > 0) != (previous > 0)) roots.push_back(x[1] - 0.5 * V.width() / kSamples);
+    previous = h[0];
   }
   ASSERT_GE(roots.size(), 2u);
   const TraceResult got = trace(json, "stress_seed1_74.json");
