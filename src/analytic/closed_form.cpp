@@ -175,6 +175,7 @@ std::optional<ClosedFormResult> closed_form_intersection(const Problem& problem,
           continue;
         }
         out.result.curves.push_back(sample_conic(piece, deviation, max_chord));
+        out.result.curves.back().tangential_contact = piece.contact == Contact::kTangential;  // a double root
         out.conics.push_back(piece);
       }
     }

@@ -93,6 +93,17 @@ CorrectorResult solve_on_plane(const Problem& P, const VecX& guess, const Vec3& 
   return r;
 }
 
+int bound_left_at(const Problem& P, const VecX& x, const VecX& dx) {
+  for (int i = 0; i < P.dim() && i < dx.size(); ++i) {
+    if (P.periods()[static_cast<std::size_t>(i)] > 0) continue;
+    const Interval& b = P.bounds()[static_cast<std::size_t>(i)];
+    if ((std::fabs(x[i] - b.lo) <= 1e-12 * (1 + std::fabs(b.lo)) && dx[i] < 0) ||
+        (std::fabs(x[i] - b.hi) <= 1e-12 * (1 + std::fabs(b.hi)) && dx[i] > 0))
+      return i;
+  }
+  return -1;
+}
+
 const Pole* crossed_pole(const Problem& P, const std::vector<Pole>& poles, const CurvePoint& cur, const VecX& x1) {
   const Crossing c = first_crossing(P, problem_trims(P), cur, x1);
   if (c.unknown < 0) return nullptr;

@@ -31,6 +31,13 @@ Event stuck_event(const Problem& problem, const CurvePoint& cur, double rank_rat
 Event land_on_domain_edge(const Problem& problem, const CurvePoint& cur, const VecX& x1, const CorrectorOptions& co,
                           TraceStats* stats, MarchResult* r);
 
+/// The unknown on whose bound x lies (within 1e-12 relative) while the tangent dx (in the
+/// unknowns) points out of the domain across it, or -1. A march starting there ends at once: its
+/// first step would leave the domain, and the corrector can put it back on the curve beyond an
+/// excursion outside the domain (a step over a stretch the domain does not hold; stress seed 1
+/// pair 74).
+int bound_left_at(const Problem& problem, const VecX& x, const VecX& dx);
+
 /// The pole whose degenerate edge the chord cur.x -> x1 crosses first (before any other
 /// boundary), or nullptr.
 const Pole* crossed_pole(const Problem& problem, const std::vector<Pole>& poles, const CurvePoint& cur, const VecX& x1);

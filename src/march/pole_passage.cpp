@@ -193,4 +193,8 @@ std::optional<CurvePoint> leave_pole(const Problem& P, const Pole& pole, const V
   return corrected_beyond(P, pole, chart_unknowns(P, pole, x, q, other), q, dir, distance, co);
 }
 
+VecX unknowns_beyond_pole(const Problem& P, const Pole& pole, const VecX& x, const Vec3& q) {
+  return chart_unknowns(P, pole, x, q, other_side(P, pole, x, pole.point));
+}
+
 }  // namespace ssimarch

@@ -275,6 +275,12 @@ MarchResult Tracer::march_until_event(const CurvePoint& start_point, Direction d
                     "the start point " + describe_point(start.p) + " is a singular point of the curve", VecX{}};
     return r;
   }
+  if (const int i = internal::bound_left_at(problem_, start.x, m.state.here.x[1]); i >= 0) {
+    r.event = Event{EventKind::kDomainEdge, BudgetBound::kNone,
+                    "starts on the domain edge " + problem_.unknown_names()[static_cast<std::size_t>(i)] + " and leaves the domain there",
+                    VecX{}};
+    return r;
+  }
   std::visit([&](auto& s) { s.start(frenet_from_jet(m.state.here, problem_.scale())); }, m.rule);
   // The closure allowance: rounding of the model's coordinates, plus the corrector tolerance
   // magnified by the conditioning of the point across the curve, 1/sin(theta) between the

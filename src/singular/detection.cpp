@@ -114,6 +114,7 @@ std::vector<SingularLocation> hunt_singular_points(const Problem& problem, const
     double cell = 0;
     const int n = options.regions.empty() ? options.grid : options.region_grid;
     for (const VecX& x0 : grid_starts(problem, box, n, &cell)) {
+      if (options.regions.empty() && options.consider && !options.consider(x0)) continue;
       // A box narrower than the grid of the whole domain still admits starts a domain cell away.
       const double reach = options.regions.empty() ? cell : std::max(cell, 1e-3 * problem.scale());
       const std::optional<VecX> x = newton_target(problem, x0, reach, options.max_sine);

@@ -118,18 +118,26 @@ void parametric_parametric(const Problem& pr, const VecX& x, LocalCurve* c) {
   c->status = LocalCurveStatus::kOk;
 }
 
-void implicit_implicit(const Problem& pr, const VecX& x, LocalCurve* c) {
+// Ratio |grad f| / |grad g| (dimensionless; model-unit implicit forms) below which an implicit
+// surface counts as singular at a point of an implicit-implicit pair (a cone's apex, where its
+// gradient vanishes and it has no tangent plane): the local curve is then built over the other
+// surface's tangent plane. (To join problem/singular_tolerances.hpp.)
+constexpr double kSingularSurfaceGradientRatio = 1e-3;
+
+// The surface `chart` over its tangent plane at the point of it nearest x (Newton along its
+// gradient), h = the surface `other` over that chart.
+void implicit_chart(const Surface& chart, const Surface& other, const VecX& x, LocalCurve* c) {
   Vec3 P0(x[0], x[1], x[2]);
   double f = 0;
   Vec3 grad;
   for (int it = 0; it < 60; ++it) {  // onto f = 0 along grad f
-    grad = implicit_gradient(pr.first(), P0, &f);
+    grad = implicit_gradient(chart, P0, &f);
     if (!(grad.squaredNorm() > 0)) return;
     Vec3 step = grad * (f / grad.squaredNorm());
     P0 -= step;
     if (step.norm() <= 1e-16 * (1 + P0.norm())) break;
   }
-  grad = implicit_gradient(pr.first(), P0, &f);
+  grad = implicit_gradient(chart, P0, &f);
   if (!(grad.norm() > 0)) return;
   c->origin = P0;
   c->normal = grad.normalized();
@@ -139,16 +147,28 @@ void implicit_implicit(const Problem& pr, const VecX& x, LocalCurve* c) {
   Vec3T<LocalJet> Pj;
   for (int it = 0; it <= kLocalOrder + 1; ++it) {
     Pj = from_frame(P0, c->e1, c->e2, c->normal, S, T, W);
-    W -= pr.first().value(Pj) / grad.norm();
+    W -= chart.value(Pj) / grad.norm();
   }
   Pj = from_frame(P0, c->e1, c->e2, c->normal, S, T, W);
-  const Vec3 gg = implicit_gradient(pr.second(), P0, nullptr);
-  if (!(gg.norm() > 0)) return;
-  c->h = pr.second().value(Pj) / gg.norm();
+  // h in model units: `other` divided by its gradient's length, or by the chart's where `other`
+  // is singular at P0 (its gradient vanishes there: a cone's apex).
+  const double gg = implicit_gradient(other, P0, nullptr).norm();
+  const double unit = gg >= kSingularSurfaceGradientRatio * grad.norm() ? gg : grad.norm();
+  c->h = other.value(Pj) / unit;
   c->unknowns = {Pj.x, Pj.y, Pj.z};
   c->point = {Pj.x, Pj.y, Pj.z};
   c->base = P0;
   c->status = LocalCurveStatus::kOk;
+}
+
+void implicit_implicit(const Problem& pr, const VecX& x, LocalCurve* c) {
+  const Vec3 p(x[0], x[1], x[2]);
+  const double gf = implicit_gradient(pr.first(), p, nullptr).norm();
+  const double gg = implicit_gradient(pr.second(), p, nullptr).norm();
+  // The first surface singular at x (a cone's apex: grad f = 0, no tangent plane): the chart on
+  // the second, whose h then has the intersection's singular point there.
+  const bool first_singular = gf < kSingularSurfaceGradientRatio * gg;
+  implicit_chart(first_singular ? pr.second() : pr.first(), first_singular ? pr.first() : pr.second(), x, c);
 }
 
 }  // namespace

@@ -303,6 +303,21 @@ RootSearchResult turning_points(const Problem& P, int k, const RootSearchOptions
   return find_all_roots(s.equations, s.box, options);
 }
 
+std::vector<std::vector<Interval>> singular_point_regions(const Problem& P, long max_boxes) {
+  RootSearchOptions ro;
+  ro.max_boxes = max_boxes;
+  const System s = turning_system(P, 0);
+  const RootSearchResult r = find_all_roots(s.equations, s.box, ro);
+  std::vector<std::vector<Interval>> regions;
+  for (bool budget : {false, true})
+    for (const IntervalBox& y : merge_touching(r.undecided, budget)) {
+      std::vector<Interval> box;
+      for (const IntervalNumber& c : to_unknowns(s, y)) box.push_back({c.lo(), c.hi()});
+      regions.push_back(std::move(box));
+    }
+  return regions;
+}
+
 bool evaluates_on_intervals(const Surface& surface) {
   if (surface.get_if<Capsule>()) return false;
   if (const auto* b = surface.get_if<BSplineSurface>())

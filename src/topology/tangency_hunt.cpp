@@ -4,6 +4,7 @@
 
 #include "ssimarch/problem/singular_tolerances.hpp"
 #include "ssimarch/singular/detection.hpp"
+#include "ssimarch/topology/certified_start_points.hpp"
 
 namespace ssimarch {
 
@@ -19,6 +20,30 @@ bool near_contact_curve(const Vec3& p, const std::vector<TracedCurve>& curves, d
       const double tau = L2 > 0 ? std::clamp((p - a).dot(seg) / L2, 0.0, 1.0) : 0.0;
       if ((p - (a + tau * seg)).norm() <= radius) return true;
     }
+  }
+  return false;
+}
+
+// Types with real half-branches leaving the point (isolated points and points of a contact
+// curve have none to trace).
+bool has_real_branches(SingularType t) {
+  return t != SingularType::kRegular && t != SingularType::kIsolated && t != SingularType::kTangentialContact &&
+         t != SingularType::kTangentLineCrossing;
+}
+
+// The share of the start-point box budget the hunt's own turning-system search may use when no
+// certified search ran (a fifth: its unexplored boxes are still hunted, on the grid).
+constexpr long kHuntSearchBudgetShare = 5;
+
+// Whether x lies within one cell of a grid of `grid` samples per unknown from one of the boxes.
+bool near_box(const Problem& P, const std::vector<std::vector<Interval>>& boxes, const VecX& x, int grid) {
+  for (const auto& b : boxes) {
+    bool inside = true;
+    for (std::size_t i = 0; i < b.size() && inside; ++i) {
+      const double cell = P.bounds()[i].width() / (grid - 1);
+      inside = x[static_cast<Eigen::Index>(i)] >= b[i].lo - cell && x[static_cast<Eigen::Index>(i)] <= b[i].hi + cell;
+    }
+    if (inside) return true;
   }
   return false;
 }
@@ -72,7 +97,9 @@ bool insert_into(SingularRegistry* registry, int n, int ci, TracedCurve* c, doub
 
 void attach_crossings(SingularRegistry* registry, std::vector<TracedCurve>* curves, double radius) {
   for (std::size_t n = 0; n < registry->nodes().size(); ++n) {
-    if (registry->nodes()[n].kind.type != SingularType::kTangentLineCrossing) continue;
+    // Crossings with contact curves, and singular points the hunt found that no curve met yet.
+    const SingularNode& node = registry->nodes()[n];
+    if (node.kind.type != SingularType::kTangentLineCrossing && !node.curves.empty()) continue;
     for (std::size_t ci = 0; ci < curves->size(); ++ci) {
       TracedCurve& c = (*curves)[ci];
       const auto& on = registry->nodes()[n].curves;
@@ -95,6 +122,7 @@ void hunt_tangencies(const Tracer& tracer, const StartPointSearch& search, Singu
                      std::vector<TracedCurve>* curves, std::vector<SingularPointReport>* isolated) {
   const Problem& P = tracer.problem();
   HuntOptions hunt;
+  std::vector<std::vector<Interval>> candidates;
   if (search.method == "certified") {
     if (search.certified) return;  // no singular point in the domain
     for (const UncertainRegion& u : search.uncertain_regions) hunt.regions.push_back(u.box);
@@ -103,6 +131,13 @@ void hunt_tangencies(const Tracer& tracer, const StartPointSearch& search, Singu
     if (P.kind() == PairKind::kParametricImplicit && samples > static_cast<std::size_t>(hunt.grid * hunt.grid)) hunt.regions.clear();
   } else if (P.kind() != PairKind::kParametricImplicit) {
     return;
+  } else if (evaluates_on_intervals(P.first()) && evaluates_on_intervals(P.second())) {
+    // Given or sampled start points: the boxes one turning system leaves undecided (unexplored
+    // ones included) hold every singular point, so only the grid starts within a cell of them are
+    // hunted (each start costs a local curve: the whole grid took seconds on thesis pair 1).
+    candidates = singular_point_regions(P, std::max(1L, tracer.options().start_box_budget / kHuntSearchBudgetShare));
+    if (candidates.empty()) return;
+    hunt.consider = [&](const VecX& x) { return near_box(P, candidates, x, hunt.grid); };
   }
   // A grid cell from a singular point sin(theta) is about a cell's fraction of the scale; 0.2
   // leaves room while skipping the transversal rest of the curve.
@@ -122,6 +157,10 @@ void hunt_tangencies(const Tracer& tracer, const StartPointSearch& search, Singu
     bool known = false;
     for (const SingularPointReport& r : *isolated) known = known || (r.p - s.point).norm() <= merge;
     if (kind.type == SingularType::kIsolated && !known) isolated->push_back(make_report(s, kind, {}));
+    // A singular point with real branches that no march stopped at (a trace stepped over it,
+    // e.g. a node within its first step): a node of the network; attach_crossings makes it a
+    // point of the curves passing it, the rest of its half-branches are traced from it.
+    if (has_real_branches(kind.type)) registry->add(s);
   }
 }
 

@@ -4,8 +4,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <utility>
 
+#include "ssimarch/march/pole_passage.hpp"
 #include "ssimarch/march/tracer.hpp"
+#include "ssimarch/problem/poles_and_trims.hpp"
 #include "ssimarch/singular/classify.hpp"
 
 namespace ssimarch {
@@ -137,11 +141,59 @@ bool passes(const Vec3& s, const Vec3& a, const Vec3& b, double ds) {
   return (s - a - (along / L2) * c).norm() <= 0.05 * ds;
 }
 
+// The first bound of the domain the unknowns' chord from -> to crosses: the fraction of the chord
+// where it does, and the unknown (-1: none; periodic unknowns have no bound).
+std::pair<double, int> first_exit(const Problem& P, const VecX& from, const VecX& to) {
+  const VecX d = P.difference(from, to);
+  std::pair<double, int> out{1.0, -1};
+  for (int i = 0; i < P.dim(); ++i) {
+    const Interval& B = P.bounds()[static_cast<std::size_t>(i)];
+    if (P.periods()[static_cast<std::size_t>(i)] > 0 || d[i] == 0) continue;
+    const double x = from[i], bound = d[i] > 0 ? B.hi : B.lo;
+    if ((x + d[i] - bound) * (d[i] > 0 ? 1 : -1) > 0 && (bound - x) / d[i] <= out.first) out = {(bound - x) / d[i], i};
+  }
+  return out;
+}
+
+// A step of the contact march that left the domain over a pole (a degenerate edge mapped to one
+// point, march/pole_passage.hpp) when the contact curve goes through that point: the curve is one
+// curve through the pole, as a transversal curve is (docs/math/poles.md). The continuation is the
+// contact point about ds beyond the pole, found from the mirror of cur across it in the pole's
+// chart; empty when there is none (the curve ends at the edge).
+struct PoleCrossing {
+  CurvePoint at_pole;
+  ContactPoint beyond;
+};
+std::optional<PoleCrossing> cross_pole(const Problem& P, const std::vector<Pole>& poles, const ContactPoint& cur,
+                                       const VecX& next_x, const Vec3& travel, double ds, const ContactOptions& o) {
+  const auto [fraction, unknown] = first_exit(P, cur.location.x, next_x);
+  if (unknown < 0) return std::nullopt;
+  const Interval& B = P.bounds()[static_cast<std::size_t>(unknown)];
+  for (const Pole& pole : poles) {
+    const double bound = pole.upper ? B.hi : B.lo;
+    if (pole.unknown != unknown || pole.value != bound) continue;
+    const Vec3 to_pole = pole.point - cur.location.point;
+    if (to_pole.norm() > 1.5 * ds || to_pole.dot(travel) < 0) return std::nullopt;
+    const Vec3 q = pole.point + std::max(to_pole.norm(), 0.25 * ds) * travel;
+    ContactPoint beyond = correct_onto_contact(P, unknowns_beyond_pole(P, pole, cur.location.x, q), o);
+    const Vec3 past = beyond.location.point - pole.point;
+    if (!on_contact_curve(beyond) || !P.inside(beyond.location.x, 1e-9) || past.dot(travel) <= 0 ||
+        (beyond.location.point - q).norm() > 0.5 * (q - pole.point).norm())
+      return std::nullopt;
+    VecX x = cur.location.x;
+    x[pole.unknown] = pole.value;
+    const Vec3 t = (past.normalized() + to_pole.normalized()).normalized();  // the chords' bisector
+    return PoleCrossing{CurvePoint{x, pole.point, t.allFinite() ? t : travel}, std::move(beyond)};
+  }
+  return std::nullopt;
+}
+
 // Marches from `start` along `sign` * its kernel direction until closure, the domain edge, the
 // point budget or a failed correction; crossings are appended.
 Half march_contact(const Problem& P, const ContactPoint& start, double sign, double step, const ContactOptions& o,
                    std::vector<SingularLocation>* crossings) {
   Half out;
+  const std::vector<Pole> poles = problem_poles(P);
   ContactPoint cur = start;
   Vec3 travel = sign * start.tangent;
   out.points.push_back({cur.location.x, cur.location.point, travel});
@@ -159,15 +211,27 @@ Half march_contact(const Problem& P, const ContactPoint& start, double sign, dou
       return out;
     }
     if (!P.inside(next.location.x, 1e-9)) {
-      // Onto the bound: the fraction of the step where the unknowns' chord leaves the domain.
-      const VecX d = P.difference(cur.location.x, next.location.x);
-      double f = 1;
-      for (int i = 0; i < P.dim(); ++i) {
-        const Interval& B = P.bounds()[static_cast<std::size_t>(i)];
-        if (P.periods()[static_cast<std::size_t>(i)] > 0 || d[i] == 0) continue;
-        const double x = cur.location.x[i], bound = d[i] > 0 ? B.hi : B.lo;
-        if ((x + d[i] - bound) * (d[i] > 0 ? 1 : -1) > 0) f = std::min(f, (bound - x) / d[i]);
+      // A curve started on the domain's edge (a pole) comes back to it there: closed.
+      const Vec3 to_start = start.location.point - cur.location.point;
+      if (out.points.size() >= 3 && to_start.norm() <= 1.5 * ds && to_start.dot(travel) > 0) {
+        out.length += arc_length_estimate(cur.location.point, travel, start.location.point, sign * start.tangent);
+        out.points.push_back({start.location.x, start.location.point, sign * start.tangent});
+        out.closed = true;
+        out.end = Termination::kClosedLoop;
+        return out;
       }
+      if (auto pass = cross_pole(P, poles, cur, next.location.x, travel, ds, o)) {
+        const Vec3 t_beyond = (pass->beyond.location.point - pass->at_pole.p).normalized();
+        out.length += arc_length_estimate(cur.location.point, travel, pass->at_pole.p, pass->at_pole.t) +
+                      arc_length_estimate(pass->at_pole.p, pass->at_pole.t, pass->beyond.location.point, t_beyond);
+        out.points.push_back(pass->at_pole);
+        out.points.push_back({pass->beyond.location.x, pass->beyond.location.point, t_beyond});
+        travel = t_beyond;
+        cur = std::move(pass->beyond);
+        continue;
+      }
+      // Onto the bound: the fraction of the step where the unknowns' chord leaves the domain.
+      const double f = first_exit(P, cur.location.x, next.location.x).first;
       ContactPoint edge = advance(P, cur, dir, f * ds, o);
       out.end = Termination::kLeftDomain;
       out.message = "the curve of tangential contact leaves the domain at " + describe_point(cur.location.point);
@@ -245,7 +309,15 @@ ContactTrace trace_tangential_contact(const Problem& P, const VecX& x0, const Co
   for (auto it = backward.points.rbegin(); it != backward.points.rend(); ++it) c.points.push_back({it->x, it->p, -it->t});
   c.points.insert(c.points.end(), forward.points.begin() + 1, forward.points.end());
   c.length = forward.length + backward.length;
-  c.closed = false;
+  // Both halves stopped at one point of the domain's edge (a pole the curve passes, or a seam):
+  // the ends meet, the curve is closed.
+  const double meet = 1e-9 * std::max(1.0, P.scale());
+  c.closed = forward.end == Termination::kLeftDomain && backward.end == Termination::kLeftDomain && c.points.size() > 3 &&
+             (c.points.front().p - c.points.back().p).norm() <= meet;
+  if (c.closed) {
+    c.points.back() = c.points.front();
+    return out;
+  }
   c.start_end = backward.end;
   c.start_message = backward.message;
   c.end_end = forward.end;

@@ -4,9 +4,12 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "ssimarch/march/predictor.hpp"
 #include "ssimarch/problem/curve_jet.hpp"
+#include "ssimarch/problem/gauss_newton.hpp"
+#include "ssimarch/problem/poles_and_trims.hpp"
 #include "ssimarch/topology/branch_length_bound.hpp"
 #include "ssimarch/topology/certified_start_points.hpp"
 #include "ssimarch/singular/detection.hpp"
@@ -79,6 +82,38 @@ TracedCurve trace_branch_through(const Tracer& tracer, const CurvePoint& start, 
   return curve;
 }
 
+// A half-branch whose exit point (a short step from the node, singular/half_branches.hpp) lies
+// outside the domain leaves it before that point: the march from the node ends on the bound the
+// chord node -> exit point crosses first (a node next to the domain's edge, OCCT bug32850). Empty
+// when the exit point is inside, or no bound of the unknowns is crossed.
+std::optional<BranchMarch> leave_before_exit(const Tracer& tracer, const SingularNode& node, const HalfBranch& b) {
+  const Problem& P = tracer.problem();
+  if (P.inside(b.exit_x)) return std::nullopt;
+  const VecX& x0 = node.location.x;
+  const VecX d = P.difference(x0, b.exit_x);
+  int unknown = -1;
+  double fraction = 2, value = 0;
+  for (int i = 0; i < P.dim(); ++i) {
+    const Interval& B = P.bounds()[static_cast<std::size_t>(i)];
+    if (P.periods()[static_cast<std::size_t>(i)] > 0 || d[i] == 0) continue;
+    for (double bound : {B.lo, B.hi}) {
+      const double f = (bound - x0[i]) / d[i];
+      if (f >= 0 && f <= 1 && f < fraction) fraction = f, unknown = i, value = bound;
+    }
+  }
+  if (unknown < 0) return std::nullopt;
+  const CorrectorOptions co{tracer.options().tolerance, tracer.options().max_corrector_iterations};
+  const CorrectorResult r = solve_with_fixed_unknown(P, VecX(x0 + fraction * d), unknown, value, co);
+  if (r.status != CorrectorStatus::kConverged || !P.inside(r.x, 1e-9 * (1 + std::fabs(value)))) return std::nullopt;
+  BranchMarch m;
+  m.points.push_back({r.x, P.point(r.x), b.direction});
+  m.event = Event{EventKind::kDomainEdge, BudgetBound::kNone,
+                  "reached the domain edge " + P.unknown_names()[static_cast<std::size_t>(unknown)] + " = " + std::to_string(value) +
+                      " next to the " + std::string(to_string(node.kind.type)),
+                  VecX{}};
+  return m;
+}
+
 // The curve leaving node n along its unused half-branch k, and, unless it closes, the same branch
 // on the other side of the node (the half-branch continuing k).
 TracedCurve trace_from_half_branch(const Tracer& tracer, SingularRegistry* registry, int n, int k, int index,
@@ -92,7 +127,8 @@ TracedCurve trace_from_half_branch(const Tracer& tracer, SingularRegistry* regis
     const HalfBranch& b = node.branches[static_cast<std::size_t>(h)];
     BranchMarch m;
     m.points.push_back({node.location.x, node.location.point, b.tangent_3d});
-    BranchMarch rest = march_branch(tracer, exit_of(h), nullptr, registry, index, stats, n, h);
+    std::optional<BranchMarch> edge = leave_before_exit(tracer, node, b);
+    BranchMarch rest = edge ? std::move(*edge) : march_branch(tracer, exit_of(h), nullptr, registry, index, stats, n, h);
     m.points.insert(m.points.end(), rest.points.begin(), rest.points.end());
     m.length = arc_length_estimate(node.location.point, b.tangent_3d, rest.points.front().p, rest.points.front().t) + rest.length;
     m.event = rest.event;
@@ -281,6 +317,37 @@ void add_or_join(TracedCurve c, const std::vector<LooseEnd>& ends, std::vector<T
   }
 }
 
+// Curves traced before a singular point next to them was known can be a stub of a branch traced
+// later through that point (a start on the domain edge 1e-3 from a node, whose march could not
+// get past it: OCCT bug32850): a curve shorter than the resolution radius, through no singular
+// point, with every point within that radius of a longer curve is that curve's duplicate and goes
+// (each branch once, issue 11 item 2); the registry's curve indices follow.
+void drop_stubs(std::vector<TracedCurve>* curves, SingularRegistry* registry, double radius) {
+  for (std::size_t i = curves->size(); i-- > 0;) {
+    const TracedCurve& c = (*curves)[i];
+    if (c.length > radius || c.tangential_contact) continue;
+    bool through_node = false;  // a branch piece leaving a singular point is never a stub
+    for (std::size_t n = 0; registry && n < registry->nodes().size(); ++n) {
+      const std::vector<int>& on = registry->nodes()[n].curves;
+      through_node = through_node || std::find(on.begin(), on.end(), static_cast<int>(i)) != on.end();
+    }
+    if (through_node) continue;
+    std::vector<TracedCurve> others;
+    for (std::size_t j = 0; j < curves->size(); ++j)
+      if (j != i && (*curves)[j].length > c.length) others.push_back((*curves)[j]);
+    const bool covered = std::all_of(c.points.begin(), c.points.end(),
+                                     [&](const CurvePoint& p) { return near_traced_curve(p.p, others, radius); });
+    if (!covered || others.empty()) continue;
+    curves->erase(curves->begin() + static_cast<std::ptrdiff_t>(i));
+    for (std::size_t n = 0; registry && n < registry->nodes().size(); ++n) {
+      std::vector<int>& on = registry->node(static_cast<int>(n)).curves;
+      on.erase(std::remove(on.begin(), on.end(), static_cast<int>(i)), on.end());
+      for (int& k : on)
+        if (k > static_cast<int>(i)) --k;
+    }
+  }
+}
+
 }  // namespace
 
 TraceResult trace_all(const Tracer& unbounded, const std::vector<Vec3>& starts, const TraceAllOptions& options) {
@@ -305,12 +372,17 @@ TraceResult trace_all(const Tracer& unbounded, const std::vector<Vec3>& starts, 
   // Regular start points first: a start that had to be moved off a singular point lies within a
   // step of it, where closing the loop again is delicate (thesis ch. 6: start away from singular
   // points); such starts are usually on curves traced by then and skipped.
-  std::vector<VecX> starts_regular, starts_moved;
+  // A start left on a pole (no regular point next to it: the curve through the pole is a curve of
+  // tangential contact, or ends there) comes last: the curves through the pole are traced by then.
+  std::vector<VecX> starts_regular, starts_moved, starts_at_pole;
+  const std::vector<Pole> poles = problem_poles(P);
   for (const VecX& seed : seeds) {
     VecX x = regular_start(tracer, seed, &result.warnings);
-    ((x - seed).norm() == 0 ? starts_regular : starts_moved).push_back(std::move(x));
+    const bool moved = (x - seed).norm() != 0;
+    (moved ? starts_moved : pole_at(poles, x, 1e-9) ? starts_at_pole : starts_regular).push_back(std::move(x));
   }
   starts_regular.insert(starts_regular.end(), starts_moved.begin(), starts_moved.end());
+  starts_regular.insert(starts_regular.end(), starts_at_pole.begin(), starts_at_pole.end());
   for (const VecX& x : starts_regular) {
     if (near_traced_curve(P.point(x), result.curves, radius)) continue;
     if (reg && trace_contact_from(tracer, x, &result.curves, reg)) continue;  // a curve of tangential contact
@@ -332,6 +404,7 @@ TraceResult trace_all(const Tracer& unbounded, const std::vector<Vec3>& starts, 
       for (auto& p : c.points) p.x = P.wrap(p.x);
       result.curves.push_back(std::move(c));
     }
+  drop_stubs(&result.curves, reg, radius);
   for (TracedCurve& c : result.curves) explain_bound(bound, &c);
   if (reg) result.singular_points = registry.reports();
   result.stats.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();

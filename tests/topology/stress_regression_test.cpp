@@ -5,7 +5,10 @@
 //    trace must find the curves that the other formulation (surface A parametric, B implicit)
 //    finds by sampling its whole domain, a different start-point path;
 //  * 336 sphere x sphere parametric-parametric, whose circle was traced twice as one open curve:
-//    one closed curve of the closed-form length.
+//    one closed curve of the closed-form length;
+//  * 74 paraboloid x blob parametric-implicit, whose curve leaves the domain edge u = lo for a
+//    short excursion that one step from a start on that edge jumped over (a closed loop came
+//    back): open curves ending on the edge where h(lo, v) changes sign (dense sampling).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -94,6 +97,39 @@ TEST(StressRegression, SphereSphereCircleTracedOnceAndClosed) {
   ASSERT_EQ(got.curves.size(), 1u);
   EXPECT_TRUE(got.curves[0].closed);
   EXPECT_NEAR(got.curves[0].length, length, kRelativeLength * length);
+}
+
+TEST(StressRegression, ExcursionOutsideTheDomainIsNotJumped) {
+  const nlohmann::json json = read("stress_seed1_74.json");
+  const Scene scene = parse_scene(json.dump(), "stress_seed1_74.json");
+  const Problem P = scene.problem(scene.intersections.at(0));
+  ASSERT_EQ(P.kind(), PairKind::kParametricImplicit);
+  // The sign changes of h on the edge u = lo, by sampling (the reference).
+  const Interval U = P.bounds()[0], V = P.bounds()[1];
+  std::vector<double> roots;
+  constexpr int kSamples = 20000;
+  double previous = 0;
+  for (int i = 0; i <= kSamples; ++i) {
+    // Sized for every pair kind (Problem::residual indexes up to 4 unknowns and 3 equations).
+    const double x[4] = {U.lo, V.lo + V.width() * i / kSamples, 0, 0};
+    double h[3] = {0, 0, 0};
+    P.residual(x, h);
+    if (i > 0 && (h[0] > 0) != (previous > 0)) roots.push_back(x[1] - 0.5 * V.width() / kSamples);
+    previous = h[0];
+  }
+  ASSERT_GE(roots.size(), 2u);
+  const TraceResult got = trace(json, "stress_seed1_74.json");
+  std::vector<double> edge_ends;
+  for (const TracedCurve& c : got.curves) {
+    EXPECT_FALSE(c.closed);
+    EXPECT_EQ(c.start_end, Termination::kLeftDomain);
+    EXPECT_EQ(c.end_end, Termination::kLeftDomain);
+    for (const CurvePoint* e : {&c.points.front(), &c.points.back()})
+      if (std::fabs(e->x[0] - U.lo) <= 1e-9) edge_ends.push_back(e->x[1]);
+  }
+  std::sort(edge_ends.begin(), edge_ends.end());
+  ASSERT_EQ(edge_ends.size(), roots.size());
+  for (std::size_t k = 0; k < roots.size(); ++k) EXPECT_NEAR(edge_ends[k], roots[k], V.width() / kSamples);
 }
 
 }  // namespace

@@ -57,6 +57,9 @@ struct HuntOptions {
   // Starts whose Newton target (3D) this returns true for are not located: points already
   // explained (a traced curve of tangential contact, a known singular point).
   std::function<bool(const Vec3&)> skip;
+  // Starts of the whole domain's grid for which this returns false are not tried (their cells are
+  // known to hold no singular point); empty: every start.
+  std::function<bool(const VecX&)> consider;
   // Called with each new singular point as soon as it is found (before the next start), so that
   // `skip` can account for what the caller derived from it.
   std::function<void(const SingularLocation&)> on_found;

@@ -38,6 +38,14 @@ RootSearchResult boundary_roots(const Problem& P, int i, bool upper, const RootS
 /// undecided boxes.
 RootSearchResult turning_points(const Problem& P, int k, const RootSearchOptions& options);
 
+/// The regions of the unknowns that can hold a singular point of the curve: the undecided boxes
+/// (touching ones merged) of the turning system for the first unknown, searched with at most
+/// max_boxes boxes. A singular point is a root of every turning system (J_H loses rank there)
+/// whose Jacobian is singular, which the Krawczyk test never certifies, so every other box is
+/// free of them (docs/math/tangential_contact.md §4). Requires both surfaces to evaluate on
+/// intervals.
+std::vector<std::vector<Interval>> singular_point_regions(const Problem& P, long max_boxes);
+
 /// The boundary system of the face x_i = at: H = 0 in the n-1 unknowns other than x_i (in their
 /// order). Captures `problem` by reference.
 SquareSystem face_system(const Problem& problem, int i, double at);

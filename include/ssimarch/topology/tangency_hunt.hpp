@@ -6,8 +6,10 @@
 //     a root of every turning system with a singular Jacobian, which the Krawczyk test never
 //     certifies, so a fully certified domain has none;
 //   * after a certified search with uncertain regions, in those boxes only (a small grid each);
-//   * after sampling or given start points, over a grid of the whole domain (parametric-implicit
-//     pairs; the others' grids cost seconds), where sin(theta) <= 0.2.
+//   * after sampling or given start points (parametric-implicit pairs; the others' grids cost
+//     seconds), over a grid of the whole domain where sin(theta) <= 0.2, at the grid points within
+//     a cell of the boxes one turning system's interval search leaves undecided or unexplored
+//     (singular_point_regions; every point when the surfaces do not evaluate on intervals).
 #pragma once
 
 #include <vector>
@@ -26,12 +28,13 @@ bool trace_contact_from(const Tracer& tracer, const VecX& x, std::vector<TracedC
 /// A transversal branch marched over its crossing with a contact curve (no watch fires there:
 /// the rank ratio dips only within the crossing's own scale) passes the crossing between two
 /// of its points: the crossing becomes an exact point of that curve and the half-branches along
-/// it count as followed (each traced exactly once). For every tangent_line_crossing node.
+/// it count as followed (each traced exactly once). For every tangent_line_crossing node, and
+/// for every node no curve has met (a singular point the hunt found that a march stepped over).
 void attach_crossings(SingularRegistry* registry, std::vector<TracedCurve>* curves, double radius);
 
 /// Hunts the isolated points and the curves of tangential contact of the tracer's problem that
 /// the curves traced so far did not meet; contact curves are appended to *curves, isolated
-/// points to *isolated.
+/// points to *isolated, singular points with real branches to the registry (attach_crossings).
 void hunt_tangencies(const Tracer& tracer, const StartPointSearch& search, SingularRegistry* registry,
                      std::vector<TracedCurve>* curves, std::vector<SingularPointReport>* isolated);
 
