@@ -1,5 +1,7 @@
 #include "ssimarch/topology/trace_all.hpp"
 
+#include "ssimarch/core/interrupt.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -384,6 +386,7 @@ TraceResult trace_all(const Tracer& unbounded, const std::vector<Vec3>& starts, 
   starts_regular.insert(starts_regular.end(), starts_moved.begin(), starts_moved.end());
   starts_regular.insert(starts_regular.end(), starts_at_pole.begin(), starts_at_pole.end());
   for (const VecX& x : starts_regular) {
+    throw_if_interrupted();  // Ctrl-C between curves (core/interrupt.hpp)
     if (near_traced_curve(P.point(x), result.curves, radius)) continue;
     if (reg && trace_contact_from(tracer, x, &result.curves, reg)) continue;  // a curve of tangential contact
     const std::vector<LooseEnd> ends = loose_ends(result.curves, registry, registry_tol);
