@@ -13,11 +13,16 @@ CHILD = textwrap.dedent("""
 
     rng = np.random.default_rng(1)
     n = 4000
-    beds = np.column_stack([rng.uniform(-4, 4, (n, 2)), rng.uniform(0, 40, n), np.full(n, 1.0)])
+    # Spherocylinders: their profiles are adaptive quadrature (uncut spheres have a closed form that
+    # would finish before the signal).
+    axes = rng.normal(size=(n, 3))
+    axes /= np.linalg.norm(axes, axis=1)[:, None]
+    beds = np.column_stack([rng.uniform(-3.5, 3.5, (n, 2)), rng.uniform(0, 40, n), axes,
+                            np.full(n, 1.0), np.full(n, 1.0)])
     print("start", flush=True)
     t0 = time.monotonic()
     try:
-        # Far longer than the test waits: 2000 radii at an accuracy of 1e-13, one thread.
+        # Far longer than the test waits (tens of seconds): 2000 radii at an accuracy of 1e-13, one thread.
         porosity.radial(beds, 5.0, 2000, tolerance=1e-13, threads=1)
         print("finished", time.monotonic() - t0, flush=True)
     except KeyboardInterrupt:
