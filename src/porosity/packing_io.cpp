@@ -12,6 +12,8 @@
 
 #include "ssimarch/porosity/packing.hpp"
 
+#include "particle_row_check.hpp"
+
 namespace ssimarch {
 
 namespace {
@@ -141,23 +143,6 @@ class LineReader {
   std::uint64_t bytes_ = 0;
 };
 
-// Validates one particle; returns an empty string when fine.
-std::string validate(Particle& p, bool sc) {
-  for (int k = 0; k < 3; ++k)
-    if (!std::isfinite(p.centre[k])) return "centre coordinate is not finite";
-  if (!std::isfinite(p.diameter)) return "diameter is not finite";
-  if (!(p.diameter > 0)) return "diameter must be > 0 (got " + std::to_string(p.diameter) + ")";
-  if (sc) {
-    if (!std::isfinite(p.length)) return "length is not finite";
-    if (p.length < 0) return "length must be >= 0 (got " + std::to_string(p.length) + ")";
-    for (int k = 0; k < 3; ++k)
-      if (!std::isfinite(p.axis[k])) return "axis component is not finite";
-    const double n = p.axis.norm();
-    if (!(n > 0)) return "axis (ux, uy, uz) must not be zero";
-    p.axis /= n;
-  }
-  return {};
-}
 
 }  // namespace
 
@@ -215,7 +200,7 @@ Packing read_packing_csv(std::istream& in, const std::string& name, const InputL
     bool ok = get("x", p.centre.x()) && get("y", p.centre.y()) && get("z", p.centre.z()) && get("d", p.diameter);
     if (ok && sc) ok = get("ux", p.axis.x()) && get("uy", p.axis.y()) && get("uz", p.axis.z()) && get("l", p.length);
     if (!ok) continue;
-    if (const std::string w = validate(p, sc); !w.empty()) {
+    if (const std::string w = internal::validate_particle(p, sc); !w.empty()) {
       err.add(ln, w);
       continue;
     }
@@ -307,7 +292,7 @@ Packing read_lammps_dump(std::istream& in, const std::string& name, const InputL
           continue;
         }
         p.diameter = has_r ? 2 * *v : *v;
-        if (const std::string w = validate(p, false); !w.empty()) { err.add(ln, w); continue; }
+        if (const std::string w = internal::validate_particle(p, false); !w.empty()) { err.add(ln, w); continue; }
         snap.particles.push_back(p);
       }
       last = std::move(snap);

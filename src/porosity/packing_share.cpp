@@ -12,6 +12,8 @@
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/porosity/packing.hpp"
 
+#include "particle_row_check.hpp"
+
 #include "file_lines.hpp"
 
 namespace ssimarch {
@@ -93,22 +95,6 @@ struct RowErrors {
   }
 };
 
-std::string validate(Particle& p, bool sc) {
-  for (int k = 0; k < 3; ++k)
-    if (!std::isfinite(p.centre[k])) return "centre coordinate is not finite";
-  if (!std::isfinite(p.diameter)) return "diameter is not finite";
-  if (!(p.diameter > 0)) return "diameter must be > 0 (got " + std::to_string(p.diameter) + ")";
-  if (sc) {
-    if (!std::isfinite(p.length)) return "length is not finite";
-    if (p.length < 0) return "length must be >= 0 (got " + std::to_string(p.length) + ")";
-    for (int k = 0; k < 3; ++k)
-      if (!std::isfinite(p.axis[k])) return "axis component is not finite";
-    const double n = p.axis.norm();
-    if (!(n > 0)) return "axis (ux, uy, uz) must not be zero";
-    p.axis /= n;
-  }
-  return {};
-}
 
 // Where the numbers of a row are: CSV columns or LAMMPS ATOMS columns, and how to read them.
 struct Layout {
@@ -148,7 +134,7 @@ bool parse_row(std::string_view line, const Layout& L, long ln, std::vector<std:
     p.axis = Vec3(v[4], v[5], v[6]);
     p.length = v[7];
   }
-  if (const std::string w = validate(p, L.sc); !w.empty()) {
+  if (const std::string w = internal::validate_particle(p, L.sc); !w.empty()) {
     err.add(ln, w);
     return false;
   }

@@ -1,0 +1,31 @@
+// The check of one particle row shared by the packing readers (packing_io.cpp: the stream readers;
+// packing_share.cpp: the block reader of a rank's share), so both give the same messages.
+#pragma once
+
+#include <cmath>
+#include <string>
+
+#include "ssimarch/porosity/packing.hpp"
+
+namespace ssimarch::internal {
+
+/// Validates one particle read from a row (sc: a spherocylinder row, whose axis it normalises);
+/// returns an empty string when fine, else the reason.
+inline std::string validate_particle(Particle& p, bool sc) {
+  for (int k = 0; k < 3; ++k)
+    if (!std::isfinite(p.centre[k])) return "centre coordinate is not finite";
+  if (!std::isfinite(p.diameter)) return "diameter is not finite";
+  if (!(p.diameter > 0)) return "diameter must be > 0 (got " + std::to_string(p.diameter) + ")";
+  if (sc) {
+    if (!std::isfinite(p.length)) return "length is not finite";
+    if (p.length < 0) return "length must be >= 0 (got " + std::to_string(p.length) + ")";
+    for (int k = 0; k < 3; ++k)
+      if (!std::isfinite(p.axis[k])) return "axis component is not finite";
+    const double n = p.axis.norm();
+    if (!(n > 0)) return "axis (ux, uy, uz) must not be zero";
+    p.axis /= n;
+  }
+  return {};
+}
+
+}  // namespace ssimarch::internal
