@@ -326,19 +326,24 @@ MarchResult Tracer::march_until_event(const CurvePoint& start_point, Direction d
       r.event = internal::land_on_domain_edge(problem_, m.cur, a.corrected.x, m.co, stats, &r);
       return r;
     }
-    if (may_close() &&
-        internal::closes_loop(target, m.cur, a.p1, a.next.tangent(), sagitta_slack)) {
-      r.length += arc_length_estimate(m.cur.p, m.cur.t, target.p, target.t);
-      r.points.push_back(target);
-      r.event = Event{EventKind::kClosed, BudgetBound::kNone, "closed loop", VecX{}};
-      return r;
-    }
+    // The watch before the closure test: a closing step that also crosses a singular point
+    // passes that point first (a start moved half a step off a node lies beyond it), and the
+    // caller must register the passage, or the node's half-branches stay unused and are traced
+    // again (issue 11: every branch exactly once). The caller closes the loop at the located
+    // point when the target lies before it (topology/through_singular.cpp, closes_before).
     if (watch) {
       Event e = watch_event(m.cur, previous_rank, m.state.here, a);
       if (e.kind == EventKind::kSingularSuspected) {
         r.event = std::move(e);
         return r;
       }
+    }
+    if (may_close() &&
+        internal::closes_loop(target, m.cur, a.p1, a.next.tangent(), sagitta_slack)) {
+      r.length += arc_length_estimate(m.cur.p, m.cur.t, target.p, target.t);
+      r.points.push_back(target);
+      r.event = Event{EventKind::kClosed, BudgetBound::kNone, "closed loop", VecX{}};
+      return r;
     }
     watch = limits.watch_crossings;
     previous_rank = m.state.here.rank_ratio;

@@ -15,6 +15,10 @@
 #include "ssimarch/topology/branch_length_bound.hpp"
 #include "ssimarch/topology/certified_start_points.hpp"
 #include "ssimarch/singular/detection.hpp"
+#include "ssimarch/singular/half_branches.hpp"
+#include "ssimarch/singular/local_curve.hpp"
+#include "ssimarch/singular/locate.hpp"
+#include "ssimarch/problem/singular_tolerances.hpp"
 #include "ssimarch/topology/start_points.hpp"
 #include "ssimarch/topology/tangency_hunt.hpp"
 #include "ssimarch/topology/through_singular.hpp"
@@ -350,6 +354,31 @@ void drop_stubs(std::vector<TracedCurve>* curves, SingularRegistry* registry, do
   }
 }
 
+// A start that regular_start left on a singular point (no point within half a step of it is
+// regular enough: at short steps the rank ratio there stays below kSuspectSingularRankRatio)
+// stands for the point's half-branches. Registered, the point's half-branches are traced by
+// trace_all's node loop, each once, and a loop through the point closes there on the half-branch
+// it left by; a trace from the start itself would leave and come back through the point along
+// used half-branches and stop there as an open curve (issue 11: every branch exactly once). False
+// (nothing registered) when x is regular, or no singular point with a half-branch to leave by
+// is located within half a step of it (a point of a curve of tangential contact, an isolated point).
+bool register_singular_start(const Tracer& tracer, const VecX& x, SingularRegistry* registry) {
+  const Problem& P = tracer.problem();
+  if (!(Problem::rank_ratio(P.linearize(x)) < kSuspectSingularRankRatio)) return false;
+  const SingularLocation loc = locate_singular_point(P, x);
+  if (loc.status != LocateStatus::kConverged || !P.inside(loc.x, 1e-9) ||
+      (loc.point - P.point(x)).norm() > 0.5 * tracer.options().step_length)
+    return false;
+  const LocalCurve local = local_curve(P, loc.x);
+  if (local.status != LocalCurveStatus::kOk) return false;
+  const Classification kind = classify(local.h);
+  if (kind.type == SingularType::kTangentialContact || kind.type == SingularType::kRegular) return false;
+  const std::vector<HalfBranch> branches = half_branches(P, local, kind);
+  if (std::none_of(branches.begin(), branches.end(), [](const HalfBranch& b) { return b.exit_ok; })) return false;
+  registry->add(loc);
+  return true;
+}
+
 }  // namespace
 
 TraceResult trace_all(const Tracer& unbounded, const std::vector<Vec3>& starts, const TraceAllOptions& options) {
@@ -389,6 +418,7 @@ TraceResult trace_all(const Tracer& unbounded, const std::vector<Vec3>& starts, 
     throw_if_interrupted();  // Ctrl-C between curves (core/interrupt.hpp)
     if (near_traced_curve(P.point(x), result.curves, radius)) continue;
     if (reg && trace_contact_from(tracer, x, &result.curves, reg)) continue;  // a curve of tangential contact
+    if (reg && register_singular_start(tracer, x, reg)) continue;  // traced from the node below
     const std::vector<LooseEnd> ends = loose_ends(result.curves, registry, registry_tol);
     const std::vector<TracedCurve> stub = stubs(result.curves, ends);
     TracedCurve c = trace_curve_through(tracer, x, &result.stats, reg, static_cast<int>(result.curves.size()),
