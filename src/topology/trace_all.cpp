@@ -361,10 +361,12 @@ void drop_stubs(std::vector<TracedCurve>* curves, SingularRegistry* registry, do
 // it left by; a trace from the start itself would leave and come back through the point along
 // used half-branches and stop there as an open curve (issue 11: every branch exactly once). False
 // (nothing registered) when x is regular, or no singular point with a half-branch to leave by
-// is located within half a step of it (a point of a curve of tangential contact, an isolated point).
-bool register_singular_start(const Tracer& tracer, const VecX& x, SingularRegistry* registry) {
+// is located within half a step of it (a point of a curve of tangential contact, an isolated
+// point), or x is on a pole.
+bool register_singular_start(const Tracer& tracer, const VecX& x, const std::vector<Pole>& poles, SingularRegistry* registry) {
   const Problem& P = tracer.problem();
-  if (!(Problem::rank_ratio(P.linearize(x)) < kSuspectSingularRankRatio)) return false;
+  // A start on a pole (no tangent in its parameters) is the pole's, handled after the others.
+  if (pole_at(poles, x, 1e-9) || !(Problem::rank_ratio(P.linearize(x)) < kSuspectSingularRankRatio)) return false;
   const SingularLocation loc = locate_singular_point(P, x);
   if (loc.status != LocateStatus::kConverged || !P.inside(loc.x, 1e-9) ||
       (loc.point - P.point(x)).norm() > 0.5 * tracer.options().step_length)
@@ -372,7 +374,10 @@ bool register_singular_start(const Tracer& tracer, const VecX& x, SingularRegist
   const LocalCurve local = local_curve(P, loc.x);
   if (local.status != LocalCurveStatus::kOk) return false;
   const Classification kind = classify(local.h);
-  if (kind.type == SingularType::kTangentialContact || kind.type == SingularType::kRegular) return false;
+  // Points on or across a curve of tangential contact are traced by trace_contact_from.
+  if (kind.type == SingularType::kRegular || kind.type == SingularType::kTangentialContact ||
+      kind.type == SingularType::kTangentLineCrossing)
+    return false;
   const std::vector<HalfBranch> branches = half_branches(P, local, kind);
   if (std::none_of(branches.begin(), branches.end(), [](const HalfBranch& b) { return b.exit_ok; })) return false;
   registry->add(loc);
@@ -418,7 +423,7 @@ TraceResult trace_all(const Tracer& unbounded, const std::vector<Vec3>& starts, 
     throw_if_interrupted();  // Ctrl-C between curves (core/interrupt.hpp)
     if (near_traced_curve(P.point(x), result.curves, radius)) continue;
     if (reg && trace_contact_from(tracer, x, &result.curves, reg)) continue;  // a curve of tangential contact
-    if (reg && register_singular_start(tracer, x, reg)) continue;  // traced from the node below
+    if (reg && register_singular_start(tracer, x, poles, reg)) continue;  // traced from the node below
     const std::vector<LooseEnd> ends = loose_ends(result.curves, registry, registry_tol);
     const std::vector<TracedCurve> stub = stubs(result.curves, ends);
     TracedCurve c = trace_curve_through(tracer, x, &result.stats, reg, static_cast<int>(result.curves.size()),
