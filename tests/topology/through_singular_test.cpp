@@ -68,17 +68,30 @@ TEST(ThroughSingular, VivianiIsOneClosedCurveThroughItsNode) {
     }
 }
 
-// A start given on the node is moved half a step off it (regular_start); at short steps the first
-// step already reaches the node, and the loop must not close there before it has left its start
-// (it came back as one point of length 0 at steps <= 4e-4).
-TEST(ThroughSingular, VivianiFromItsNodeAtShortStepsIsTheWholeLoop) {
+// A start given on the node is moved half a step off it (regular_start), or, at steps so short
+// that no point half a step away is regular enough, stands for the node's half-branches. Either
+// way the figure eight is one closed loop through its node at every step length: at short steps
+// the first step already reached the node and the loop closed there before leaving its start
+// (one point, length 0, at steps <= 4e-4); the closing step crossed the node before reaching the
+// start half a step beyond it, so the node's half-branches stayed unused and the loop was traced
+// a second time from them (1e-3, 2e-3); a start left on the node came back to it along used
+// half-branches as an open curve (2e-4). Issue 11: every branch exactly once.
+TEST(ThroughSingular, VivianiFromItsNodeIsTheWholeLoopAtEveryStepLength) {
   const Scene scene = load_scene(std::string(SSIMARCH_SOURCE_DIR) + "/examples/viviani.json");
-  IntersectionSpec spec = scene.intersections.at(0);
-  spec.options.trace.step_length = 4e-4;
-  const TraceResult r = run_intersection(scene, spec).result;
-  ASSERT_EQ(r.curves.size(), 1u);
-  EXPECT_TRUE(r.curves[0].closed);
-  EXPECT_NEAR(r.curves[0].length, 15.2807911561, 1e-6);
+  const Vec3 node(0, -2, 0);
+  for (double step : {2e-4, 4e-4, 1e-3, 2e-3, 1e-2}) {
+    IntersectionSpec spec = scene.intersections.at(0);
+    spec.options.trace.step_length = step;
+    spec.options.trace.max_points = 10000000;
+    const TraceResult r = run_intersection(scene, spec).result;
+    ASSERT_EQ(r.curves.size(), 1u) << step;
+    EXPECT_TRUE(r.curves[0].closed) << step;
+    // (1 + cos t, sin t, 2 cos(t/2)) up to a motion: length 8 sqrt2 E(1/2) = 15.2807911561.
+    EXPECT_NEAR(r.curves[0].length, 15.2807911561, 1e-6) << step;
+    EXPECT_TRUE(has_point(r.curves[0], node, 1e-10)) << step;
+    ASSERT_EQ(r.singular_points.size(), 1u) << step;
+    EXPECT_EQ(r.singular_points[0].curves, std::vector<int>{0}) << step;
+  }
 }
 
 TEST(ThroughSingular, CardioidIsOneClosedCurveOverItsCusp) {
