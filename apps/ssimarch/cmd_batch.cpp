@@ -11,6 +11,7 @@
 
 #include "batch_ranks.hpp"
 #include "commands.hpp"
+#include "run_progress.hpp"
 #include "run_budget.hpp"
 #include "ssimarch/core/thread_pool.hpp"
 #include "ssimarch/io/batch_file.hpp"
@@ -29,13 +30,22 @@ struct BatchArgs {
 };
 
 // This rank's share: units taken from `ranks` until none is left, each as compact JSON text.
-std::vector<UnitResult> run_share(const Batch& batch, unsigned threads, BatchRanks* ranks, RankLoad* load) {
+// Progress (`meter`): units are handed out in input order by one counter (every rank's), so the
+// highest unit finished here tells how far the whole batch has got, on rank 0 as on one process.
+std::vector<UnitResult> run_share(const Batch& batch, unsigned threads, BatchRanks* ranks, RankLoad* load,
+                                  ProgressMeter* meter) {
   std::vector<UnitResult> local;
   std::mutex m;
+  std::size_t reached = 0;
+  // The units' own stages (start points of one intersection) are not shown: the calling thread's
+  // reports go nowhere while the batch's units run (core/progress.hpp scopes nest).
+  const ProgressScope units_silent(nullptr);
   const auto t0 = std::chrono::steady_clock::now();
   run_batch_units(batch, threads, [ranks] { return ranks->next(); }, [&](std::size_t u, BatchOutcome&& outcome) {
     UnitResult r{u, ranks->rank(), outcome.seconds, outcome.cpu_seconds, batch_unit_json(batch, u, outcome).dump()};
     std::lock_guard<std::mutex> lock(m);
+    reached = std::max(reached, u + 1);
+    meter->report("batch", static_cast<double>(reached), static_cast<double>(batch.units.size()));
     load->units += 1;
     load->busy_s += r.wall_s;
     load->cpu_s += r.cpu_s;
@@ -79,7 +89,9 @@ void run_batch_command(const BatchArgs& a) {
   const unsigned threads = a.threads > 0 ? a.threads : ranks->default_threads();
   set_thread_count(threads);
   RankLoad load;
-  auto local = run_share(batch, threads, ranks.get(), &load);
+  RunProgress progress(a.quiet || ranks->rank() != 0);  // rank 0's bar only
+  auto local = run_share(batch, threads, ranks.get(), &load, &progress.meter());
+  progress.meter().close();
   auto [units, loads] = ranks->gather(std::move(local), batch.units.size(), load);
   int status = 0;
   if (ranks->rank() == 0) {
@@ -128,7 +140,8 @@ void add_batch_command(CLI::App& app) {
                   "Threads per process (default: every core; under mpirun the node's cores divided among its ranks)");
   cmd->add_option("--timings", args->timings,
                   "Also write a CSV of every intersection's cost: unit, job, intersection, rank, wall_s, cpu_s, bytes");
-  cmd->add_flag("-q,--quiet", args->quiet, "No summary on stderr");
+  cmd->add_flag("-q,--quiet", args->quiet, "No summary and no progress on stderr");
+  add_progress_option(cmd);
   add_budget_options(cmd);
   cmd->callback([args] { run_batch_command(*args); });
 }

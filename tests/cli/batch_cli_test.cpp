@@ -86,6 +86,33 @@ TEST(BatchCli, TheOutputDoesNotDependOnTheThreadCount) {
   EXPECT_THAT(r1.err, HasSubstr("load balance"));
 }
 
+// --progress json: one line per update on stderr, stage "batch", in units of the batch, ending at
+// every unit; -q shows none.
+TEST(BatchCli, ProgressReportsTheUnitsAsJsonLines) {
+  const std::string jobs = jobs_file();
+  const fs::path out = scratch() / "batch_progress.json";
+  const CliRun r = ssimarch::testing::run_cli("batch " + jobs + " --threads 2 --progress json -o " + out.string());
+  EXPECT_EQ(r.status, 1) << r.err;
+  const std::size_t units = read_json(out).at("summary").at("intersections").get<std::size_t>();
+  std::istringstream lines(r.err);
+  double last_done = -1, total = 0;
+  int reports = 0;
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("{\"progress\"", 0) != 0) continue;
+    const json p = json::parse(line).at("progress");
+    EXPECT_EQ(p.at("stage"), "batch");
+    EXPECT_GE(p.at("done").get<double>(), last_done);  // the highest unit reached never goes back
+    last_done = p.at("done").get<double>();
+    total = p.at("total").get<double>();
+    ++reports;
+  }
+  EXPECT_GE(reports, 2);
+  EXPECT_EQ(total, static_cast<double>(units));
+  EXPECT_EQ(last_done, total);
+  const CliRun quiet = ssimarch::testing::run_cli("batch " + jobs + " --progress json -q -o " + out.string());
+  EXPECT_THAT(quiet.err, ::testing::Not(HasSubstr("\"progress\"")));
+}
+
 TEST(BatchCli, StatusZeroWhenEverythingIsTracedAndTwoForAnUnusableFile) {
   const std::string ok = write_file("ok.json", R"({"jobs": [")" + kExamples + R"(viviani.json"]})");
   const CliRun r = ssimarch::testing::run_cli("batch " + ok + " -q");
