@@ -139,7 +139,9 @@ void write_svg(std::ostream& out, const IntersectionRun& run, const SvgOptions& 
   if (P.kind() == PairKind::kImplicitImplicit) pairs = {{0, 1}, {0, 2}};
   else if (P.kind() == PairKind::kParametricImplicit) pairs = {{0, 1}};
   else pairs = {{0, 1}, {2, 3}};
-  for (auto [a, b] : pairs) {
+  for (const auto& axes : pairs) {
+    // Plain ints, not a structured binding: clang 14 (the fuzz build) cannot capture one in a lambda.
+    const int a = axes.first, b = axes.second;
     Panel p;
     bool param = P.kind() != PairKind::kImplicitImplicit;
     std::string which = param ? (a == 0 ? run.spec.swapped ? run.spec.surfaces[1] : run.spec.surfaces[0] : run.spec.surfaces[1]) : "";
