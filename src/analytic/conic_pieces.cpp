@@ -3,7 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
+
+#include "chord_sampling.hpp"
 
 namespace ssimarch {
 
@@ -141,29 +144,10 @@ TracedCurve sample_conic(const Conic& c, double deviation, double max_chord) {
     p.t = d.norm() > 0 ? Vec3(d.normalized()) : Vec3::Zero();
     curve.points.push_back(std::move(p));
   };
-  // Bisect each chord until its midpoint is within `deviation` of the conic and it is short enough;
-  // start from 8 pieces so that no symmetric chord hides the curve's bulge.
-  constexpr int kStart = 8, kMaxDepth = 40;
-  std::vector<std::pair<double, int>> todo;  // (end parameter, depth), last one processed first
-  const double h = (c.range.hi - c.range.lo) / kStart;
-  add(c.range.lo);
-  double t0 = c.range.lo;
-  for (int j = kStart; j >= 1; --j) todo.push_back({j == kStart ? c.range.hi : c.range.lo + j * h, 0});
-  while (!todo.empty()) {
-    const auto [t1, depth] = todo.back();
-    const Vec3 a = c.point(t0), b = c.point(t1), m = c.point(0.5 * (t0 + t1));
-    const Vec3 chord = b - a;
-    const double len = chord.norm();
-    const double sag = len > 0 ? (m - a - (m - a).dot(chord) / (len * len) * chord).norm() : (m - a).norm();
-    if (depth < kMaxDepth && (sag > deviation || len > max_chord)) {
-      todo.back().second = depth + 1;
-      todo.push_back({0.5 * (t0 + t1), depth + 1});
-      continue;
-    }
-    todo.pop_back();
-    add(t1);
-    t0 = t1;
-  }
+  // Start from 8 pieces; no bound on the count (a conic's curvature is bounded in its range).
+  const auto params = internal::sample_chord_parameters([&](double t) { return Vec3(c.point(t)); }, c.range.lo, c.range.hi,
+                                                        deviation, max_chord, 8, std::numeric_limits<std::size_t>::max());
+  for (double t : *params) add(t);
   if (curve.closed) curve.points.back() = curve.points.front();
   curve.length = conic_length(c);
   curve.start_end = curve.end_end = curve.closed ? Termination::kClosedLoop : Termination::kLeftDomain;

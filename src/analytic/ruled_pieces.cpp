@@ -6,11 +6,13 @@
 
 #include "ssimarch/analytic/ruled_section.hpp"
 
+#include "chord_sampling.hpp"
+
 namespace ssimarch {
 
 namespace {
 
-constexpr int kStartPieces = 16, kMaxDepth = 40, kBoundaryBisections = 80;
+constexpr int kStartPieces = 16, kBoundaryBisections = 80;
 // Samples of one loop beyond which the closed form gives up (the caller traces): a loop that runs
 // far outside the region (rulings nearly along an asymptotic direction of Q, |t| ~ |b / a|) would
 // need ~extent / max_chord samples to clip.
@@ -27,36 +29,6 @@ bool inside(const Vec3& p, const std::vector<Slab>& region) {
 Vec3 at(const RuledCurves& rc, const RuledLoop& loop, double phi) {
   const Vec3T<double> p = rc.point(loop, phi);
   return {p.x, p.y, p.z};
-}
-
-// Parameters from lo to hi (both included) whose chords are within `deviation` of the curve and
-// at most `max_chord` long: each chord bisected until its midpoint is close enough.
-std::optional<std::vector<double>> sample_parameters(const std::function<Vec3(double)>& f, double lo, double hi,
-                                                     double deviation, double max_chord) {
-  std::vector<double> out{lo};
-  std::vector<std::pair<double, int>> todo;  // (end parameter, depth), the last processed first
-  const double h = (hi - lo) / kStartPieces;
-  for (int j = kStartPieces; j >= 1; --j) todo.push_back({j == kStartPieces ? hi : lo + j * h, 0});
-  double t0 = lo;
-  Vec3 a = f(lo);
-  while (!todo.empty()) {
-    const auto [t1, depth] = todo.back();
-    const Vec3 b = f(t1), m = f(0.5 * (t0 + t1));
-    const Vec3 chord = b - a;
-    const double len = chord.norm();
-    const double sag = len > 0 ? (m - a - (m - a).dot(chord) / (len * len) * chord).norm() : (m - a).norm();
-    if (depth < kMaxDepth && (sag > deviation || len > max_chord)) {
-      todo.back().second = depth + 1;
-      todo.push_back({0.5 * (t0 + t1), depth + 1});
-      continue;
-    }
-    todo.pop_back();
-    out.push_back(t1);
-    if (out.size() > kMaxSamples) return std::nullopt;
-    t0 = t1;
-    a = b;
-  }
-  return out;
 }
 
 // Arc length over [lo, hi]: 8-point Gauss-Legendre on n equal pieces, n doubled until two agree
@@ -87,7 +59,7 @@ std::optional<TracedCurve> make_curve(const RuledCurves& rc, const RuledLoop& lo
                                       double deviation, double max_chord) {
   TracedCurve curve;
   curve.closed = closed;
-  const auto params = sample_parameters([&](double t) { return at(rc, loop, t); }, lo, hi, deviation, max_chord);
+  const auto params = internal::sample_chord_parameters([&](double t) { return at(rc, loop, t); }, lo, hi, deviation, max_chord, kStartPieces, kMaxSamples);
   if (!params) return std::nullopt;
   for (double phi : *params) {
     CurvePoint p;
@@ -136,7 +108,8 @@ std::optional<std::vector<TracedCurve>> ruled_curves_in(const RuledCurves& rc, c
       last = next;
     }
     if (!(coarse / max_chord < static_cast<double>(kMaxSamples))) return std::nullopt;
-    auto sampled = sample_parameters([&](double p) { return at(rc, loop, p); }, 0, L, deviation, max_chord);
+    auto sampled = internal::sample_chord_parameters([&](double p) { return at(rc, loop, p); }, 0, L, deviation, max_chord,
+                                                     kStartPieces, kMaxSamples);
     if (!sampled) return std::nullopt;
     std::vector<double>& t = *sampled;
     t.pop_back();  // t = L is t = 0 again
