@@ -130,7 +130,7 @@ py::dict curve_geometry(const py::object& scene, const py::object& other, const 
     std::vector<PointGeometry> out;
     out.reserve(n);
     for (std::size_t i = 0; i < n; ++i) {
-      python::throw_if_stop_requested();
+      throw_if_interrupted();
       PointGeometryQuery q = query;
       q.at = Vec3(p[3 * i], p[3 * i + 1], p[3 * i + 2]);
       out.push_back(geometry_at_point(problem, q));

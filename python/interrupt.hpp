@@ -9,9 +9,8 @@
 // returns, PyErr_CheckSignals runs Python's handler, which raises KeyboardInterrupt, and the
 // result is discarded. No thread is started and nothing polls: the cost is two sigaction calls.
 //
-// The module's own flag stops its loops and callbacks; the handler raises the library's
-// cancellation flag too (core/interrupt.hpp, checked in the library's own long loops), whose
-// Interrupted is caught as well.
+// The handler raises the library's cancellation flag (core/interrupt.hpp), checked by the
+// library's long loops and the module's own; their Interrupted is caught here.
 #pragma once
 
 #include "ssimarch/core/interrupt.hpp"
@@ -28,34 +27,16 @@
 
 namespace ssimarch::python {
 
-inline std::atomic<bool>& stop_flag() {
-  static std::atomic<bool> flag{false};
-  return flag;
-}
-inline bool stop_requested() { return stop_flag().load(std::memory_order_relaxed); }
+// The library's cancellation flag (core/interrupt.hpp) is the one flag: the module's own loops and
+// callbacks check it with throw_if_interrupted, the library's long loops too.
+// Async-signal-safe (a lock-free atomic store).
+inline void request_stop() { request_interrupt(); }
 
-// Async-signal-safe (lock-free atomic stores).
-inline void request_stop() {
-  stop_flag().store(true);
-  request_interrupt();
-}
-
-// Lowers the flags; returns whether one was up.
+// Lowers the flag; returns whether it was up.
 inline bool clear_stop() {
-  bool was = stop_flag().exchange(false);
-  was = interrupt_requested() || was;
+  const bool was = interrupt_requested();
   clear_interrupt();
   return was;
-}
-
-/// Thrown by the module's loops and callbacks when the stop flag is up; never reaches Python
-/// (run_interruptible raises the KeyboardInterrupt instead).
-struct StopRequested : std::runtime_error {
-  StopRequested() : std::runtime_error("interrupted") {}
-};
-
-inline void throw_if_stop_requested() {
-  if (stop_requested()) throw StopRequested();
 }
 
 /// The thread that imported the module (Python's main thread, which alone handles signals).
@@ -126,8 +107,7 @@ auto run_interruptible(F&& f) -> std::invoke_result_t<F&> {
       } else {
         result.emplace(f());
       }
-    } catch (const StopRequested&) {
-    } catch (const Interrupted&) {  // the library's (core/interrupt.hpp)
+    } catch (const Interrupted&) {  // core/interrupt.hpp
     }
     interrupted = clear_stop();
   }

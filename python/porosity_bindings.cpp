@@ -73,7 +73,7 @@ PorosityJob porosity_job(const py::object& particles, double radius, const py::o
 }
 
 PorosityJobResult run_job(PorosityJob job) {
-  job.progress = [](std::string_view, double) { python::throw_if_stop_requested(); };
+  job.progress = [](std::string_view, double) { throw_if_interrupted(); };
   return python::run_interruptible([&] { return run_porosity_job(job); });
 }
 
