@@ -45,8 +45,10 @@ CorrectorResult gauss_newton(const Problem& problem, const VecX& guess, const Co
       r.distance = L.distance;
       return r;
     }
-    Eigen::JacobiSVD<MatX> svd(L.jacobian, Eigen::ComputeThinU | Eigen::ComputeThinV);
-    if (Problem::rank_ratio(L) <= kNewtonRankRatio) {
+    const Eigen::JacobiSVD<EquationJacobian> svd(L.jacobian, Eigen::ComputeThinU | Eigen::ComputeThinV);
+    // One equation: the ratio needs the point Jacobian's SVD; more: the one just computed.
+    const double rank = L.jacobian.rows() == 1 ? Problem::rank_ratio(L) : Problem::rank_ratio(svd.singularValues());
+    if (rank <= kNewtonRankRatio) {
       r.status = CorrectorStatus::kSingular;
       r.distance = L.distance;
       return r;
@@ -79,14 +81,14 @@ CorrectorResult solve_with_fixed_unknown(const Problem& problem, const VecX& gue
       r.status = CorrectorStatus::kConverged;
       return r;
     }
-    MatX A(n, n);
+    UnknownMat A(n, n);
     A.topRows(n - 1) = L.jacobian;
     A.row(n - 1).setZero();
     A(n - 1, i) = 1.0;
-    VecX rhs(n);
+    UnknownVec rhs(n);
     rhs.head(n - 1) = L.h;
     rhs[n - 1] = r.x[i] - value;
-    Eigen::FullPivLU<MatX> lu(A);
+    const Eigen::FullPivLU<UnknownMat> lu(A);
     if (!lu.isInvertible()) {
       r.status = CorrectorStatus::kSingular;
       return r;

@@ -116,6 +116,7 @@ Problem::Problem(Surface first, Surface second, PairKind kind)
       break;
     }
   }
+  trims_ = problem_trims(*this);
 }
 
 Vec3 Problem::point(const VecX& x) const {
@@ -173,7 +174,7 @@ Linearization Problem::linearize(const VecX& x) const {
       L.jacobian.row(0) = (fn > 0 ? f.grad / fn : f.grad).transpose();
       L.jacobian.row(1) = (gn > 0 ? g.grad / gn : g.grad).transpose();
       L.point = p;
-      L.point_jacobian = MatX::Identity(3, 3);
+      L.point_jacobian = PointJacobian::Identity(3, 3);
       L.normal_first = unit_or_zero(f.grad);
       L.normal_second = unit_or_zero(g.grad);
       auto dist = [](double v, double n) {
@@ -189,12 +190,16 @@ Linearization Problem::linearize(const VecX& x) const {
 double Problem::rank_ratio(const Linearization& L) {
   if (!L.jacobian.allFinite()) return 0.0;
   if (L.jacobian.rows() == 1) {
-    Eigen::JacobiSVD<MatX> svd(L.point_jacobian);
+    Eigen::JacobiSVD<PointJacobian> svd(L.point_jacobian);
     double smax = svd.singularValues()[0];
     return smax > 0 ? std::min(1.0, L.jacobian.norm() / smax) : 0.0;
   }
-  Eigen::JacobiSVD<MatX> svd(L.jacobian);
-  const auto& sv = svd.singularValues();
+  Eigen::JacobiSVD<EquationJacobian> svd(L.jacobian);
+  return rank_ratio(svd.singularValues());
+}
+
+double Problem::rank_ratio(const Eigen::Ref<const Eigen::VectorXd>& singular_values) {
+  const auto& sv = singular_values;
   return sv[0] > 0 ? sv[sv.size() - 1] / sv[0] : 0.0;
 }
 
@@ -226,11 +231,9 @@ bool Problem::inside(const VecX& x, double eps) const {
     if (!(x[i] >= b.lo - eps && x[i] <= b.hi + eps)) return false;
   }
   // The trims of implicit forms bound the curve as the parameter domains do (docs/math/poles.md §2).
-  if (kind_ == PairKind::kParametricParametric) return true;
-  const std::vector<Slab> trims = problem_trims(*this);
-  if (trims.empty()) return true;
+  if (kind_ == PairKind::kParametricParametric || trims_.empty()) return true;
   const Vec3 p = point(x);
-  for (const Slab& t : trims)
+  for (const Slab& t : trims_)
     if (!t.contains(p, eps)) return false;
   return true;
 }

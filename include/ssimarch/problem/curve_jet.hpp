@@ -38,7 +38,7 @@ enum class CurveJetStatus {
 template <int K>
 struct CurveJet {
   CurveJetStatus status = CurveJetStatus::kSingular;
-  std::array<VecX, K + 1> x;      // x(s) = sum_k x[k] s^k (unknowns of H)
+  std::array<UnknownVec, K + 1> x;  // x(s) = sum_k x[k] s^k (unknowns of H)
   std::array<Vec3, K + 1> alpha;  // alpha(s) = sum_k alpha[k] s^k (3D curve, unit speed)
   double rank_ratio = 0;          // sigma_min / sigma_max of J_H (0 at a singular point)
   int orientation = 0;            // +1 / -1: x' along / against the cross product of the rows of J_H (0 if not regular)
@@ -50,8 +50,8 @@ struct CurveJet {
     return alpha[static_cast<std::size_t>(k)] * f;
   }
   /// Parameter-space point after a step of arc length s (the Taylor polynomial).
-  VecX x_at(double s) const {
-    VecX r = x[K];
+  UnknownVec x_at(double s) const {
+    UnknownVec r = x[K];
     for (int k = K - 1; k >= 0; --k) r = (r * s + x[static_cast<std::size_t>(k)]).eval();
     return r;
   }
@@ -65,8 +65,10 @@ struct CurveJet {
 namespace internal {
 
 // Unnormalised J_H (the residual functor's own derivative) and D, via first-order jets.
+// Fixed-size matrices: a curve jet at every accepted point allocates nothing (issue 12).
 template <int N>
-void raw_jacobians(const Problem& problem, const VecX& x0, MatX* J, MatX* D) {
+void raw_jacobians(const Problem& problem, const VecX& x0, Eigen::Matrix<double, N - 1, N>* J,
+                   Eigen::Matrix<double, 3, N>* D) {
   using J1 = Jet<N, 1>;
   // Sized for the largest pair kind (4 unknowns, 3 equations): residual() switches on the
   // problem's kind at run time, so the compiler cannot see that only N entries are touched.
@@ -75,8 +77,6 @@ void raw_jacobians(const Problem& problem, const VecX& x0, MatX* J, MatX* D) {
   std::array<J1, 3> h;
   problem.residual(x.data(), h.data());
   Vec3T<J1> p = problem.point(x.data());
-  J->resize(N - 1, N);
-  D->resize(3, N);
   for (int r = 0; r < N - 1; ++r)
     for (int c = 0; c < N; ++c) (*J)(r, c) = h[static_cast<std::size_t>(r)].d(c);
   for (int r = 0; r < 3; ++r)
@@ -86,19 +86,20 @@ void raw_jacobians(const Problem& problem, const VecX& x0, MatX* J, MatX* D) {
 template <int N, int K>
 CurveJet<K> curve_jet_n(const Problem& problem, const VecX& x0, const Vec3* hint) {
   CurveJet<K> jet;
-  for (auto& c : jet.x) c = VecX::Zero(N);
+  for (auto& c : jet.x) c = UnknownVec::Zero(N);
   for (auto& a : jet.alpha) a = Vec3::Zero();
   jet.x[0] = x0;
   jet.alpha[0] = problem.point(x0);
-  MatX J, D;
+  Eigen::Matrix<double, N - 1, N> J;
+  Eigen::Matrix<double, 3, N> D;
   raw_jacobians<N>(problem, x0, &J, &D);
   if (!J.allFinite() || !D.allFinite()) {
     jet.status = CurveJetStatus::kNonFinite;
     return jet;
   }
-  Eigen::JacobiSVD<MatX> svd(J, Eigen::ComputeFullV);
+  const Eigen::JacobiSVD<Eigen::Matrix<double, N - 1, N>> svd(J, Eigen::ComputeFullV);
   jet.rank_ratio = Problem::rank_ratio(problem.linearize(x0));
-  VecX null = svd.matrixV().col(N - 1);
+  const Eigen::Matrix<double, N, 1> null = svd.matrixV().col(N - 1);
   Vec3 speed = D * null;
   if (jet.rank_ratio <= kCurveJetRankTolerance || speed.norm() == 0) {
     jet.status = CurveJetStatus::kSingular;
@@ -112,16 +113,16 @@ CurveJet<K> curve_jet_n(const Problem& problem, const VecX& x0, const Vec3* hint
     // of the rows of J_H, a field that is continuous along the curve and vanishes only at its
     // singular points: it changes between consecutive points exactly when a step passed a
     // crossing of branches (thesis ch. 5 §5.2.1, Fig. 5.3).
-    MatX M(N, N);
+    Eigen::Matrix<double, N, N> M;
     M.topRows(N - 1) = J;
     M.row(N - 1) = jet.x[1].transpose();
     jet.orientation = M.determinant() >= 0 ? 1 : -1;
   }
   if constexpr (K >= 2) {
-    MatX A(N, N);
+    Eigen::Matrix<double, N, N> A;
     A.topRows(N - 1) = J;
     A.row(N - 1) = jet.alpha[1].transpose() * D;
-    Eigen::PartialPivLU<MatX> lu(A);
+    const Eigen::PartialPivLU<Eigen::Matrix<double, N, N>> lu(A);
     std::array<Taylor<K>, 4> xs;  // sized for the largest pair kind, as in raw_jacobians
     std::array<Taylor<K>, 3> h;
     for (int k = 2; k <= K; ++k) {
@@ -132,7 +133,7 @@ CurveJet<K> curve_jet_n(const Problem& problem, const VecX& x0, const Vec3* hint
       }
       problem.residual(xs.data(), h.data());
       Vec3T<Taylor<K>> a = problem.point(xs.data());
-      VecX rhs(N);
+      Eigen::Matrix<double, N, 1> rhs;
       for (int r = 0; r < N - 1; ++r) rhs[r] = -h[static_cast<std::size_t>(r)][k];
       Vec3 ak(a.x[k], a.y[k], a.z[k]);
       double rest = 0;
@@ -183,13 +184,13 @@ inline constexpr int kMaxCurveJetOrder = 8;
 struct DynamicCurveJet {
   int order = 0;
   CurveJetStatus status = CurveJetStatus::kSingular;
-  std::array<VecX, kMaxCurveJetOrder + 1> x;
+  std::array<UnknownVec, kMaxCurveJetOrder + 1> x;
   std::array<Vec3, kMaxCurveJetOrder + 1> alpha;
   double rank_ratio = 0;
   int orientation = 0;  // as CurveJet::orientation
 
-  VecX x_at(double s) const {
-    VecX r = x[static_cast<std::size_t>(order)];
+  UnknownVec x_at(double s) const {
+    UnknownVec r = x[static_cast<std::size_t>(order)];
     for (int k = order - 1; k >= 0; --k) r = (r * s + x[static_cast<std::size_t>(k)]).eval();
     return r;
   }
@@ -212,7 +213,7 @@ DynamicCurveJet to_dynamic(const CurveJet<K>& j, int n) {
   d.rank_ratio = j.rank_ratio;
   d.orientation = j.orientation;
   for (int k = 0; k <= kMaxCurveJetOrder; ++k) {
-    d.x[static_cast<std::size_t>(k)] = k <= K ? j.x[static_cast<std::size_t>(k)] : VecX::Zero(n);
+    d.x[static_cast<std::size_t>(k)] = k <= K ? j.x[static_cast<std::size_t>(k)] : UnknownVec::Zero(n);
     d.alpha[static_cast<std::size_t>(k)] = k <= K ? j.alpha[static_cast<std::size_t>(k)] : Vec3::Zero();
   }
   return d;

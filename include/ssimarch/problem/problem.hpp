@@ -20,6 +20,7 @@
 #include "ssimarch/core/jet.hpp"
 #include "ssimarch/core/vec3.hpp"
 #include "ssimarch/surface/surface.hpp"
+#include "ssimarch/surface/trims.hpp"
 
 namespace ssimarch {
 
@@ -30,12 +31,21 @@ enum class PairKind {
 };
 std::string_view to_string(PairKind kind);
 
+/// Storage of the first-order data with the problem's fixed maximum sizes (n <= 4 unknowns,
+/// n - 1 <= 3 equations): Eigen keeps them in the object, so linearising allocates nothing
+/// (issue 12: the corrector linearises at every iteration of every point).
+using EquationVec = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1>;
+using EquationJacobian = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 4>;
+using PointJacobian = Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 4>;
+using UnknownVec = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 4, 1>;                  // n <= 4 entries
+using UnknownMat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, 4>;     // n x n, n <= 4
+
 /// The first-order data of H at one point, all in double.
 struct Linearization {
-  VecX h;          // H(x), n-1 components
-  MatX jacobian;   // dH/dx, (n-1) x n
-  Vec3 point;      // the 3D point of x
-  MatX point_jacobian;  // d point / dx, 3 x n
+  EquationVec h;              // H(x), n-1 components
+  EquationJacobian jacobian;  // dH/dx, (n-1) x n
+  Vec3 point;                 // the 3D point of x
+  PointJacobian point_jacobian;  // d point / dx, 3 x n
   Vec3 normal_first, normal_second;  // unit surface normals (zero vector where undefined)
   double distance = 0;  // first-order distance of the 3D point from the two surfaces (model units)
 };
@@ -92,6 +102,9 @@ class Problem {
   /// pair |grad g^T DF| / (|grad g| sigma_max(DF)), the sine of the angle between the normals up
   /// to the parameterisation's distortion. 0 at a singular point of the curve.
   static double rank_ratio(const Linearization& L);
+  /// The same ratio from the singular values of J_H (decreasing; 2 or 3 equations), for a caller
+  /// that has J_H's SVD already.
+  static double rank_ratio(const Eigen::Ref<const Eigen::VectorXd>& singular_values);
 
   // --- the unknowns' domain --------------------------------------------------------------------
   /// Bounds of each unknown: parameter domains (u,v[,p,q]) or the intersection of the implicit
@@ -121,6 +134,7 @@ class Problem {
   std::vector<double> periods_;
   double scale_ = 1.0;
   bool disjoint_ = false;
+  std::vector<Slab> trims_;  // problem_trims(*this), kept: inside() runs at every step
 };
 
 }  // namespace ssimarch

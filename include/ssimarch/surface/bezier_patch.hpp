@@ -45,14 +45,14 @@ class BezierPatch {
   Vec3T<T> eval(const T& u, const T& v) const {
     const auto& h = *homogeneous_;
     const std::size_t cols = static_cast<std::size_t>(m_) + 1;
-    std::vector<std::array<T, D>> row(cols), col(static_cast<std::size_t>(n_) + 1);
+    internal::PointScratch<T, D> row(cols), col(static_cast<std::size_t>(n_) + 1);
     for (std::size_t i = 0; i <= static_cast<std::size_t>(n_); ++i) {
       for (std::size_t j = 0; j < cols; ++j)
         for (std::size_t c = 0; c < D; ++c) row[j][c] = T(h[i * cols + j][c]);
-      internal::de_casteljau<T, D>(row, v);
+      internal::de_casteljau<T, D>(row.span(), v);
       col[i] = row[0];
     }
-    internal::de_casteljau<T, D>(col, u);
+    internal::de_casteljau<T, D>(col.span(), u);
     const auto& q = col[0];
     if constexpr (D == 4) return {q[0] / q[3], q[1] / q[3], q[2] / q[3]};
     else return {q[0], q[1], q[2]};

@@ -56,7 +56,7 @@ class BSplineSurface {
     const Data& d = *data_;
     const int ku = internal::find_span(d.knots_u, p_, nu_, primal(u));
     const int kv = internal::find_span(d.knots_v, q_, nv_, primal(v));
-    std::vector<std::array<T, D>> row(static_cast<std::size_t>(q_) + 1), col(static_cast<std::size_t>(p_) + 1);
+    internal::PointScratch<T, D> row(static_cast<std::size_t>(q_) + 1), col(static_cast<std::size_t>(p_) + 1);
     for (int a = 0; a <= p_; ++a) {
       const std::size_t i = static_cast<std::size_t>(ku - p_ + a);
       for (int b = 0; b <= q_; ++b) {
@@ -64,10 +64,10 @@ class BSplineSurface {
         for (std::size_t c = 0; c < D; ++c)
           row[static_cast<std::size_t>(b)][c] = T(d.homogeneous[i * static_cast<std::size_t>(nv_) + j][c]);
       }
-      internal::de_boor<T, D>(row, d.knots_v, q_, kv, v);
+      internal::de_boor<T, D>(row.span(), d.knots_v, q_, kv, v);
       col[static_cast<std::size_t>(a)] = row[static_cast<std::size_t>(q_)];
     }
-    internal::de_boor<T, D>(col, d.knots_u, p_, ku, u);
+    internal::de_boor<T, D>(col.span(), d.knots_u, p_, ku, u);
     const auto& q = col[static_cast<std::size_t>(p_)];
     if constexpr (D == 4) return {q[0] / q[3], q[1] / q[3], q[2] / q[3]};
     else return {q[0], q[1], q[2]};

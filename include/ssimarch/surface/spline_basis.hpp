@@ -3,12 +3,38 @@
 // (D = 3 polynomial, D = 4 rational: (w x, w y, w z, w)).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <span>
 #include <vector>
 
 namespace ssimarch::internal {
+
+/// The working points of one de Casteljau / de Boor evaluation, without a heap allocation per
+/// call (issue 12: the marching loop evaluates surfaces at every corrector iteration). Up to
+/// kInlineBytes of points live in the object itself (8 points of degree 7 for double and
+/// first-order jets; fewer for high-order jets, whose points are large), beyond that on the heap:
+/// only degrees far above CAD practice or very high-order jets pay for an allocation.
+template <class T, std::size_t D>
+class PointScratch {
+ public:
+  static constexpr std::size_t kInlineBytes = 8192;
+  static constexpr std::size_t kInline = std::min<std::size_t>(8, kInlineBytes / sizeof(std::array<T, D>));
+
+  explicit PointScratch(std::size_t n) : n_(n) {
+    if (n_ > kInline) heap_.resize(n_);
+  }
+  std::span<std::array<T, D>> span() {
+    return n_ <= kInline ? std::span<std::array<T, D>>(inline_.data(), n_) : std::span<std::array<T, D>>(heap_);
+  }
+  std::array<T, D>& operator[](std::size_t i) { return span()[i]; }
+
+ private:
+  std::size_t n_;
+  std::array<std::array<T, D>, kInline == 0 ? 1 : kInline> inline_;
+  std::vector<std::array<T, D>> heap_;
+};
 
 /// Index k of the knot span [knots[k], knots[k+1]) containing t, restricted to the domain spans
 /// degree <= k < n_ctrl (t below the domain gives the first span, t at or above its end the
