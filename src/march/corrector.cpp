@@ -7,7 +7,7 @@ AnyCorrector make_corrector(const TraceOptions& options) {
   return NewtonCorrector{};
 }
 
-CorrectorResult correct(const AnyCorrector& c, const Problem& problem, const VecX& guess, const CorrectorOptions& options) {
+CorrectorResult correct(const AnyCorrector& c, const Problem& problem, const UnknownVec& guess, const CorrectorOptions& options) {
   return std::visit([&](const auto& x) { return x.correct(problem, guess, options); }, c);
 }
 

@@ -18,9 +18,9 @@ struct Crossing {
   double fraction = 2, value = 0;
 };
 
-Crossing first_crossing(const Problem& P, const std::vector<Slab>& trims, const CurvePoint& cur, const VecX& x1) {
+Crossing first_crossing(const Problem& P, const std::vector<Slab>& trims, const CurvePoint& cur, const UnknownVec& x1) {
   Crossing c;
-  const VecX delta = x1 - cur.x;
+  const UnknownVec delta = x1 - cur.x;
   for (int i = 0; i < P.dim(); ++i) {
     if (P.periods()[static_cast<std::size_t>(i)] > 0 || delta[i] == 0) continue;
     const Interval& iv = P.bounds()[static_cast<std::size_t>(i)];
@@ -47,7 +47,7 @@ Crossing first_crossing(const Problem& P, const std::vector<Slab>& trims, const 
 // Newton on the square system [H(x); normal . point(x) - offset], Jacobian [J_H; normal^T DP(x)]:
 // the curve point on a trim's face (docs/math/poles.md §2), as solve_with_fixed_unknown lands on
 // a parameter bound.
-CorrectorResult solve_on_plane(const Problem& P, const VecX& guess, const Vec3& normal, double offset,
+CorrectorResult solve_on_plane(const Problem& P, const UnknownVec& guess, const Vec3& normal, double offset,
                                const CorrectorOptions& co) {
   CorrectorResult r;
   r.x = guess;
@@ -75,13 +75,13 @@ CorrectorResult solve_on_plane(const Problem& P, const VecX& guess, const Vec3& 
     } else if (it > co.max_iterations) {
       break;
     }
-    MatX A(n, n);
+    UnknownMat A(n, n);
     A.topRows(n - 1) = L.jacobian;
     A.row(n - 1) = (L.point_jacobian.transpose() * normal).transpose();
-    VecX rhs(n);
+    UnknownVec rhs(n);
     rhs.head(n - 1) = L.h;
     rhs[n - 1] = normal.dot(L.point) - offset;
-    const Eigen::FullPivLU<MatX> lu(A);
+    const Eigen::FullPivLU<UnknownMat> lu(A);
     if (!lu.isInvertible()) {
       r.status = CorrectorStatus::kSingular;
       return r;
@@ -93,7 +93,7 @@ CorrectorResult solve_on_plane(const Problem& P, const VecX& guess, const Vec3& 
   return r;
 }
 
-int bound_left_at(const Problem& P, const VecX& x, const VecX& dx) {
+int bound_left_at(const Problem& P, const UnknownVec& x, const UnknownVec& dx) {
   for (int i = 0; i < P.dim() && i < dx.size(); ++i) {
     if (P.periods()[static_cast<std::size_t>(i)] > 0) continue;
     const Interval& b = P.bounds()[static_cast<std::size_t>(i)];
@@ -104,7 +104,7 @@ int bound_left_at(const Problem& P, const VecX& x, const VecX& dx) {
   return -1;
 }
 
-const Pole* crossed_pole(const Problem& P, const std::vector<Pole>& poles, const CurvePoint& cur, const VecX& x1) {
+const Pole* crossed_pole(const Problem& P, const std::vector<Pole>& poles, const CurvePoint& cur, const UnknownVec& x1) {
   const Crossing c = first_crossing(P, problem_trims(P), cur, x1);
   if (c.unknown < 0) return nullptr;
   for (const Pole& pole : poles)
@@ -112,7 +112,7 @@ const Pole* crossed_pole(const Problem& P, const std::vector<Pole>& poles, const
   return nullptr;
 }
 
-Event land_on_domain_edge(const Problem& P, const CurvePoint& cur, const VecX& x1, const CorrectorOptions& co,
+Event land_on_domain_edge(const Problem& P, const CurvePoint& cur, const UnknownVec& x1, const CorrectorOptions& co,
                           TraceStats* stats, MarchResult* r) {
   Event e;
   e.kind = EventKind::kDomainEdge;
@@ -122,7 +122,7 @@ Event land_on_domain_edge(const Problem& P, const CurvePoint& cur, const VecX& x
     e.message = "left the domain";
     return e;
   }
-  const VecX guess = cur.x + c.fraction * (x1 - cur.x);
+  const UnknownVec guess = cur.x + c.fraction * (x1 - cur.x);
   const Slab* trim = c.trim >= 0 ? &trims[static_cast<std::size_t>(c.trim)] : nullptr;
   CorrectorResult landed = trim ? solve_on_plane(P, guess, trim->normal, c.value, co)
                                 : solve_with_fixed_unknown(P, guess, c.unknown, c.value, co);
@@ -153,7 +153,7 @@ Event land_on_domain_edge(const Problem& P, const CurvePoint& cur, const VecX& x
 
 namespace ssimarch {
 
-std::optional<VecX> onto_trims(const Problem& P, const VecX& x, const CorrectorOptions& co) {
+std::optional<UnknownVec> onto_trims(const Problem& P, const UnknownVec& x, const CorrectorOptions& co) {
   const Vec3 p = P.point(x);
   for (const Slab& s : problem_trims(P)) {
     if (s.contains(p)) continue;

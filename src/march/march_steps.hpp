@@ -28,7 +28,7 @@ Event stuck_event(const Problem& problem, const CurvePoint& cur, double rank_rat
 /// x1, the corrected point after `cur`, is outside the domain: lands on the first bound the
 /// chord cur.x -> x1 crosses (Newton with that unknown fixed), appends the landed point to *r
 /// when it differs from cur, and returns the kDomainEdge event.
-Event land_on_domain_edge(const Problem& problem, const CurvePoint& cur, const VecX& x1, const CorrectorOptions& co,
+Event land_on_domain_edge(const Problem& problem, const CurvePoint& cur, const UnknownVec& x1, const CorrectorOptions& co,
                           TraceStats* stats, MarchResult* r);
 
 /// The unknown on whose bound x lies (within 1e-12 relative) while the tangent dx (in the
@@ -36,15 +36,15 @@ Event land_on_domain_edge(const Problem& problem, const CurvePoint& cur, const V
 /// first step would leave the domain, and the corrector can put it back on the curve beyond an
 /// excursion outside the domain (a step over a stretch the domain does not hold; stress seed 1
 /// pair 74).
-int bound_left_at(const Problem& problem, const VecX& x, const VecX& dx);
+int bound_left_at(const Problem& problem, const UnknownVec& x, const UnknownVec& dx);
 
 /// The pole whose degenerate edge the chord cur.x -> x1 crosses first (before any other
 /// boundary), or nullptr.
-const Pole* crossed_pole(const Problem& problem, const std::vector<Pole>& poles, const CurvePoint& cur, const VecX& x1);
+const Pole* crossed_pole(const Problem& problem, const std::vector<Pole>& poles, const CurvePoint& cur, const UnknownVec& x1);
 
 /// Newton on [H(x); normal . point(x) - offset]: the curve point on that plane (a trim's face,
 /// the plane beyond a pole).
-CorrectorResult solve_on_plane(const Problem& problem, const VecX& guess, const Vec3& normal, double offset,
+CorrectorResult solve_on_plane(const Problem& problem, const UnknownVec& guess, const Vec3& normal, double offset,
                                const CorrectorOptions& co);
 
 /// Whether the march closed: the start lies on the chord cur.p -> p1 within twice the chord's

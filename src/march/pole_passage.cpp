@@ -55,7 +55,7 @@ struct OtherSide {
   Vec3 normal = Vec3::Zero();
   double distance = 0;
 };
-OtherSide other_side(const Problem& P, const Pole& pole, const VecX& x, const Vec3& p) {
+OtherSide other_side(const Problem& P, const Pole& pole, const UnknownVec& x, const Vec3& p) {
   OtherSide o;
   const Surface& g = surface_of(P, 1 - pole.surface);
   if (P.kind() == PairKind::kParametricImplicit) {
@@ -103,8 +103,8 @@ double exit_meridian(const Problem& P, const Pole& pole, const Vec3& dir) {
 
 // Unknowns whose 3D point is near q (|q - P| small, q beyond the pole along `dir`): the pole
 // surface in the chart of the exit meridian (eq. (5)), the other surface by its nearest point.
-VecX chart_unknowns(const Problem& P, const Pole& pole, const VecX& x, const Vec3& q, const OtherSide& other) {
-  VecX y = x;
+UnknownVec chart_unknowns(const Problem& P, const Pole& pole, const UnknownVec& x, const Vec3& q, const OtherSide& other) {
+  UnknownVec y = x;
   const Vec3 off = q - pole.point;
   const double w = exit_meridian(P, pole, off.normalized());
   const double speed = inward_direction(P, pole, w).norm();
@@ -126,7 +126,7 @@ VecX chart_unknowns(const Problem& P, const Pole& pole, const VecX& x, const Vec
 
 // The corrected curve point from the chart unknowns y, if it lies beyond the pole along dir and
 // within half of `distance` of the target q.
-std::optional<CurvePoint> corrected_beyond(const Problem& P, const Pole& pole, const VecX& y, const Vec3& q,
+std::optional<CurvePoint> corrected_beyond(const Problem& P, const Pole& pole, const UnknownVec& y, const Vec3& q,
                                            const Vec3& dir, double distance, const CorrectorOptions& co) {
   // Corrected in the plane through q normal to dir (Allgower & Georg's pseudo-arclength
   // corrector): a free minimum-norm correction near the pole slides along the badly scaled
@@ -161,7 +161,7 @@ PolePassage pass_pole(const Problem& P, const Pole& pole, const CurvePoint& cur,
   Vec3 q, dir;
   if (r.through) {
     const Vec3 t = tangent_at_pole(limit_normal(P, pole), other.normal, cur.t);
-    VecX x = cur.x;
+    UnknownVec x = cur.x;
     x[pole.unknown] = pole.value;
     if (P.kind() == PairKind::kParametricParametric) x.segment(2 * (1 - pole.surface), 2) = other.params;
     r.at_pole = CurvePoint{x, pole.point, t};
@@ -172,7 +172,7 @@ PolePassage pass_pole(const Problem& P, const Pole& pole, const CurvePoint& cur,
     q = cur.p + 2 * std::max(ahead, distance) * cur.t;
     dir = cur.t;
   }
-  const VecX y = chart_unknowns(P, pole, cur.x, q, other);
+  const UnknownVec y = chart_unknowns(P, pole, cur.x, q, other);
   if (auto b = corrected_beyond(P, pole, y, q, dir, distance, co)) {
     r.ok = true;
     r.beyond = *b;
@@ -182,7 +182,7 @@ PolePassage pass_pole(const Problem& P, const Pole& pole, const CurvePoint& cur,
   return r;
 }
 
-std::optional<CurvePoint> leave_pole(const Problem& P, const Pole& pole, const VecX& x, double distance,
+std::optional<CurvePoint> leave_pole(const Problem& P, const Pole& pole, const UnknownVec& x, double distance,
                                      const CorrectorOptions& co) {
   const OtherSide other = other_side(P, pole, x, pole.point);
   const Vec3 nf = limit_normal(P, pole);
@@ -193,7 +193,7 @@ std::optional<CurvePoint> leave_pole(const Problem& P, const Pole& pole, const V
   return corrected_beyond(P, pole, chart_unknowns(P, pole, x, q, other), q, dir, distance, co);
 }
 
-VecX unknowns_beyond_pole(const Problem& P, const Pole& pole, const VecX& x, const Vec3& q) {
+UnknownVec unknowns_beyond_pole(const Problem& P, const Pole& pole, const UnknownVec& x, const Vec3& q) {
   return chart_unknowns(P, pole, x, q, other_side(P, pole, x, pole.point));
 }
 

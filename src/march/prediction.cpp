@@ -41,8 +41,8 @@ Vec2 foot_point(const Surface& s, Vec2 uv, const Vec3& Q, double stop, long* eva
 
 }  // namespace
 
-VecX map_to_unknowns(const Problem& problem, const VecX& x0, const Vec3& Q, double stop, std::array<long, 2>* evaluations) {
-  VecX x = x0;
+UnknownVec map_to_unknowns(const Problem& problem, const UnknownVec& x0, const Vec3& Q, double stop, std::array<long, 2>* evaluations) {
+  UnknownVec x = x0;
   switch (problem.kind()) {
     case PairKind::kImplicitImplicit:
       x = Q;

@@ -38,11 +38,12 @@ Prediction predict(const AnyPredictor& p, const Problem& problem, const MarchSta
 }
 
 std::array<long, 2> jet_evaluation_cost(const Problem& problem, int order) {
-  // curve_jet_n: raw_jacobians (residual + point), linearize (for rank_ratio), then per order
-  // k = 2..K one Taylor residual + point. point() calls the first surface unless implicit-implicit.
+  // curve_jet_n: raw_jacobians (residual and point from one call of each surface), then per
+  // order k = 2..K one Taylor residual and point; a parametric-implicit pair also linearises
+  // for the rank ratio (problem/curve_jet.hpp, raw_rank_ratio).
   const long K = std::max(order, 1);
-  if (problem.kind() == PairKind::kImplicitImplicit) return {K + 1, K + 1};
-  return {2 * K + 1, K + 1};
+  if (problem.kind() == PairKind::kParametricImplicit) return {K + 1, K + 1};
+  return {K, K};
 }
 
 std::array<long, 2> linearize_evaluation_cost(const Problem&) { return {1, 1}; }

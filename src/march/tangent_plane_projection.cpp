@@ -96,8 +96,8 @@ struct FootPair {
         break;
     }
   }
-  VecX unknowns(const Vec3& P) const {
-    VecX x(problem.dim());
+  UnknownVec unknowns(const Vec3& P) const {
+    UnknownVec x(problem.dim());
     switch (problem.kind()) {
       case PairKind::kParametricParametric: x << uv[0], uv[1], pq[0], pq[1]; break;
       case PairKind::kParametricImplicit: x << uv[0], uv[1]; break;
@@ -108,7 +108,7 @@ struct FootPair {
 };
 
 // P0 of the guess: the mean of its surface points (the point itself, implicit-implicit).
-Vec3 starting_point(const Problem& problem, const VecX& guess, FootPair* feet, std::array<long, 2>* evaluations) {
+Vec3 starting_point(const Problem& problem, const UnknownVec& guess, FootPair* feet, std::array<long, 2>* evaluations) {
   switch (problem.kind()) {
     case PairKind::kParametricParametric: {
       feet->uv = guess.head(2);
@@ -143,7 +143,7 @@ Vec3 midpoint_on_plane_line(const Foot& A, const Foot& B, const Vec3& P, const V
 
 }  // namespace
 
-CorrectorResult TangentPlaneProjection::correct(const Problem& problem, const VecX& guess,
+CorrectorResult TangentPlaneProjection::correct(const Problem& problem, const UnknownVec& guess,
                                                 const CorrectorOptions& options) const {
   CorrectorResult r;
   r.x = guess;

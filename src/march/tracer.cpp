@@ -116,7 +116,7 @@ struct Marcher {
     StepReport report;
   };
 
-  DynamicCurveJet jet_at(const VecX& x, const Vec3* hint) {
+  DynamicCurveJet jet_at(const UnknownVec& x, const Vec3* hint) {
     stats->jet_evaluations += order;
     stats->add_surface_evaluations(jet_cost);
     return curve_jet_dynamic(P, x, order, hint);
@@ -137,8 +137,11 @@ struct Marcher {
       ++stats->corrector_failures;
       return a;
     }
-    a.p1 = P.point(a.corrected.x);
-    if (P.kind() != PairKind::kImplicitImplicit) ++stats->surface_evaluations[0];
+    a.p1 = a.corrected.point;  // from the corrector's last linearisation
+    if (!a.p1.allFinite()) {
+      a.p1 = P.point(a.corrected.x);
+      if (P.kind() != PairKind::kImplicitImplicit) ++stats->surface_evaluations[0];
+    }
     if (!internal::chord_is_plausible(cur, a.p1, a.prediction.point, arc, o)) return a;
     a.next = jet_at(a.corrected.x, &cur.t);
     if (a.next.status != CurveJetStatus::kOk || !internal::turn_is_plausible(cur.t, a.next.tangent(), o)) return a;
@@ -232,7 +235,7 @@ bool pass_pole_step(const Problem& P, const Pole& pole, double h, const CurvePoi
   const double distance = std::max((pole.point - m->cur.p).norm(), 0.25 * h);
   const PolePassage pp = pass_pole(P, pole, m->cur, distance, m->co);
   auto end = [&](EventKind kind, const std::string& message) {
-    r->event = Event{kind, BudgetBound::kNone, message, VecX{}};
+    r->event = Event{kind, BudgetBound::kNone, message, UnknownVec{}};
     return true;
   };
   auto close_on = [&](const CurvePoint& a, const Vec3& p1, const Vec3& t1) {
@@ -272,13 +275,13 @@ MarchResult Tracer::march_until_event(const CurvePoint& start_point, Direction d
   m.cur = start;
   if (m.state.here.status != CurveJetStatus::kOk) {
     r.event = Event{EventKind::kSingularSuspected, BudgetBound::kNone,
-                    "the start point " + describe_point(start.p) + " is a singular point of the curve", VecX{}};
+                    "the start point " + describe_point(start.p) + " is a singular point of the curve", UnknownVec{}};
     return r;
   }
   if (const int i = internal::bound_left_at(problem_, start.x, m.state.here.x[1]); i >= 0) {
     r.event = Event{EventKind::kDomainEdge, BudgetBound::kNone,
                     "starts on the domain edge " + problem_.unknown_names()[static_cast<std::size_t>(i)] + " and leaves the domain there",
-                    VecX{}};
+                    UnknownVec{}};
     return r;
   }
   std::visit([&](auto& s) { s.start(frenet_from_jet(m.state.here, problem_.scale())); }, m.rule);
@@ -342,7 +345,7 @@ MarchResult Tracer::march_until_event(const CurvePoint& start_point, Direction d
         internal::closes_loop(target, m.cur, a.p1, a.next.tangent(), sagitta_slack)) {
       r.length += arc_length_estimate(m.cur.p, m.cur.t, target.p, target.t);
       r.points.push_back(target);
-      r.event = Event{EventKind::kClosed, BudgetBound::kNone, "closed loop", VecX{}};
+      r.event = Event{EventKind::kClosed, BudgetBound::kNone, "closed loop", UnknownVec{}};
       return r;
     }
     watch = limits.watch_crossings;
@@ -350,7 +353,7 @@ MarchResult Tracer::march_until_event(const CurvePoint& start_point, Direction d
     m.accept(a, &r);
     if (limits.traced && near_traced_curve(m.cur.p, *limits.traced, limits.traced_radius)) {
       r.event = Event{EventKind::kReachedTracedCurve, BudgetBound::kNone,
-                      "reached a traced curve at " + describe_point(m.cur.p), VecX{}};
+                      "reached a traced curve at " + describe_point(m.cur.p), UnknownVec{}};
       return r;
     }
   }

@@ -24,6 +24,7 @@ ConvergenceRule::Verdict ConvergenceRule::judge(const Linearization& L, const Co
   if (!std::isfinite(L.distance)) return Verdict::kDiverging;
   if (L.distance <= options.tolerance) {
     r->status = CorrectorStatus::kConverged;
+    r->point = L.point;
     return Verdict::kConverged;
   }
   growth_ = L.distance > previous_ ? growth_ + 1 : 0;
@@ -32,7 +33,7 @@ ConvergenceRule::Verdict ConvergenceRule::judge(const Linearization& L, const Co
   return Verdict::kContinue;
 }
 
-CorrectorResult gauss_newton(const Problem& problem, const VecX& guess, const CorrectorOptions& options) {
+CorrectorResult gauss_newton(const Problem& problem, const UnknownVec& guess, const CorrectorOptions& options) {
   CorrectorResult r;
   r.x = guess;
   Linearization L = problem.linearize(r.x);
@@ -64,7 +65,7 @@ CorrectorResult gauss_newton(const Problem& problem, const VecX& guess, const Co
   return r;
 }
 
-CorrectorResult solve_with_fixed_unknown(const Problem& problem, const VecX& guess, int i, double value,
+CorrectorResult solve_with_fixed_unknown(const Problem& problem, const UnknownVec& guess, int i, double value,
                                          const CorrectorOptions& options) {
   CorrectorResult r;
   r.x = guess;

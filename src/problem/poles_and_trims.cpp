@@ -21,7 +21,7 @@ std::vector<Pole> problem_poles(const Problem& P) {
   return out;
 }
 
-const Pole* pole_at(const std::vector<Pole>& poles, const VecX& x, double eps) {
+const Pole* pole_at(const std::vector<Pole>& poles, const UnknownVec& x, double eps) {
   for (const Pole& p : poles)
     if (std::fabs(x[p.unknown] - p.value) <= eps) return &p;
   return nullptr;

@@ -119,12 +119,12 @@ Problem::Problem(Surface first, Surface second, PairKind kind)
   trims_ = problem_trims(*this);
 }
 
-Vec3 Problem::point(const VecX& x) const {
+Vec3 Problem::point(const UnknownVec& x) const {
   Vec3T<double> p = point(x.data());
   return {p.x, p.y, p.z};
 }
 
-Linearization Problem::linearize(const VecX& x) const {
+Linearization Problem::linearize(const UnknownVec& x) const {
   Linearization L;
   const int m = num_equations();
   L.h.resize(m);
@@ -203,8 +203,8 @@ double Problem::rank_ratio(const Eigen::Ref<const Eigen::VectorXd>& singular_val
   return sv[0] > 0 ? sv[sv.size() - 1] / sv[0] : 0.0;
 }
 
-VecX Problem::wrap(const VecX& x) const {
-  VecX y = x;
+UnknownVec Problem::wrap(const UnknownVec& x) const {
+  UnknownVec y = x;
   for (int i = 0; i < dim_; ++i) {
     double P = periods_[static_cast<std::size_t>(i)];
     if (P > 0) {
@@ -215,8 +215,8 @@ VecX Problem::wrap(const VecX& x) const {
   return y;
 }
 
-VecX Problem::difference(const VecX& a, const VecX& b) const {
-  VecX d = b - a;
+UnknownVec Problem::difference(const UnknownVec& a, const UnknownVec& b) const {
+  UnknownVec d = b - a;
   for (int i = 0; i < dim_; ++i) {
     double P = periods_[static_cast<std::size_t>(i)];
     if (P > 0) d[i] -= P * std::round(d[i] / P);
@@ -224,7 +224,7 @@ VecX Problem::difference(const VecX& a, const VecX& b) const {
   return d;
 }
 
-bool Problem::inside(const VecX& x, double eps) const {
+bool Problem::inside(const UnknownVec& x, double eps) const {
   for (int i = 0; i < dim_; ++i) {
     if (periods_[static_cast<std::size_t>(i)] > 0) continue;
     const Interval& b = bounds_[static_cast<std::size_t>(i)];

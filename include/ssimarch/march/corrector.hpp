@@ -13,6 +13,6 @@ namespace ssimarch {
 
 using AnyCorrector = std::variant<NewtonCorrector, TangentPlaneProjection>;
 AnyCorrector make_corrector(const TraceOptions& options);
-CorrectorResult correct(const AnyCorrector& c, const Problem& problem, const VecX& guess, const CorrectorOptions& options);
+CorrectorResult correct(const AnyCorrector& c, const Problem& problem, const UnknownVec& guess, const CorrectorOptions& options);
 
 }  // namespace ssimarch

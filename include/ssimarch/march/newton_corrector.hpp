@@ -7,7 +7,7 @@
 namespace ssimarch {
 
 struct NewtonCorrector {
-  CorrectorResult correct(const Problem& problem, const VecX& guess, const CorrectorOptions& options) const {
+  CorrectorResult correct(const Problem& problem, const UnknownVec& guess, const CorrectorOptions& options) const {
     return gauss_newton(problem, guess, options);
   }
 };

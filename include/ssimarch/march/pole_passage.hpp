@@ -38,13 +38,13 @@ PolePassage pass_pole(const Problem& problem, const Pole& pole, const CurvePoint
 /// A regular curve point about `distance` from x, a curve point on the degenerate edge `pole`
 /// (a start point found at a pole): along N_F x N_G at P. Empty when there is none (the curve
 /// is tangent to the surface's tangent plane at P, or ends there).
-std::optional<CurvePoint> leave_pole(const Problem& problem, const Pole& pole, const VecX& x, double distance,
+std::optional<CurvePoint> leave_pole(const Problem& problem, const Pole& pole, const UnknownVec& x, double distance,
                                      const CorrectorOptions& co);
 
 /// Unknowns whose 3D point is near q, a point just beyond the pole (|q - P| small): the pole's
 /// surface in the chart of the meridian leaving P towards q, the other surface (parametric) by
 /// its nearest point; not corrected. For continuations through a pole other than the tracer's
 /// (the curves of tangential contact, topology/tangential_contact.hpp).
-VecX unknowns_beyond_pole(const Problem& problem, const Pole& pole, const VecX& x, const Vec3& q);
+UnknownVec unknowns_beyond_pole(const Problem& problem, const Pole& pole, const UnknownVec& x, const Vec3& q);
 
 }  // namespace ssimarch

@@ -21,7 +21,7 @@ namespace ssimarch {
 struct MarchState {
   DynamicCurveJet here;
   bool has_previous = false;
-  VecX previous_x;
+  UnknownVec previous_x;
   Vec3 previous_p = Vec3::Zero();
   Vec3 previous_t = Vec3::Zero();
   // Seed 000's "reuse t from the previous step" (b = 0): the line parameter of the last circle
@@ -35,7 +35,7 @@ struct MarchState {
 
 /// A guess for the corrector.
 struct Prediction {
-  VecX x;                 // unknowns to start the corrector from
+  UnknownVec x;                 // unknowns to start the corrector from
   Vec3 point = Vec3::Zero();  // the predicted 3D point (point(x) for parameter-space predictors)
   double arc = 0;         // arc length the prediction advances (h, except under the Wu-Andrade angle heuristic)
   bool fallback = false;  // fell back to the tangent step (no previous point, parallel tangents, ...)
@@ -48,7 +48,7 @@ struct Prediction {
 /// unknowns x0: per parametric surface, Gauss-Newton foot-point iterations from x0 (the first is
 /// the first-order map dx = D^+ (Q - S(x0))), at most 8, stopping once an update moves the point
 /// by <= stop (model units). Implicit-implicit: Q itself. Adds the surface calls to *evaluations.
-VecX map_to_unknowns(const Problem& problem, const VecX& x0, const Vec3& Q, double stop, std::array<long, 2>* evaluations);
+UnknownVec map_to_unknowns(const Problem& problem, const UnknownVec& x0, const Vec3& Q, double stop, std::array<long, 2>* evaluations);
 
 /// Tangents u, v with |u x v| <= kParallelTangentsSine |u| |v| (about 1e-8 radians apart) are
 /// parallel for the circle constructions: the normal planes do not meet in a usable line.

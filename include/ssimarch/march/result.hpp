@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "ssimarch/core/vec3.hpp"
+#include "ssimarch/problem/problem.hpp"
 #include "ssimarch/surface/domain.hpp"
 
 namespace ssimarch {
@@ -28,7 +29,7 @@ std::string_view to_string(Termination t);
 
 /// A point of a traced curve.
 struct CurvePoint {
-  VecX x;  // the unknowns of H (params: u,v[,p,q] or x,y,z), periodic ones wrapped into the domain
+  UnknownVec x;  // the unknowns of H (params: u,v[,p,q] or x,y,z), periodic ones wrapped into the domain
   Vec3 p;  // the 3D point
   Vec3 t;  // the unit tangent in the direction of travel
 };

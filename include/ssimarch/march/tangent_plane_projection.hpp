@@ -15,7 +15,7 @@
 namespace ssimarch {
 
 struct TangentPlaneProjection {
-  CorrectorResult correct(const Problem& problem, const VecX& guess, const CorrectorOptions& options) const;
+  CorrectorResult correct(const Problem& problem, const UnknownVec& guess, const CorrectorOptions& options) const;
 };
 
 }  // namespace ssimarch

@@ -52,7 +52,7 @@ struct Event {
   EventKind kind = EventKind::kBudget;
   BudgetBound bound = BudgetBound::kNone;
   std::string message;  // details for people: the point, the rank ratio, the edge, ...
-  VecX beyond;          // kSingularSuspected by a reversed orientation: the end of the step not
+  UnknownVec beyond;          // kSingularSuspected by a reversed orientation: the end of the step not
                         // taken (a crossing lies between the last point and it); else empty
 };
 /// How a curve end reports the event (result.hpp).

@@ -14,6 +14,6 @@ namespace ssimarch {
 /// x itself when it lies in every trim; else the curve point on the face of the first trim it
 /// violates (Newton on [H(x); n . p - b], from x), when that converges inside the domain;
 /// else empty.
-std::optional<VecX> onto_trims(const Problem& problem, const VecX& x, const CorrectorOptions& co);
+std::optional<UnknownVec> onto_trims(const Problem& problem, const UnknownVec& x, const CorrectorOptions& co);
 
 }  // namespace ssimarch

@@ -64,41 +64,92 @@ struct CurveJet {
 
 namespace internal {
 
-// Unnormalised J_H (the residual functor's own derivative) and D, via first-order jets.
-// Fixed-size matrices: a curve jet at every accepted point allocates nothing (issue 12).
+// Unnormalised J_H (the residual functor's own derivative), D and the point, via first-order
+// jets. Fixed-size matrices: a curve jet at every accepted point allocates nothing (issue 12).
 template <int N>
-void raw_jacobians(const Problem& problem, const VecX& x0, Eigen::Matrix<double, N - 1, N>* J,
-                   Eigen::Matrix<double, 3, N>* D) {
+void raw_jacobians(const Problem& problem, const UnknownVec& x0, Eigen::Matrix<double, N - 1, N>* J,
+                   Eigen::Matrix<double, 3, N>* D, Vec3* point) {
   using J1 = Jet<N, 1>;
   // Sized for the largest pair kind (4 unknowns, 3 equations): residual() switches on the
   // problem's kind at run time, so the compiler cannot see that only N entries are touched.
   std::array<J1, 4> x;
   for (int i = 0; i < N; ++i) x[static_cast<std::size_t>(i)] = J1::variable(i, x0[i]);
   std::array<J1, 3> h;
-  problem.residual(x.data(), h.data());
-  Vec3T<J1> p = problem.point(x.data());
+  const Vec3T<J1> p = problem.residual_and_point(x.data(), h.data());
   for (int r = 0; r < N - 1; ++r)
     for (int c = 0; c < N; ++c) (*J)(r, c) = h[static_cast<std::size_t>(r)].d(c);
-  for (int r = 0; r < 3; ++r)
+  for (int r = 0; r < 3; ++r) {
+    (*point)[r] = p[r].value();
     for (int c = 0; c < N; ++c) (*D)(r, c) = p[r].d(c);
+  }
+}
+
+// Problem::rank_ratio at x0 from the raw J_H the jet has already, without evaluating the
+// surfaces again: J_H itself for two parametric surfaces (as linearize builds it), its rows
+// normalised for two implicit ones. The parametric-implicit ratio needs |grad g|, which
+// J_H = grad g^T DF does not hold: there it linearises.
+template <int N>
+double raw_rank_ratio(const Problem& problem, const UnknownVec& x0, const Eigen::Matrix<double, N - 1, N>& J,
+                      const Eigen::JacobiSVD<Eigen::Matrix<double, N - 1, N>>& svd) {
+  switch (problem.kind()) {
+    case PairKind::kParametricParametric: return Problem::rank_ratio(svd.singularValues());
+    case PairKind::kImplicitImplicit: {
+      Eigen::Matrix<double, N - 1, N> normalised = J;
+      for (int r = 0; r < N - 1; ++r)
+        if (const double n = J.row(r).norm(); n > 0) normalised.row(r) /= n;
+      const Eigen::JacobiSVD<Eigen::Matrix<double, N - 1, N>> s(normalised);
+      return Problem::rank_ratio(s.singularValues());
+    }
+    case PairKind::kParametricImplicit: break;
+  }
+  return Problem::rank_ratio(problem.linearize(x0));
+}
+
+// Coefficients k..K of x and alpha (coefficients below k known). Coefficient k of H(x(s)) and
+// of point(x(s)) with c_k = 0 depends only on c_0..c_{k-1}: truncated series of order k give it
+// exactly, and cost less than order K (a pass of order K would carry K - k coefficients that
+// this pass never reads).
+template <int N, int K, int k>
+void higher_coefficients(const Problem& problem, const Eigen::PartialPivLU<Eigen::Matrix<double, N, N>>& lu,
+                         const Eigen::Matrix<double, 3, N>& D, CurveJet<K>* jet) {
+  std::array<Taylor<k>, 4> xs;  // sized for the largest pair kind, as in raw_jacobians
+  std::array<Taylor<k>, 3> h;
+  for (int i = 0; i < N; ++i) {
+    Taylor<k> t;
+    for (int j = 0; j < k; ++j) t[j] = jet->x[static_cast<std::size_t>(j)][i];
+    xs[static_cast<std::size_t>(i)] = t;
+  }
+  const Vec3T<Taylor<k>> a = problem.residual_and_point(xs.data(), h.data());
+  Eigen::Matrix<double, N, 1> rhs;
+  for (int r = 0; r < N - 1; ++r) rhs[r] = -h[static_cast<std::size_t>(r)][k];
+  const Vec3 ak(a.x[k], a.y[k], a.z[k]);
+  double rest = 0;
+  for (int i = 2; i <= k - 1; ++i) {
+    const int j = k + 1 - i;
+    if (j < 2 || j > k - 1) continue;
+    rest += i * j * jet->alpha[static_cast<std::size_t>(i)].dot(jet->alpha[static_cast<std::size_t>(j)]);
+  }
+  rhs[N - 1] = -jet->alpha[1].dot(ak) - rest / (2.0 * k);
+  jet->x[static_cast<std::size_t>(k)] = lu.solve(rhs);
+  jet->alpha[static_cast<std::size_t>(k)] = D * jet->x[static_cast<std::size_t>(k)] + ak;
+  if constexpr (k < K) higher_coefficients<N, K, k + 1>(problem, lu, D, jet);
 }
 
 template <int N, int K>
-CurveJet<K> curve_jet_n(const Problem& problem, const VecX& x0, const Vec3* hint) {
+CurveJet<K> curve_jet_n(const Problem& problem, const UnknownVec& x0, const Vec3* hint) {
   CurveJet<K> jet;
   for (auto& c : jet.x) c = UnknownVec::Zero(N);
   for (auto& a : jet.alpha) a = Vec3::Zero();
   jet.x[0] = x0;
-  jet.alpha[0] = problem.point(x0);
   Eigen::Matrix<double, N - 1, N> J;
   Eigen::Matrix<double, 3, N> D;
-  raw_jacobians<N>(problem, x0, &J, &D);
+  raw_jacobians<N>(problem, x0, &J, &D, &jet.alpha[0]);
   if (!J.allFinite() || !D.allFinite()) {
     jet.status = CurveJetStatus::kNonFinite;
     return jet;
   }
   const Eigen::JacobiSVD<Eigen::Matrix<double, N - 1, N>> svd(J, Eigen::ComputeFullV);
-  jet.rank_ratio = Problem::rank_ratio(problem.linearize(x0));
+  jet.rank_ratio = raw_rank_ratio<N>(problem, x0, J, svd);
   const Eigen::Matrix<double, N, 1> null = svd.matrixV().col(N - 1);
   Vec3 speed = D * null;
   if (jet.rank_ratio <= kCurveJetRankTolerance || speed.norm() == 0) {
@@ -123,29 +174,7 @@ CurveJet<K> curve_jet_n(const Problem& problem, const VecX& x0, const Vec3* hint
     A.topRows(N - 1) = J;
     A.row(N - 1) = jet.alpha[1].transpose() * D;
     const Eigen::PartialPivLU<Eigen::Matrix<double, N, N>> lu(A);
-    std::array<Taylor<K>, 4> xs;  // sized for the largest pair kind, as in raw_jacobians
-    std::array<Taylor<K>, 3> h;
-    for (int k = 2; k <= K; ++k) {
-      for (int i = 0; i < N; ++i) {
-        Taylor<K> t;
-        for (int j = 0; j < k; ++j) t[j] = jet.x[static_cast<std::size_t>(j)][i];
-        xs[static_cast<std::size_t>(i)] = t;
-      }
-      problem.residual(xs.data(), h.data());
-      Vec3T<Taylor<K>> a = problem.point(xs.data());
-      Eigen::Matrix<double, N, 1> rhs;
-      for (int r = 0; r < N - 1; ++r) rhs[r] = -h[static_cast<std::size_t>(r)][k];
-      Vec3 ak(a.x[k], a.y[k], a.z[k]);
-      double rest = 0;
-      for (int i = 2; i <= k - 1; ++i) {
-        int j = k + 1 - i;
-        if (j < 2 || j > k - 1) continue;
-        rest += i * j * jet.alpha[static_cast<std::size_t>(i)].dot(jet.alpha[static_cast<std::size_t>(j)]);
-      }
-      rhs[N - 1] = -jet.alpha[1].dot(ak) - rest / (2.0 * k);
-      jet.x[static_cast<std::size_t>(k)] = lu.solve(rhs);
-      jet.alpha[static_cast<std::size_t>(k)] = D * jet.x[static_cast<std::size_t>(k)] + ak;
-    }
+    higher_coefficients<N, K, 2>(problem, lu, D, &jet);
   }
   bool finite = true;
   for (int k = 0; k <= K; ++k)
@@ -162,7 +191,7 @@ CurveJet<K> curve_jet_n(const Problem& problem, const VecX& x0, const Vec3* hint
 /// H through x0.
 /// Throws InputError when x0 does not have problem.dim() entries.
 template <int K>
-CurveJet<K> curve_jet(const Problem& problem, const VecX& x0, const Vec3* hint = nullptr) {
+CurveJet<K> curve_jet(const Problem& problem, const UnknownVec& x0, const Vec3* hint = nullptr) {
   static_assert(K >= 1, "a curve jet has order >= 1");
   if (x0.size() != problem.dim())
     throw InputError("curve_jet", "the point has " + std::to_string(x0.size()) + " unknowns, the problem " +
@@ -221,7 +250,7 @@ DynamicCurveJet to_dynamic(const CurveJet<K>& j, int n) {
 }  // namespace internal
 
 /// Throws InputError when order is outside 1..kMaxCurveJetOrder (or as curve_jet).
-inline DynamicCurveJet curve_jet_dynamic(const Problem& problem, const VecX& x0, int order, const Vec3* hint = nullptr) {
+inline DynamicCurveJet curve_jet_dynamic(const Problem& problem, const UnknownVec& x0, int order, const Vec3* hint = nullptr) {
   const int n = problem.dim();
   switch (order) {
     case 1: return internal::to_dynamic(curve_jet<1>(problem, x0, hint), n);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <limits>
 #include <string_view>
 
 #include "ssimarch/problem/problem.hpp"
@@ -20,7 +21,10 @@ enum class CorrectorStatus {
 std::string_view to_string(CorrectorStatus s);
 
 struct CorrectorResult {
-  VecX x;
+  UnknownVec x;
+  // point(x) from the linearisation that judged x converged (so the caller need not evaluate
+  // the surface again); NaN unless status is kConverged.
+  Vec3 point = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
   CorrectorStatus status = CorrectorStatus::kDiverged;
   int iterations = 0;         // updates applied
   double distance = 0;        // final distance estimate (model units)
@@ -51,11 +55,11 @@ class ConvergenceRule {
 
 /// Gauss-Newton x <- x - J^+ H(x) from `guess`. At least one update is applied, so a point's
 /// iteration count is >= 1 and its residual is that of a corrected point.
-CorrectorResult gauss_newton(const Problem& problem, const VecX& guess, const CorrectorOptions& options);
+CorrectorResult gauss_newton(const Problem& problem, const UnknownVec& guess, const CorrectorOptions& options);
 
 /// Newton on the square system [H(x); x_i - value] (n equations): the point of the curve
 /// where unknown i equals `value` (used to land exactly on a domain edge).
-CorrectorResult solve_with_fixed_unknown(const Problem& problem, const VecX& guess, int i, double value,
+CorrectorResult solve_with_fixed_unknown(const Problem& problem, const UnknownVec& guess, int i, double value,
                                          const CorrectorOptions& options);
 
 }  // namespace ssimarch

@@ -28,7 +28,7 @@ struct Pole {
 std::vector<Pole> problem_poles(const Problem& problem);
 
 /// The pole among `poles` whose edge x lies on (|x[unknown] - value| <= eps), or nullptr.
-const Pole* pole_at(const std::vector<Pole>& poles, const VecX& x, double eps);
+const Pole* pole_at(const std::vector<Pole>& poles, const UnknownVec& x, double eps);
 
 /// The trims of the surfaces the problem uses in implicit form: every curve point lies in each.
 std::vector<Slab> problem_trims(const Problem& problem);

@@ -31,14 +31,18 @@ enum class PairKind {
 };
 std::string_view to_string(PairKind kind);
 
+/// The unknowns of a surface-surface problem (u,v[,p,q] or x,y,z: at most 4) and n x n matrices
+/// of them: Eigen keeps them in the object (fixed maximum size), so copying a curve point or a
+/// corrector result allocates nothing (issue 12: the marching loop runs per point).
+using UnknownVec = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 4, 1>;
+using UnknownMat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, 4>;
+
 /// Storage of the first-order data with the problem's fixed maximum sizes (n <= 4 unknowns,
 /// n - 1 <= 3 equations): Eigen keeps them in the object, so linearising allocates nothing
 /// (issue 12: the corrector linearises at every iteration of every point).
 using EquationVec = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1>;
 using EquationJacobian = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 4>;
 using PointJacobian = Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 4>;
-using UnknownVec = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 4, 1>;                  // n <= 4 entries
-using UnknownMat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, 4>;     // n x n, n <= 4
 
 /// The first-order data of H at one point, all in double.
 struct Linearization {
@@ -88,6 +92,34 @@ class Problem {
     }
   }
 
+  /// H(x) as residual() and the 3D point of x as point(), from one call of each surface
+  /// (point() alone calls the first surface again): for the curve jets' every order.
+  template <class T>
+  Vec3T<T> residual_and_point(const T* x, T* h) const {
+    switch (kind_) {
+      case PairKind::kParametricParametric: {
+        Vec3T<T> a = first_.point(x[0], x[1]);
+        Vec3T<T> b = second_.point(x[2], x[3]);
+        h[0] = a.x - b.x;
+        h[1] = a.y - b.y;
+        h[2] = a.z - b.z;
+        return a;
+      }
+      case PairKind::kParametricImplicit: {
+        Vec3T<T> a = first_.point(x[0], x[1]);
+        h[0] = second_.value(a);
+        return a;
+      }
+      case PairKind::kImplicitImplicit: {
+        Vec3T<T> p(x[0], x[1], x[2]);
+        h[0] = first_.value(p);
+        h[1] = second_.value(p);
+        return p;
+      }
+    }
+    return {};
+  }
+
   /// The 3D point of x for any scalar type.
   template <class T>
   Vec3T<T> point(const T* x) const {
@@ -95,8 +127,8 @@ class Problem {
     return first_.point(x[0], x[1]);
   }
 
-  Vec3 point(const VecX& x) const;
-  Linearization linearize(const VecX& x) const;
+  Vec3 point(const UnknownVec& x) const;
+  Linearization linearize(const UnknownVec& x) const;
   /// How far J_H is from losing rank, scale-free, in [0, 1]: sigma_min/sigma_max of the
   /// (row-normalised) J_H for 2 or 3 equations; for the single equation of a parametric-implicit
   /// pair |grad g^T DF| / (|grad g| sigma_max(DF)), the sine of the angle between the normals up
@@ -116,11 +148,11 @@ class Problem {
   /// Period of each unknown, 0 where not periodic.
   const std::vector<double>& periods() const { return periods_; }
   /// x with every periodic coordinate moved into [lo, lo + period).
-  VecX wrap(const VecX& x) const;
+  UnknownVec wrap(const UnknownVec& x) const;
   /// b - a with periodic coordinates reduced to (-period/2, period/2].
-  VecX difference(const VecX& a, const VecX& b) const;
+  UnknownVec difference(const UnknownVec& a, const UnknownVec& b) const;
   /// Whether x lies in the bounds (periodic ones always do) and in every trim (poles_and_trims.hpp), slack eps.
-  bool inside(const VecX& x, double eps = 0.0) const;
+  bool inside(const UnknownVec& x, double eps = 0.0) const;
   /// Names of the unknowns, e.g. {"u","v","p","q"}.
   std::vector<std::string> unknown_names() const;
   /// A length scale of the problem: the diagonal of the 3D region it lives in.
