@@ -155,7 +155,7 @@ struct Collector {
   std::vector<VecX> points;
 
   // x clamped into the bounds and polished by Newton when that keeps it close.
-  void add(VecX x, bool candidate) {
+  void add(UnknownVec x, bool candidate) {
     const Problem& P = tracer.problem();
     clamp(&x);
     CorrectorResult r = gauss_newton(P, x, CorrectorOptions{tracer.options().tolerance, 20});
@@ -172,7 +172,7 @@ struct Collector {
   }
 
   // Into the bounds (a root on a face may come out a rounding error beyond it).
-  void clamp(VecX* x) const {
+  void clamp(UnknownVec* x) const {
     const Problem& P = tracer.problem();
     for (int i = 0; i < P.dim(); ++i) {
       const Interval& b = P.bounds()[static_cast<std::size_t>(i)];

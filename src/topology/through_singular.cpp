@@ -29,7 +29,7 @@ void trim_beyond(const Vec3& s, std::size_t begin, BranchMarch* out) {
 bool locate_near(const Tracer& tracer, const CurvePoint& last, const Event& event, SingularLocation* loc) {
   const Problem& P = tracer.problem();
   const bool crossing = event.beyond.size() > 0;
-  const VecX guess = crossing ? VecX(last.x + 0.5 * P.difference(last.x, event.beyond)) : last.x;
+  const UnknownVec guess = crossing ? UnknownVec(last.x + 0.5 * P.difference(last.x, event.beyond)) : last.x;
   *loc = locate_singular_point(P, guess);
   const double chord = crossing ? (P.point(event.beyond) - last.p).norm() : 0.0;
   const double reach = std::max(2 * chord, tracer.options().step_length);
