@@ -1,0 +1,111 @@
+// The per-point kernels of the marching loop (docs/benchmarks.md, "Marching cost"): CPU time of a
+// curve jet of order 4 (what the tracer computes at every accepted point) and of one
+// linearisation (each corrector iteration), on Viviani's curve in its three forms and thesis
+// pair 1, plus surface points with first- and second-order jets of a bicubic NURBS surface.
+//
+//   jet_cost [--reps N]        (cmake --preset bench && cmake --build build-bench --target jet_cost)
+//
+// Thread CPU time (CLOCK_THREAD_CPUTIME_ID: a machine shared with other work disturbs it far
+// less than wall time), best of N repetitions (default 7) of 2000 calls each, in ns per call.
+// Written against the problem/ API that both the allocating and the allocation-free versions
+// share, so the same source measures before and after a change.
+#include <time.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "ssimarch/problem/closest_point.hpp"
+#include "ssimarch/problem/curve_jet.hpp"
+#include "ssimarch/problem/gauss_newton.hpp"
+#include "ssimarch/problem/problem.hpp"
+#include "ssimarch/surface/bspline_surface.hpp"
+#include "testing/surface_pairs.hpp"
+
+using namespace ssimarch;
+
+namespace {
+
+double thread_cpu_ns() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return 1e9 * static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec);
+}
+
+// Best time per call of f over reps repetitions of n calls (ns).
+template <class F>
+double ns_per_call(int reps, int n, F&& f) {
+  double best = 1e300;
+  for (int r = 0; r < reps; ++r) {
+    const double t0 = thread_cpu_ns();
+    for (int i = 0; i < n; ++i) f();
+    best = std::min(best, (thread_cpu_ns() - t0) / n);
+  }
+  return best;
+}
+
+struct Case {
+  std::string name;
+  Problem problem;
+  Vec3 start;
+};
+
+volatile double g_sink = 0;
+
+void problem_rows(int reps) {
+  std::vector<Case> cases;
+  const Vec3 viviani = testing::viviani(1.0);
+  cases.push_back({"viviani PP", Problem(testing::cylinder_f2(), testing::sphere_g2_parametric(), PairKind::kParametricParametric), viviani});
+  cases.push_back({"viviani PI", Problem(testing::cylinder_f2(), testing::sphere_g2_implicit(), PairKind::kParametricImplicit), viviani});
+  cases.push_back({"viviani II", Problem(testing::sphere_g2_implicit(), testing::cylinder_f2_implicit(), PairKind::kImplicitImplicit), viviani});
+  cases.push_back({"ruled-torus PP", Problem(testing::ruled_surface(), testing::torus_g1(), PairKind::kParametricParametric), testing::c1(0.3)});
+  std::printf("| pair | curve jet order 4 (ns) | linearisation (ns) |\n|---|---|---|\n");
+  for (const Case& c : cases) {
+    const auto near = unknowns_near(c.problem, c.start);
+    if (!near) {
+      std::printf("| %s | no start | |\n", c.name.c_str());
+      continue;
+    }
+    const CorrectorResult r = gauss_newton(c.problem, *near, CorrectorOptions{});
+    const VecX x = r.x;
+    const double jet = ns_per_call(reps, 2000, [&] { g_sink = curve_jet_dynamic(c.problem, x, 4).rank_ratio; });
+    const double lin = ns_per_call(reps, 2000, [&] { g_sink = c.problem.linearize(x).distance; });
+    std::printf("| %s | %.0f | %.0f |\n", c.name.c_str(), jet, lin);
+  }
+}
+
+void nurbs_rows(int reps) {
+  // Bicubic rational B-spline, 6 x 6 control points, one interior knot each way.
+  const std::vector<double> U{0, 0, 0, 0, 0.4, 0.7, 1, 1, 1, 1};
+  ControlNet P(6, std::vector<Vec3>(6));
+  WeightNet W(6, std::vector<double>(6));
+  for (std::size_t i = 0; i < 6; ++i)
+    for (std::size_t j = 0; j < 6; ++j) {
+      P[i][j] = Vec3(static_cast<double>(i), static_cast<double>(j), std::sin(static_cast<double>(i + 2 * j)));
+      W[i][j] = 1.0 + 0.1 * static_cast<double>((i + j) % 3);
+    }
+  const Surface s = BSplineSurface(3, 3, U, U, P, W);
+  const double u0 = 0.55, v0 = 0.3;
+  const double d0 = ns_per_call(reps, 2000, [&] { g_sink = s.point(u0, v0).x; });
+  using J1 = Jet<2, 1>;
+  using J2 = Jet<2, 2>;
+  const double d1 = ns_per_call(reps, 2000, [&] { g_sink = s.point(J1::variable(0, u0), J1::variable(1, v0)).x.value(); });
+  const double d2 = ns_per_call(reps, 2000, [&] { g_sink = s.point(J2::variable(0, u0), J2::variable(1, v0)).x.value(); });
+  std::printf("\n| bicubic NURBS point | double | Jet<2,1> | Jet<2,2> |\n|---|---|---|---|\n| ns | %.0f | %.0f | %.0f |\n", d0,
+              d1, d2);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int reps = 7;
+  for (int i = 1; i < argc; ++i)
+    if (std::strcmp(argv[i], "--reps") == 0 && i + 1 < argc) reps = std::max(1, std::atoi(argv[++i]));
+  problem_rows(reps);
+  nurbs_rows(reps);
+  return 0;
+}
