@@ -1,5 +1,5 @@
 // Complete start points with a certificate (docs/topology.md): a point on every branch of
-// H(x) = 0 inside the box of the unknowns, from two families of square systems solved for all
+// H(x) = 0 inside the box of the unknowns, from three families of square systems solved for all
 // their roots by interval branch and bound with the Krawczyk test (topology/krawczyk.hpp):
 //
 //   boundary systems   x_i = lo_i or hi_i (the seam lo_i for a periodic x_i), H(x) = 0:
@@ -14,8 +14,8 @@
 //                      implicit form (surface/trims.hpp): a piece of a branch inside the trims
 //                      that ends on a trim face meets it in an isolated root.
 //
-// The result is certified when every box of every boundary and trim face system and of at least one turning
-// system was decided. Roots the Krawczyk test cannot prove (singular Jacobian: tangential
+// The result is certified when every box of every boundary and trim face system and of at
+// least one turning system was decided. Roots the Krawczyk test cannot prove (singular Jacobian: tangential
 // contacts, singular points of the curve) are shrunk to a small box, handed to Newton as
 // candidate start points and reported as uncertain regions.
 #pragma once
