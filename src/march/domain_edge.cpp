@@ -1,4 +1,6 @@
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "march_steps.hpp"
@@ -40,6 +42,75 @@ Crossing first_crossing(const Problem& P, const std::vector<Slab>& trims, const 
     }
   }
   return c;
+}
+
+// A face of the domain: the bound `value` of a non-periodic unknown, or a trim's face n . p = value.
+struct Face {
+  int unknown = -1;
+  int trim = -1;
+  double value = 0;
+};
+
+// Rounding allowance of a point on a face at `value` (the landing polishes to rounding level; the
+// same relative allowance as bound_left_at).
+double face_slack(double value) { return 1e-12 * (1 + std::fabs(value)); }
+
+// The face x lies beyond by more than rounding, the farthest relative to its allowance; none
+// when x lies in every bound and trim. Every face is examined, so the answer does not depend on
+// the order of the trims, which swapping the surfaces reverses.
+std::optional<Face> violated_face(const Problem& P, const std::vector<Slab>& trims, const UnknownVec& x) {
+  std::optional<Face> worst;
+  double ratio = 1;
+  auto consider = [&](double beyond, double value, int unknown, int trim) {
+    const double q = beyond / face_slack(value);
+    if (q > ratio) ratio = q, worst = Face{unknown, trim, value};
+  };
+  for (int i = 0; i < P.dim(); ++i) {
+    if (P.periods()[static_cast<std::size_t>(i)] > 0) continue;
+    const Interval& b = P.bounds()[static_cast<std::size_t>(i)];
+    consider(b.lo - x[i], b.lo, i, -1);
+    consider(x[i] - b.hi, b.hi, i, -1);
+  }
+  if (trims.empty()) return worst;
+  const Vec3 p = P.point(x);
+  for (std::size_t k = 0; k < trims.size(); ++k) {
+    const double s = trims[k].normal.dot(p);
+    consider(trims[k].range.lo - s, trims[k].range.lo, -1, static_cast<int>(k));
+    consider(s - trims[k].range.hi, trims[k].range.hi, -1, static_cast<int>(k));
+  }
+  return worst;
+}
+
+CorrectorResult land_on_face(const Problem& P, const std::vector<Slab>& trims, const UnknownVec& guess, const Face& f,
+                             const CorrectorOptions& co) {
+  return f.trim >= 0 ? solve_on_plane(P, guess, trims[static_cast<std::size_t>(f.trim)].normal, f.value, co)
+                     : solve_with_fixed_unknown(P, guess, f.unknown, f.value, co);
+}
+
+// A curve point landed on one face of the domain, moved onto the face it still lies beyond, until
+// it lies inside every face (to rounding). Where two faces nearly coincide (two trims of nearly
+// coaxial cones 1e-10 apart, OCCT bug33244) the chord's estimate of which one is crossed first
+// depends on the step, and so on the direction of travel and the order of the surfaces; the curve
+// leaves the domain where it meets the inner one, whichever was estimated first (issue 11 item 4).
+// Each move lands on a face the point was beyond, inside the faces it was inside, so at most one
+// move per face is made; a move that does not converge keeps the point it started from.
+// *face (if given) becomes the face of the last move.
+UnknownVec settle_inside(const Problem& P, const std::vector<Slab>& trims, UnknownVec x, const CorrectorOptions& co,
+                         TraceStats* stats, Face* face = nullptr) {
+  const int faces = 2 * (P.dim() + static_cast<int>(trims.size()));
+  for (int move = 0; move < faces; ++move) {
+    const std::optional<Face> f = violated_face(P, trims, x);
+    if (!f) break;
+    const CorrectorResult r = land_on_face(P, trims, x, *f, co);
+    if (stats) {
+      stats->linearizations += r.linearizations;
+      stats->add_surface_evaluations(r.evaluations);
+    }
+    if (r.status != CorrectorStatus::kConverged) break;
+    x = r.x;
+    if (face) *face = *f;
+  }
+  return x;
 }
 
 }  // namespace
@@ -123,15 +194,16 @@ Event land_on_domain_edge(const Problem& P, const CurvePoint& cur, const Unknown
     return e;
   }
   const UnknownVec guess = cur.x + c.fraction * (x1 - cur.x);
-  const Slab* trim = c.trim >= 0 ? &trims[static_cast<std::size_t>(c.trim)] : nullptr;
-  CorrectorResult landed = trim ? solve_on_plane(P, guess, trim->normal, c.value, co)
-                                : solve_with_fixed_unknown(P, guess, c.unknown, c.value, co);
+  Face face{c.unknown, c.trim, c.value};
+  CorrectorResult landed = land_on_face(P, trims, guess, face, co);
   stats->linearizations += landed.linearizations;
   stats->add_surface_evaluations(landed.evaluations);
+  if (landed.status == CorrectorStatus::kConverged) landed.x = settle_inside(P, trims, landed.x, co, stats, &face);
+  const Slab* trim = face.trim >= 0 ? &trims[static_cast<std::size_t>(face.trim)] : nullptr;
   const std::string name = trim ? "the trim plane n . p (n = " + describe_point(trim->normal) + ")"
-                                : P.unknown_names()[static_cast<std::size_t>(c.unknown)];
-  if (landed.status != CorrectorStatus::kConverged || !P.inside(landed.x, 1e-9 * (1 + std::fabs(c.value)))) {
-    e.message = "left the domain at " + name + " = " + std::to_string(c.value) + " (could not land on the edge)";
+                                : P.unknown_names()[static_cast<std::size_t>(face.unknown)];
+  if (landed.status != CorrectorStatus::kConverged || !P.inside(landed.x, 1e-9 * (1 + std::fabs(face.value)))) {
+    e.message = "left the domain at " + name + " = " + std::to_string(face.value) + " (could not land on the edge)";
     return e;
   }
   const Vec3 pe = P.point(landed.x);
@@ -145,7 +217,7 @@ Event land_on_domain_edge(const Problem& P, const CurvePoint& cur, const Unknown
     stats->record_iterations(landed.iterations);
     ++stats->points;
   }
-  e.message = "reached the domain edge " + name + " = " + std::to_string(c.value);
+  e.message = "reached the domain edge " + name + " = " + std::to_string(face.value);
   return e;
 }
 
@@ -155,14 +227,22 @@ namespace ssimarch {
 
 std::optional<UnknownVec> onto_trims(const Problem& P, const UnknownVec& x, const CorrectorOptions& co) {
   const Vec3 p = P.point(x);
-  for (const Slab& s : problem_trims(P)) {
-    if (s.contains(p)) continue;
-    const double value = s.normal.dot(p) < s.range.lo ? s.range.lo : s.range.hi;
-    const CorrectorResult r = internal::solve_on_plane(P, x, s.normal, value, co);
-    if (r.status != CorrectorStatus::kConverged || !P.inside(r.x, 1e-9 * (1 + std::fabs(value)))) return std::nullopt;
-    return r.x;
+  const std::vector<Slab> trims = problem_trims(P);
+  if (std::all_of(trims.begin(), trims.end(), [&](const Slab& s) { return s.contains(p); })) return x;
+  // The face of the trim x lies farthest beyond, then any face the landed point still lies beyond
+  // (internal::settle_inside): the same point whatever the order of the trims.
+  std::size_t k = 0;
+  double farthest = -1, value = 0;
+  for (std::size_t i = 0; i < trims.size(); ++i) {
+    const double s = trims[i].normal.dot(p);
+    const double lo = trims[i].range.lo - s, hi = s - trims[i].range.hi;
+    if (std::max(lo, hi) > farthest) farthest = std::max(lo, hi), k = i, value = lo > hi ? trims[i].range.lo : trims[i].range.hi;
   }
-  return x;
+  const CorrectorResult r = internal::solve_on_plane(P, x, trims[k].normal, value, co);
+  if (r.status != CorrectorStatus::kConverged) return std::nullopt;
+  const UnknownVec y = internal::settle_inside(P, trims, r.x, co, nullptr);
+  if (!P.inside(y, 1e-9 * (1 + std::fabs(value)))) return std::nullopt;
+  return y;
 }
 
 }  // namespace ssimarch

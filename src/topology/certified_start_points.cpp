@@ -9,6 +9,7 @@
 #include "ssimarch/core/thread_pool.hpp"
 
 #include "ssimarch/problem/gauss_newton.hpp"
+#include "ssimarch/problem/poles_and_trims.hpp"
 #include "ssimarch/problem/singular_tolerances.hpp"
 #include "ssimarch/topology/krawczyk.hpp"
 #include "ssimarch/topology/saddle_box.hpp"
@@ -102,6 +103,39 @@ std::vector<System> boundary_systems(const Problem& P) {
       out.push_back(std::move(s));
     }
   }
+  return out;
+}
+
+// The trim faces' systems (issue 11 item 5: every surface's trim is honoured): H(x) = 0 and
+// n . point(x) = b for each face n . p = b of a trim of a surface in implicit form
+// (surface/trims.hpp): n equations in the n unknowns over the whole box. A branch whose piece
+// inside the trims leaves through a trim face meets it in an isolated root, as a branch leaving
+// the box meets a box face; without them the start points of such a piece were only the box
+// faces' and turning points' roots beyond the trim, moved onto it by Newton (onto_trims).
+template <class T>
+void trim_face_residual(const Problem& P, const Vec3& normal, double at, const T* x, T* g) {
+  P.residual(x, g);
+  const Vec3T<T> p = P.point(x);
+  g[P.dim() - 1] = T(normal.x()) * p.x + T(normal.y()) * p.y + T(normal.z()) * p.z - T(at);
+}
+
+std::vector<System> trim_face_systems(const Problem& P) {
+  std::vector<System> out;
+  for (const Slab& slab : problem_trims(P))
+    for (double at : {slab.range.lo, slab.range.hi}) {
+      System s;
+      const Vec3 n = slab.normal;
+      char name[96];
+      std::snprintf(name, sizeof name, "trim face (%.6g, %.6g, %.6g) . p = %.9g", n.x(), n.y(), n.z(), at);
+      s.name = name;
+      s.equations.dimension = P.dim();
+      s.equations.value = [&P, n, at](const IntervalNumber* x, IntervalNumber* g) { trim_face_residual(P, n, at, x, g); };
+      s.equations.gradient = [&P, n, at](const IntervalGradient* x, IntervalGradient* g) {
+        trim_face_residual(P, n, at, x, g);
+      };
+      for (const Interval& b : P.bounds()) s.box.emplace_back(b.lo, b.hi);
+      out.push_back(std::move(s));
+    }
   return out;
 }
 
@@ -298,6 +332,13 @@ RootSearchResult boundary_roots(const Problem& P, int i, bool upper, const RootS
   return {};
 }
 
+RootSearchResult trim_face_roots(const Problem& P, int trim, bool upper, const RootSearchOptions& options) {
+  const std::vector<System> systems = trim_face_systems(P);
+  const std::size_t i = 2 * static_cast<std::size_t>(trim) + (upper ? 1 : 0);
+  if (trim < 0 || i >= systems.size()) return {};
+  return find_all_roots(systems[i].equations, systems[i].box, options);
+}
+
 RootSearchResult turning_points(const Problem& P, int k, const RootSearchOptions& options) {
   System s = turning_system(P, k);
   return find_all_roots(s.equations, s.box, options);
@@ -336,7 +377,8 @@ std::vector<VecX> certified_start_points(const Tracer& tracer, TraceStats* stats
   // The root searches of the boundary systems and of the first turning system are independent
   // (read-only Problem): run on the shared pool, then taken in the serial order, so the start
   // points are the serial run's.
-  const std::vector<System> boundary = boundary_systems(P);
+  std::vector<System> boundary = boundary_systems(P);
+  for (System& t : trim_face_systems(P)) boundary.push_back(std::move(t));
   std::vector<System> first{turning_system(P, 0)};
   std::vector<RootSearchResult> found(boundary.size() + 1);
   parallel_for(found.size(), [&](std::size_t i) {

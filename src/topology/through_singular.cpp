@@ -77,98 +77,134 @@ std::optional<TraceOptions> short_steps(const Tracer& tracer, double cap) {
   return o;
 }
 
+// The state of one branch's walk across its passages through singular points.
+struct Walk {
+  BranchMarch out;
+  CurvePoint from;               // where the next march starts
+  bool unwatched_first = false;  // its first step is taken without the singular-point watch
+  std::optional<Tracer> fine;    // short steps over the stretch of a near miss
+  double fine_length = 0;        // the length of that stretch
+};
+
+// What the caller of one step of the walk does next.
+enum class Next { kMarch, kDone };
+
+// One march of the walk from w->from until an event, appended to w->out (its points after the
+// first, its length and event). Returns the index of w->from in w->out.points.
+std::size_t march_passage(const Tracer& tracer, const MarchLimits& base, const CurvePoint* close_at, Walk* w,
+                          TraceStats* stats) {
+  MarchLimits limits = base;
+  limits.watch_crossings = true;
+  limits.skip_first_watch = w->unwatched_first;
+  limits.close_at = close_at;
+  limits.detect_closure = close_at != nullptr;
+  limits.max_points = std::max<long>(2, base.max_points - static_cast<long>(w->out.points.size()) + 1);
+  limits.max_length = std::max(0.0, base.max_length - w->out.length);
+  if (w->fine) limits.max_length = std::min(limits.max_length, w->fine_length);
+  MarchResult r = (w->fine ? *w->fine : tracer).march_until_event(w->from, Direction::kForward, limits, stats);
+  const std::size_t begin = w->out.points.size() - 1;
+  w->out.points.insert(w->out.points.end(), r.points.begin() + 1, r.points.end());
+  w->out.length += r.length;
+  w->out.event = r.event;
+  w->out.closed = r.event.kind == EventKind::kClosed;
+  w->unwatched_first = false;
+  return begin;
+}
+
+// A near miss (the orientation reversed, or the rank ratio dipped, without a singular point
+// there): the walk retakes the stretch from its last point with short steps (short_steps), or,
+// when the options admit none that short, takes the step unwatched.
+void retake_near_miss(const Tracer& tracer, Walk* w) {
+  const Problem& P = tracer.problem();
+  w->from = w->out.points.back();
+  const double chord = (P.point(w->out.event.beyond) - w->from.p).norm();
+  w->fine.reset();
+  if (auto o = short_steps(tracer, 0.25 * chord)) w->fine.emplace(P, *o);
+  w->fine_length = 2 * chord;
+  w->unwatched_first = !w->fine;
+}
+
+// Where the walk goes after the singular point `loc` located at the end of its last march
+// (started at index `begin`): closed at its start just before or after the point, closed through
+// the node it left by, ended there (no continuing half-branch, or one traced before), or on along
+// the half-branch continuing the arriving one (w->from becomes its exit point).
+Next pass_singular_point(const Tracer& tracer, SingularRegistry* registry, SingularLocation loc, std::size_t begin,
+                         const CurvePoint* close_at, int curve, int from_node, int from_half, Walk* w) {
+  const double close_tolerance = 1e-9 * std::max(1.0, tracer.problem().scale());  // model units: rounding of a located point
+  BranchMarch& out = w->out;
+  trim_beyond(loc.point, begin, &out);
+  // Only once the branch has left its start: a start placed half a step before a singular point
+  // (regular_start) is the last accepted point when the first step already reaches the point.
+  if (close_at && out.points.size() > 1 && closes_before(*close_at, out.points.back(), loc.point, close_tolerance)) {
+    const CurvePoint last = out.points.back();
+    close_on_start(last.p, last.t, *close_at, "closed at its start, passed just before a singular point", &out);
+    return Next::kDone;
+  }
+  const int n = registry->add(loc);
+  loc = registry->node(n).location;  // the registry may have moved it (onto a tangent-line crossing)
+  trim_beyond(loc.point, begin, &out);
+  const CurvePoint last = out.points.back();
+  const int in = registry->arriving_half_branch(n, last);
+  registry->mark(n, in, curve);
+  const SingularNode& node = registry->node(n);
+  const std::string what = std::string(to_string(node.kind.type)) + " at " + describe_point(loc.point);
+  const Vec3 t_in = in >= 0 ? Vec3(-node.branches[static_cast<std::size_t>(in)].tangent_3d) : last.t;
+  const int k = in >= 0 ? node.branches[static_cast<std::size_t>(in)].continuation : -1;
+  out.length += arc_length_estimate(last.p, last.t, loc.point, t_in);
+  out.points.push_back({loc.x, loc.point, k >= 0 ? node.branches[static_cast<std::size_t>(k)].tangent_3d : t_in});
+  out.end_node = n;
+  if (k >= 0 && n == from_node && k == from_half) {
+    out.closed = true;
+    out.event = stop(EventKind::kClosed, "closed through the " + what);
+    return Next::kDone;
+  }
+  if (k < 0 || !node.branches[static_cast<std::size_t>(k)].exit_ok) {
+    out.event = stop(EventKind::kSingularSuspected, "ends at the " + what);
+    return Next::kDone;
+  }
+  if (node.used[static_cast<std::size_t>(k)]) {
+    out.event = stop(EventKind::kReachedTracedCurve, "goes on along a branch traced before, through the " + what);
+    return Next::kDone;
+  }
+  registry->mark(n, k, curve);
+  const HalfBranch& b = node.branches[static_cast<std::size_t>(k)];
+  w->from = CurvePoint{b.exit_x, b.exit_point, b.direction};
+  if (close_at && closes_before(*close_at, CurvePoint{loc.x, loc.point, b.tangent_3d}, w->from.p, close_tolerance)) {
+    close_on_start(loc.point, b.tangent_3d, *close_at, "closed at its start, just after the " + what, &out);
+    return Next::kDone;
+  }
+  out.length += arc_length_estimate(loc.point, b.tangent_3d, w->from.p, w->from.t);
+  out.points.push_back(w->from);
+  return Next::kMarch;
+}
+
 }  // namespace
 
 BranchMarch march_branch(const Tracer& tracer, const CurvePoint& start, const CurvePoint* close_at,
                          SingularRegistry* registry, int curve, TraceStats* stats, int from_node, int from_half,
                          const MarchLimits* base_limits) {
   const MarchLimits base = base_limits ? *base_limits : tracer.limits();
-  const Problem& P = tracer.problem();
-  const double close_tolerance = 1e-9 * std::max(1.0, P.scale());  // model units: rounding of a located point
-  BranchMarch out;
-  out.points.push_back(start);
-  CurvePoint from = start;
-  bool unwatched_first = false;
-  std::optional<Tracer> fine;  // short steps over the stretch of a near miss
-  double fine_length = 0;
+  Walk w;
+  w.out.points.push_back(start);
+  w.from = start;
   for (int passage = 0;; ++passage) {
-    MarchLimits limits = base;
-    limits.watch_crossings = true;
-    limits.skip_first_watch = unwatched_first;
-    limits.close_at = close_at;
-    limits.detect_closure = close_at != nullptr;
-    limits.max_points = std::max<long>(2, base.max_points - static_cast<long>(out.points.size()) + 1);
-    limits.max_length = std::max(0.0, base.max_length - out.length);
-    if (fine) limits.max_length = std::min(limits.max_length, fine_length);
-    MarchResult r = (fine ? *fine : tracer).march_until_event(from, Direction::kForward, limits, stats);
-    const std::size_t begin = out.points.size() - 1;  // index of `from`
-    out.points.insert(out.points.end(), r.points.begin() + 1, r.points.end());
-    out.length += r.length;
-    out.event = r.event;
-    out.closed = r.event.kind == EventKind::kClosed;
-    unwatched_first = false;
-    if (fine && r.event.kind == EventKind::kBudget && out.length < base.max_length) {
-      fine.reset();  // the stretch is passed: back to the options' steps
-      from = out.points.back();
+    const std::size_t begin = march_passage(tracer, base, close_at, &w, stats);
+    const Event& e = w.out.event;
+    if (w.fine && e.kind == EventKind::kBudget && w.out.length < base.max_length) {
+      w.fine.reset();  // the stretch is passed: back to the options' steps
+      w.from = w.out.points.back();
       continue;
     }
-    if (r.event.kind != EventKind::kSingularSuspected || passage >= kMaxPassages) return out;
+    if (e.kind != EventKind::kSingularSuspected || passage >= kMaxPassages) return std::move(w.out);
     SingularLocation loc;
-    if (!locate_near(tracer, out.points.back(), r.event, &loc)) {
-      if (r.event.beyond.size() == 0) return out;  // stuck, and no singular point there
-      // A near miss: the orientation reversed (or the rank ratio dipped) without a singular point.
-      from = out.points.back();
-      const double chord = (P.point(r.event.beyond) - from.p).norm();
-      fine.reset();
-      if (auto o = short_steps(tracer, 0.25 * chord)) fine.emplace(P, *o);
-      fine_length = 2 * chord;
-      unwatched_first = !fine;
+    if (!locate_near(tracer, w.out.points.back(), e, &loc)) {
+      if (e.beyond.size() == 0) return std::move(w.out);  // stuck, and no singular point there
+      retake_near_miss(tracer, &w);
       continue;
     }
-    fine.reset();
-    trim_beyond(loc.point, begin, &out);
-    // Only once the branch has left its start: a start placed half a step before a singular point
-    // (regular_start) is the last accepted point when the first step already reaches the point.
-    if (close_at && out.points.size() > 1 && closes_before(*close_at, out.points.back(), loc.point, close_tolerance)) {
-      const CurvePoint last = out.points.back();
-      close_on_start(last.p, last.t, *close_at, "closed at its start, passed just before a singular point", &out);
-      return out;
-    }
-    const int n = registry->add(loc);
-    loc = registry->node(n).location;  // the registry may have moved it (onto a tangent-line crossing)
-    trim_beyond(loc.point, begin, &out);
-    const CurvePoint last = out.points.back();
-    const int in = registry->arriving_half_branch(n, last);
-    registry->mark(n, in, curve);
-    const SingularNode& node = registry->node(n);
-    const std::string what = std::string(to_string(node.kind.type)) + " at " + describe_point(loc.point);
-    const Vec3 t_in = in >= 0 ? Vec3(-node.branches[static_cast<std::size_t>(in)].tangent_3d) : last.t;
-    const int k = in >= 0 ? node.branches[static_cast<std::size_t>(in)].continuation : -1;
-    out.length += arc_length_estimate(last.p, last.t, loc.point, t_in);
-    out.points.push_back({loc.x, loc.point, k >= 0 ? node.branches[static_cast<std::size_t>(k)].tangent_3d : t_in});
-    out.end_node = n;
-    if (k >= 0 && n == from_node && k == from_half) {
-      out.closed = true;
-      out.event = stop(EventKind::kClosed, "closed through the " + what);
-      return out;
-    }
-    if (k < 0 || !node.branches[static_cast<std::size_t>(k)].exit_ok) {
-      out.event = stop(EventKind::kSingularSuspected, "ends at the " + what);
-      return out;
-    }
-    if (node.used[static_cast<std::size_t>(k)]) {
-      out.event = stop(EventKind::kReachedTracedCurve, "goes on along a branch traced before, through the " + what);
-      return out;
-    }
-    registry->mark(n, k, curve);
-    const HalfBranch& b = node.branches[static_cast<std::size_t>(k)];
-    from = CurvePoint{b.exit_x, b.exit_point, b.direction};
-    if (close_at && closes_before(*close_at, CurvePoint{loc.x, loc.point, b.tangent_3d}, from.p, close_tolerance)) {
-      close_on_start(loc.point, b.tangent_3d, *close_at, "closed at its start, just after the " + what, &out);
-      return out;
-    }
-    out.length += arc_length_estimate(loc.point, b.tangent_3d, from.p, from.t);
-    out.points.push_back(from);
+    w.fine.reset();
+    if (pass_singular_point(tracer, registry, loc, begin, close_at, curve, from_node, from_half, &w) == Next::kDone)
+      return std::move(w.out);
   }
 }
 

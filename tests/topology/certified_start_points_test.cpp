@@ -192,5 +192,63 @@ TEST(CertifiedStartPoints, CapsuleFallsBackToSamplingAndSaysSo) {
   EXPECT_EQ(r.curves.size(), 1u);
 }
 
+// The plane z = v / 2 over (u, v) in [-2, 2]^2 against the cylinder x^2 + y^2 = 1 trimmed to
+// z in [0.25, 1] (its implicit form carries the range as a slab, surface/trims.hpp). The curve
+// u^2 + v^2 = 1 lies inside the parameter square; only the arc v >= 1/2, (cos s, sin s, sin s / 2)
+// for s in [pi/6, 5 pi/6], is inside the trim. It meets no face of the square, and the tangent's
+// u component vanishes at (+-1, 0), outside the trim: the arc's only boundary is the trim face
+// z = 1/4, at (+-sqrt(3)/2, 1/2).
+Problem plane_trimmed_cylinder() {
+  return Problem(parametric("u", "v", "0.5*v", {-2, 2}, {-2, 2}), Cylinder(Vec3::Zero(), Vec3::UnitZ(), 1.0, {0.25, 1.0}),
+                 PairKind::kParametricImplicit);
+}
+
+TEST(CertifiedStartPoints, RootsOnTheTrimFaces) {
+  const Problem P = plane_trimmed_cylinder();
+  const RootSearchOptions o;
+  const RootSearchResult lower = trim_face_roots(P, 0, false, o);
+  EXPECT_TRUE(lower.complete());
+  expect_roots(lower, {{-std::sqrt(3.0) / 2, 0.5}, {std::sqrt(3.0) / 2, 0.5}}, 1e-12);
+  const RootSearchResult upper = trim_face_roots(P, 0, true, o);  // z = 1: v = 2, u^2 = -3
+  EXPECT_TRUE(upper.complete());
+  EXPECT_TRUE(upper.roots.empty());
+  EXPECT_TRUE(trim_face_roots(P, 1, false, o).roots.empty());  // no second trim
+}
+
+template <class F>
+double simpson(F f, double a, double b, int n = 2000) {
+  const double h = (b - a) / n;
+  double sum = f(a) + f(b);
+  for (int i = 1; i < n; ++i) sum += (i % 2 ? 4 : 2) * f(a + i * h);
+  return sum * h / 3;
+}
+
+TEST(CertifiedStartPoints, ArcBoundedOnlyByATrimFace) {
+  const Problem P = plane_trimmed_cylinder();
+  const Tracer tracer(P, TraceOptions{});
+  TraceStats stats;
+  StartPointSearch search;
+  const std::vector<VecX> starts = certified_start_points(tracer, &stats, &search);
+  EXPECT_TRUE(search.certified);
+  // The trim face's roots are start points themselves (not points beyond the trim moved onto it).
+  int on_face = 0;
+  for (const VecX& x : starts) on_face += std::fabs(P.point(x).z() - 0.25) < 1e-12 && std::fabs(x[1] - 0.5) < 1e-12;
+  EXPECT_EQ(on_face, 2);
+
+  const TraceResult r = trace_all(P, TraceOptions{});
+  ASSERT_EQ(r.curves.size(), 1u);
+  const TracedCurve& c = r.curves[0];
+  EXPECT_FALSE(c.closed);
+  EXPECT_EQ(c.start_end, Termination::kLeftDomain);
+  EXPECT_EQ(c.end_end, Termination::kLeftDomain);
+  for (const CurvePoint* e : {&c.points.front(), &c.points.back()}) {
+    EXPECT_NEAR(e->p.z(), 0.25, 1e-12);
+    EXPECT_NEAR(std::fabs(e->p.x()), std::sqrt(3.0) / 2, 1e-10);
+  }
+  // Arc element |d/ds (cos s, sin s, sin s / 2)| = sqrt(1 + cos^2 s / 4).
+  const double expected = simpson([](double s) { return std::sqrt(1 + 0.25 * std::cos(s) * std::cos(s)); }, M_PI / 6, 5 * M_PI / 6);
+  EXPECT_NEAR(c.length, expected, 1e-6);
+}
+
 }  // namespace
 }  // namespace ssimarch

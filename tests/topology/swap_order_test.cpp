@@ -1,14 +1,13 @@
 // Order independence (issue 11 item 4, issue 13 item 4): every intersection of every scene in
-// examples/ traced with its two surfaces in the given and in the swapped order gives the same
-// curve network: the same components, branches and closed flags, branch and edge lengths to
-// 1e-9, vertices to 1e-10 (model units). The vertices are matched by their 3D points, the
+// examples/ and bench/peers/scenes/ (the benchmark pairs), traced with its two surfaces in the
+// given and in the swapped order, gives the same curve network: the same components, branches
+// and closed flags, branch and edge lengths to 1e-9, vertices to 1e-10 (model units). The vertices are matched by their 3D points, the
 // branches by length: ids and curve order are not part of the comparison.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
-#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -21,17 +20,6 @@ namespace {
 
 constexpr double kLengthTolerance = 1e-9;  // model units (issue 11 item 4)
 constexpr double kVertexTolerance = 1e-10;
-
-// Examples whose networks still depend on the order, with the cause (another module's issue).
-const std::map<std::string, std::string> kKnownFailures = {
-    // The two cones' axes differ by 1e-7 rad, so their trim planes (march/domain_edge: a cone's
-    // range trims its implicit form) lie 1e-10 apart where the hyperbola branches leave them; the
-    // chord's estimate of which plane is met first then depends on the direction of travel, and
-    // the end vertices of the two orders differ by 1.5e-10 and 2.5e-10 (> kVertexTolerance).
-    // Landing on the other plane when the end lies beyond it starts new traces on the faces: open.
-    {"occt_bug33244_cones.json:bug33244", "ends on two trim planes 1e-10 apart (march/domain_edge)"},
-    {"occt_bug33244_cones.json:bug33244_swapped", "ends on two trim planes 1e-10 apart (march/domain_edge)"},
-};
 
 std::string swapped_text(const std::filesystem::path& file) {
   std::ifstream in(file);
@@ -114,7 +102,7 @@ void expect_same_network(const CurveNetwork& a, const CurveNetwork& b) {
 class SwapOrder : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(SwapOrder, SameNetwork) {
-  const std::filesystem::path file = std::filesystem::path(SSIMARCH_SOURCE_DIR) / "examples" / GetParam();
+  const std::filesystem::path file = std::filesystem::path(SSIMARCH_SOURCE_DIR) / GetParam();
   const Scene given = load_scene(file);
   const Scene swapped = parse_scene(swapped_text(file), file.string() + " (surfaces swapped)");
   ASSERT_EQ(given.intersections.size(), swapped.intersections.size());
@@ -123,28 +111,28 @@ TEST_P(SwapOrder, SameNetwork) {
     SCOPED_TRACE(name);
     const IntersectionRun a = run_intersection(given, given.intersections[i]);
     const IntersectionRun b = run_intersection(swapped, swapped.intersections[i]);
-    const auto known = kKnownFailures.find(name);
-    if (known != kKnownFailures.end()) {
-      GTEST_SKIP() << "known order dependence: " << known->second;
-    }
     expect_same_network(a.network, b.network);
   }
 }
 
-std::vector<std::string> example_files() {
+// The scenes of a folder of the source tree, as paths relative to it.
+std::vector<std::string> scene_files(const std::string& folder) {
   std::vector<std::string> files;
-  for (const auto& e : std::filesystem::directory_iterator(std::filesystem::path(SSIMARCH_SOURCE_DIR) / "examples"))
-    if (e.path().extension() == ".json") files.push_back(e.path().filename().string());
+  for (const auto& e : std::filesystem::directory_iterator(std::filesystem::path(SSIMARCH_SOURCE_DIR) / folder))
+    if (e.path().extension() == ".json") files.push_back(folder + "/" + e.path().filename().string());
   std::sort(files.begin(), files.end());
   return files;
 }
 
-INSTANTIATE_TEST_SUITE_P(Examples, SwapOrder, ::testing::ValuesIn(example_files()),
-                         [](const ::testing::TestParamInfo<std::string>& file) {
-                           std::string n = file.param.substr(0, file.param.size() - 5);
-                           std::replace_if(n.begin(), n.end(), [](char ch) { return !std::isalnum(static_cast<unsigned char>(ch)); }, '_');
-                           return n;
-                         });
+std::string test_name(const ::testing::TestParamInfo<std::string>& file) {
+  std::string n = std::filesystem::path(file.param).stem().string();
+  std::replace_if(n.begin(), n.end(), [](char ch) { return !std::isalnum(static_cast<unsigned char>(ch)); }, '_');
+  return n;
+}
+
+INSTANTIATE_TEST_SUITE_P(Examples, SwapOrder, ::testing::ValuesIn(scene_files("examples")), test_name);
+// The benchmark pairs (docs/benchmarks.md, peers section: the cases of the peer comparison).
+INSTANTIATE_TEST_SUITE_P(BenchmarkPairs, SwapOrder, ::testing::ValuesIn(scene_files("bench/peers/scenes")), test_name);
 
 template <class F>
 double simpson(F f, double a, double b, int n = 2000) {

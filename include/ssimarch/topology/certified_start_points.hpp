@@ -1,5 +1,5 @@
 // Complete start points with a certificate (docs/topology.md): a point on every branch of
-// H(x) = 0 inside the box of the unknowns, from two families of square systems solved for all
+// H(x) = 0 inside the box of the unknowns, from three families of square systems solved for all
 // their roots by interval branch and bound with the Krawczyk test (topology/krawczyk.hpp):
 //
 //   boundary systems   x_i = lo_i or hi_i (the seam lo_i for a periodic x_i), H(x) = 0:
@@ -10,9 +10,12 @@
 //                      is the generalised cross product of J_H's rows, whose k-th component is
 //                      that minor up to sign). A closed branch inside the open box has a
 //                      maximum of x_k, so it is a root of the system of every k.
+//   trim face systems  H(x) = 0 and n . point(x) = b for each face of a trim of a surface in
+//                      implicit form (surface/trims.hpp): a piece of a branch inside the trims
+//                      that ends on a trim face meets it in an isolated root.
 //
-// The result is certified when every box of every boundary system and of at least one turning
-// system was decided. Roots the Krawczyk test cannot prove (singular Jacobian: tangential
+// The result is certified when every box of every boundary and trim face system and of at
+// least one turning system was decided. Roots the Krawczyk test cannot prove (singular Jacobian: tangential
 // contacts, singular points of the curve) are shrunk to a small box, handed to Newton as
 // candidate start points and reported as uncertain regions.
 #pragma once
@@ -33,6 +36,11 @@ bool evaluates_on_intervals(const Surface& surface);
 /// The roots of the boundary system x_i = lo_i (upper: hi_i) and its undecided boxes, as boxes
 /// of all n unknowns (x_i a point interval). Empty for the upper end of a periodic x_i.
 RootSearchResult boundary_roots(const Problem& P, int i, bool upper, const RootSearchOptions& options);
+
+/// The roots of the system of a trim's face (H = 0 and n . point(x) = b, b the lower bound of
+/// problem_trims(P)[trim], upper: its upper bound) over the box of the unknowns, and its undecided
+/// boxes. Empty when there is no such trim.
+RootSearchResult trim_face_roots(const Problem& P, int trim, bool upper, const RootSearchOptions& options);
 
 /// The roots of the turning system for unknown k (x_k's tangent component vanishes) and its
 /// undecided boxes.
