@@ -50,8 +50,12 @@ endif()
 # The Python package installed beside the libraries imports from the prefix and evaluates.
 if(PYTHON)
   set(ENV{PYTHONPATH} ${prefix}/${PYTHON_DIR})
-  run(${PYTHON} -c "import ssimarch, pathlib; p = pathlib.Path(ssimarch.__file__).parent; \
-assert str(p).startswith('${prefix}'), p; assert (p / 'py.typed').exists() and (p / '__init__.pyi').exists(); \
+  # One statement a line: run() passes its arguments as a list, which a ';' would split.
+  run(${PYTHON} -c "import pathlib
+import ssimarch
+p = pathlib.Path(ssimarch.__file__).parent
+assert str(p).startswith('${prefix}'), p
+assert (p / 'py.typed').exists() and (p / '__init__.pyi').exists()
 print(round(float(ssimarch.Sphere([0, 0, 0], 2).point(0.0, 0.0)[0]), 12))")
   if(NOT out MATCHES "^2\\.0")
     message(FATAL_ERROR "the installed Python package: ${out}")
