@@ -36,6 +36,14 @@ inline constexpr std::size_t kEvaluationChunk = 4096;
 template <class Body>
 void evaluate_all(std::size_t n, unsigned threads, const Body& body) {
   const std::size_t chunks = (n + kEvaluationChunk - 1) / kEvaluationChunk;
+  if (chunks <= 1) {
+    // One chunk (a few milliseconds at most): on this thread, without the pool and without the
+    // SIGINT handler of run_interruptible (three sigaction calls, the cost of a single point's
+    // evaluation many times over); a Ctrl-C meanwhile is raised as soon as the call returns.
+    pybind11::gil_scoped_release release;
+    for (std::size_t i = 0; i < n; ++i) body(i);
+    return;
+  }
   run_interruptible([&] {
     std::atomic<std::size_t> next{0};
     const std::size_t loops = std::min<std::size_t>(threads == 0 ? thread_count() : threads, chunks);
