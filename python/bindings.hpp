@@ -27,11 +27,14 @@ void bind_curve_geometry(pybind11::module_& m);
 namespace python {
 
 /// A surface built from Python: its scene-format description, the constants its expressions
-/// use, and the library's surface parsed from them (io/surface_json.hpp).
+/// use, and the library's surface parsed from them (io/surface_json.hpp). An implicit surface
+/// may come without its box (box_given false): it evaluates, and a trace against another surface
+/// uses that surface's box (scene_of).
 struct PySurface {
   nlohmann::json spec;
   Constants constants;
   Surface surface;
+  bool box_given = true;
 };
 
 /// JSON text of a Python object (a dict of a scene or a surface) through the json module; numpy
@@ -41,7 +44,9 @@ std::string json_text(const pybind11::object& obj);
 pybind11::object python_of(const nlohmann::json& j);
 
 /// The scene of `trace` and `curve_geometry`: a path, a JSON text, a dict, or two Surface objects
-/// (the scene with surfaces "a", "b" and the one intersection "a-b").
+/// (the scene with surfaces "a", "b" and the one intersection "a-b"; an implicit surface without
+/// a box gets the other's box: the curve lies on the other surface, inside its box). InputError
+/// naming the surface where a box is needed and none can be derived.
 Scene scene_of(const pybind11::object& scene, const pybind11::object& other, const char* function);
 
 /// A float64 array of the same values, C order (float32, Fortran order, views, lists accepted).

@@ -9,6 +9,7 @@
 #include "bindings.hpp"
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/io/scene.hpp"
+#include "ssimarch/surface/frame.hpp"
 
 namespace py = pybind11;
 
@@ -37,8 +38,36 @@ Constants merged_constants(const PySurface& a, const PySurface& b) {
   return c;
 }
 
+nlohmann::json interval_json(const Interval& i) { return {i.lo, i.hi}; }
+
+std::string missing_box(const PySurface& s) {
+  return "the implicit surface " + s.spec["implicit"].dump() +
+         " has no box, the region where intersections are searched: give one, box=((x0, x1), (y0, y1), (z0, z1))";
+}
+
+/// Dimensionless, relative to the largest side: the margin added around the box an implicit surface
+/// takes from the other surface of trace(a, b), so that a flat one (a planar patch's control-point
+/// box) still has three sides (ExprImplicit rejects an empty interval). Enlarging it changes no
+/// trace: two implicit forms are traced in the intersection of their boxes (problem/problem.cpp).
+constexpr double kDerivedBoxMargin = 0.05;
+
+// The description of `s` for the scene of trace(a, b): with the box of `other` when it has none.
+// The intersection lies on `other`, which lies in its box (primitives, patches and boxed implicit
+// surfaces: an enclosure; a parametric expression's sampled box is not one, but with a parametric
+// surface the implicit one's box is never read: the pair is traced in the parametric's domain).
+nlohmann::json traced_description(const PySurface& s, const PySurface& other, const std::string& name,
+                                  const std::string& other_name) {
+  if (s.box_given) return s.spec;
+  if (!other.box_given)
+    throw InputError(name + ".box", missing_box(s) + " (" + other_name + " has none either, to derive it from)");
+  const Box b = inflate(other.surface.box(), kDerivedBoxMargin);
+  nlohmann::json spec = s.spec;
+  spec["box"] = {interval_json(b.x), interval_json(b.y), interval_json(b.z)};
+  return spec;
+}
+
 Scene scene_of_surfaces(const PySurface& a, const PySurface& b) {
-  nlohmann::json scene{{"surfaces", {{"a", a.spec}, {"b", b.spec}}},
+  nlohmann::json scene{{"surfaces", {{"a", traced_description(a, b, "a", "b")}, {"b", traced_description(b, a, "b", "a")}}},
                        {"intersections", nlohmann::json::array({{{"name", "a-b"}, {"surfaces", {"a", "b"}}}})}};
   const Constants c = merged_constants(a, b);
   if (!c.empty()) scene["constants"] = c;
@@ -65,7 +94,17 @@ Scene scene_of(const py::object& scene, const py::object& other, const char* fun
   if (!other.is_none())
     throw py::type_error(fn + ": a second positional argument is only for two Surface objects (got " +
                          type_name(scene) + " and " + type_name(other) + ")");
-  if (py::isinstance<py::dict>(scene)) return parse_scene(json_text(scene), "<dict>");
+  if (py::isinstance<py::dict>(scene)) {
+    // A scene's surfaces may be in several intersections: no one other surface to take a box from.
+    const py::dict d = scene.cast<py::dict>();
+    if (d.contains("surfaces") && py::isinstance<py::dict>(d["surfaces"]))
+      for (const auto& [name, s] : d["surfaces"].cast<py::dict>())
+        if (py::isinstance<PySurface>(s) && !s.cast<const PySurface&>().box_given)
+          throw InputError("surfaces." + py::str(name).cast<std::string>() + ".box",
+                           missing_box(s.cast<const PySurface&>()) + " (a scene needs it; trace(a, b) of two "
+                           "Surface objects takes the other's box)");
+    return parse_scene(json_text(scene), "<dict>");
+  }
   if (py::isinstance<py::str>(scene)) {
     const std::string s = scene.cast<std::string>();
     const auto first = s.find_first_not_of(" \t\r\n");

@@ -77,11 +77,15 @@ def ParametricSurface(x: str, y: str, z: str, *, domain: Sequence[Sequence[Any]]
     return Surface(spec, constants)
 
 
-def ImplicitSurface(f: str, *, box: Sequence[Sequence[Any]],
+def ImplicitSurface(f: str, *, box: Optional[Sequence[Sequence[Any]]] = None,
                     constants: Optional[Mapping[str, float]] = None) -> Surface:
-    """f(x, y, z) = 0, an expression in x, y, z, inside `box` ((x_lo, x_hi), (y_lo, y_hi), (z_lo, z_hi)), the
-    region where intersections are searched (required: an implicit surface may be unbounded)."""
-    return Surface({"implicit": f, "box": [list(b) for b in box]}, constants)
+    """f(x, y, z) = 0, an expression in x, y, z. `box` ((x_lo, x_hi), (y_lo, y_hi), (z_lo, z_hi)) is the region
+    where intersections are searched: evaluation needs none; trace(a, b) without one uses the other surface's
+    box, and a scene (a dict) needs it."""
+    spec: dict[str, Any] = {"implicit": f}
+    if box is not None:
+        spec["box"] = [list(b) for b in box]
+    return Surface(spec, constants)
 
 
 def _net(control_points, weights) -> dict:

@@ -87,3 +87,50 @@ def test_sigint_during_a_trace_raises_keyboard_interrupt(viviani):
             child.kill()
     assert out.startswith("interrupted"), (out, err)
     assert child.returncode == 0, err
+
+
+EVALUATION_CHILD = textwrap.dedent("""
+    import time
+    import numpy as np
+    import ssimarch
+
+    # A costly f (200 terms): a chunk of 4096 points takes a fraction of a second, the array tens.
+    f = "+".join(f"sin({k}*x+y)*cos(z-{k})*exp(-{k}*x*x/1000)" for k in range(1, 201))
+    s = ssimarch.ImplicitSurface(f)
+    probe = np.random.default_rng(2).uniform(-1, 1, (4096, 3))
+    t0 = time.monotonic()
+    reference = s.value(probe, threads=1)
+    rate = len(probe) / (time.monotonic() - t0)
+    n = int(min(max(rate * 2 * 40, 2e5), 2e7))  # about 40 s on two threads
+    points = np.random.default_rng(3).uniform(-1, 1, (n, 3))
+    print("start", n, flush=True)
+    t0 = time.monotonic()
+    try:
+        s.value(points, threads=2)
+        print("finished", time.monotonic() - t0, flush=True)
+    except KeyboardInterrupt:
+        print("interrupted", time.monotonic() - t0, flush=True)
+    # The flag is down again: the next evaluation runs to its end, with the same values.
+    print("after", bool(np.array_equal(s.value(probe, threads=2), reference)), flush=True)
+""")
+
+
+def test_sigint_interrupts_a_long_evaluation_on_a_large_array():
+    child = subprocess.Popen([sys.executable, "-c", EVALUATION_CHILD], stdout=subprocess.PIPE,
+                             stderr=subprocess.PIPE, text=True, env=dict(os.environ))
+    try:
+        assert child.stdout.readline().startswith("start "), child.stderr.read()
+        time.sleep(1.0)
+        assert child.poll() is None, "the evaluation ended before the signal"
+        sent = time.monotonic()
+        child.send_signal(signal.SIGINT)
+        out, err = child.communicate(timeout=60)
+        latency = time.monotonic() - sent
+    finally:
+        if child.poll() is None:
+            child.kill()
+    lines = out.split("\n")
+    assert lines[0].startswith("interrupted"), (out, err)
+    # Within a chunk per thread (python/array_loops.hpp); generous for a loaded machine.
+    assert latency < 15.0, latency
+    assert lines[1] == "after True", out
