@@ -263,7 +263,7 @@ TEST(StepReader, ErrorsNameTheInstance) {
   EXPECT_NE(message(std::string(kPlacement) + "#5=CYLINDRICAL_SURFACE('',#1,-1.);\n", 5).find("t.step:12: #5"), std::string::npos);
   EXPECT_NE(message(std::string(kPlacement) + "#5=CURVE_BOUNDED_SURFACE('',#1,(),.F.);\n", 5).find("not a surface type"),
             std::string::npos);
-  EXPECT_NE(message(std::string(kPlacement) + "#5=SURFACE_OF_REVOLUTION('',#1,#1);\n", 5).find("#1: AXIS2_PLACEMENT_3D: is not a swept curve"),
+  EXPECT_NE(message(std::string(kPlacement) + "#5=SURFACE_OF_REVOLUTION('',#1,#6);\n#6=AXIS1_PLACEMENT('',#2,#3);\n", 5).find("#1: AXIS2_PLACEMENT_3D: is not a swept curve"),
             std::string::npos);
   EXPECT_NE(message("#1=B_SPLINE_SURFACE_WITH_KNOTS('',1,1,((#2,#2),(#2,#2)),.UNSPECIFIED.,.F.,.F.,.F.,(2,9),(2,2),"
                     "(0.,1.),(0.,1.),.UNSPECIFIED.);\n#2=CARTESIAN_POINT('',(0.,0.,0.));\n",
