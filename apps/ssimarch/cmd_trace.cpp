@@ -1,5 +1,7 @@
 // ssimarch trace SCENE.json: traces the scene's intersections and writes the curves.
 #include <algorithm>
+#include <cctype>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
@@ -8,6 +10,7 @@
 #include "run_progress.hpp"
 #include "ssimarch/core/thread_pool.hpp"
 #include "ssimarch/io/scene.hpp"
+#include "ssimarch/io/step_surface_json.hpp"
 #include "ssimarch/pipeline/trace_job.hpp"
 #include "trace_output.hpp"
 
@@ -17,6 +20,7 @@ namespace {
 
 struct TraceArgs {
   std::string scene;
+  std::string faces;  // with a STEP model instead of a scene
   std::string output = "-";
   std::string format;
   std::vector<std::string> only;
@@ -37,6 +41,27 @@ TraceRequest request_of(const TraceArgs& a) {
   return request;
 }
 
+bool is_step_path(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext == ".step" || ext == ".stp";
+}
+
+// The scene file, or for a STEP model (`trace MODEL.step --faces 3,7`) a scene of its listed
+// faces, one intersection per pair (io/step_surface_json.hpp).
+Scene load_trace_input(const TraceArgs& a) {
+  if (!is_step_path(a.scene)) {
+    if (!a.faces.empty()) throw CliError("trace: --faces selects faces of a STEP model (MODEL.step or .stp), not of a scene");
+    return load_scene(a.scene, input_limits());
+  }
+  if (a.faces.empty())
+    throw CliError("trace: a STEP model needs --faces I,J[,...] or --faces all (the numbers of `ssimarch faces " + a.scene + "`)");
+  const StepModel model = StepModel::read(a.scene, input_limits());
+  const std::vector<int> faces = step_face_list(a.faces, model, "--faces");
+  const std::filesystem::path step = std::filesystem::absolute(a.scene);
+  return parse_scene(step_faces_scene_json(step, faces).dump(), a.scene, {}, input_limits());
+}
+
 void run_trace(const TraceArgs& a) {
   if (a.list_options) {
     std::cout << trace_options_markdown();
@@ -44,7 +69,7 @@ void run_trace(const TraceArgs& a) {
   }
   if (a.scene.empty()) throw CliError("trace: a scene file is required (ssimarch trace SCENE.json; --help)");
   if (a.threads > 0) set_thread_count(a.threads);
-  const Scene scene = load_scene(a.scene, input_limits());
+  const Scene scene = load_trace_input(a);
   OutputFormat f = a.format.empty() ? (a.output == "-" ? OutputFormat::kJson : format_from_path(a.output)) : parse_format(a.format);
   TraceRequest request = request_of(a);
   // STEP holds the certified B-splines: the format turns the option on unless a flag sets it.
@@ -96,7 +121,11 @@ void add_trace_command(CLI::App& app) {
       "\"options\" (docs/scene-format.md; --list-options prints the table).\n"
       "Exit status: 0 traced; 1 an intersection found no curve or a start point could not be put on the curve; "
       "2 invalid input; 130 interrupted (Ctrl-C), nothing written.");
-  cmd->add_option("scene", args->scene, "Scene file (JSON, docs/scene-format.md)");
+  cmd->add_option("scene", args->scene, "Scene file (JSON, docs/scene-format.md), or a STEP model (.step, .stp) with --faces");
+  cmd->add_option("--faces", args->faces,
+                  "With a STEP model: the faces to intersect, as `ssimarch faces MODEL.step` numbers them (I,J[,...]: "
+                  "every pair of them, one intersection each named faceI-faceJ; all: every pair of the model's faces). "
+                  "Each face is trimmed to its loops (docs/cad.md)");
   cmd->add_option("-o,--output", args->output, "Output file; '-' for standard output (default)");
   cmd->add_option("--format", args->format, "json | csv | obj | svg | step | vtp | vtp-ascii | html (default: from the output file's extension, .vtp/.vtm: vtp, .html: html; else json)");
   cmd->add_option("--intersection", args->only, "Trace only the intersection(s) with this name (repeatable)");

@@ -66,7 +66,7 @@ void write_runs(const std::vector<IntersectionRun>& runs, OutputFormat format, c
     case OutputFormat::kJson: write_json(out, runs); break;
     case OutputFormat::kCsv: write_csv(out, runs); break;
     case OutputFormat::kObj: write_obj(out, runs); break;
-    case OutputFormat::kStep: write_step(out, runs); break;
+    case OutputFormat::kStep: write_step(out, runs, scene); break;
     case OutputFormat::kHtml:
       if (!scene) throw std::logic_error("write_runs: an HTML page needs the scene");
       write_trace_page(out, runs, *scene, runs.size() == 1 ? runs[0].spec.name : scene->source);

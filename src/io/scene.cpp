@@ -164,8 +164,16 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
     if (name.empty()) throw InputError(source + ": surfaces", "a surface name must not be empty");
     scene.surface_names.push_back(name);
     const std::string where = source + ": surfaces." + name;
-    scene.surfaces.emplace(name, is_step_surface(spec) ? step_surface_from_json(spec, base_dir, &step_files, limits, where)
-                                                       : surface_from_json(spec, scene.constants, where));
+    std::optional<SplineSurfaceData> spline;
+    if (is_step_surface(spec)) {
+      std::shared_ptr<const FaceRegion> region;
+      scene.surfaces.emplace(name, step_surface_from_json(spec, base_dir, &step_files, limits, where, &region, &spline));
+      if (region) scene.regions.emplace(name, std::move(region));
+    } else {
+      scene.surfaces.emplace(name, surface_from_json(spec, scene.constants, where));
+      spline = spline_data_from_json(spec, scene.constants, where);
+    }
+    if (spline) scene.spline_data.emplace(name, std::move(*spline));
   }
 
   const json& list = root.contains("intersections") ? root["intersections"] : json::array();

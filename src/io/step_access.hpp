@@ -2,6 +2,7 @@
 // each accessor throws InputError naming "file:line: #id", the entity and the attribute.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -9,6 +10,9 @@
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/core/vec3.hpp"
 #include "ssimarch/io/step_part21.hpp"
+#include "ssimarch/pipeline/face_region.hpp"
+#include "ssimarch/pipeline/spline_surface_data.hpp"
+#include "ssimarch/surface/surface.hpp"
 #include "text_cat.hpp"
 
 namespace ssimarch::internal {
@@ -89,5 +93,29 @@ StepPlacement step_placement(const StepAccess& a, const StepInstance& inst);
 /// Points along a face's boundary (see io/step_reader.hpp, "Trimming"): empty when the face
 /// has no bounds.
 std::vector<Vec3> step_boundary_points(const StepAccess& a, const StepInstance& face);
+
+/// A rational B-spline curve in 3D (weights all 1 when polynomial).
+struct NurbsCurve3 {
+  int degree = 1;
+  std::vector<double> knots;
+  std::vector<Vec3> points;
+  std::vector<double> weights;
+};
+/// A B_SPLINE_CURVE_WITH_KNOTS, simple or complex with RATIONAL_B_SPLINE_CURVE.
+NurbsCurve3 step_bspline_curve(const StepAccess& a, const StepInstance& curve);
+
+/// SURFACE_OF_LINEAR_EXTRUSION and SURFACE_OF_REVOLUTION as exact rational B-spline surfaces
+/// (io/step_swept_surface.cpp); `boundary` (a face's boundary points) bounds a swept line and
+/// an extrusion's length, `v_range` (a RECTANGULAR_TRIMMED_SURFACE's v, which is STEP's and
+/// ours for an extrusion) its length first. Empty for other types.
+std::optional<SplineSurfaceData> step_swept_surface(const StepAccess& a, const StepInstance& s, const std::vector<Vec3>& boundary,
+                                                    const std::optional<Interval>& v_range = std::nullopt);
+/// OFFSET_SURFACE `s` of `basis` at distance d: a plane, cylinder, sphere or torus moved along
+/// its normal; fails naming `s` for other bases.
+Surface step_offset_surface(const Surface& basis, double d, const StepAccess& a, const StepInstance& s);
+
+/// The region inside a face's trimming loops (io/step_face_region.cpp); null when no edge of
+/// the face bounds an area (only seams and vertex loops). `name` is for messages.
+std::shared_ptr<const FaceRegion> step_face_region(const StepAccess& a, const StepInstance& face, const std::string& name);
 
 }  // namespace ssimarch::internal

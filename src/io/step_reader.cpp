@@ -123,42 +123,62 @@ std::vector<double> bezier_knots(int degree) {
 
 // B_SPLINE_SURFACE_WITH_KNOTS and BEZIER_SURFACE, simple or in a complex instance with
 // RATIONAL_B_SPLINE_SURFACE (ISO 10303-42 §4.4.16-4.4.20).
-Surface spline_surface(const StepAccess& a, const StepInstance& s) {
+SplineSurfaceData spline_data(const StepAccess& a, const StepInstance& s) {
   const StepRecord* base = s.record("B_SPLINE_SURFACE");
   const std::size_t o = base ? 0 : 1;  // a simple instance starts with its name
   const StepRecord& b = base ? *base : s.records.front();
-  const int p = a.integer(s, a.param(s, b, o, "u_degree"), "u_degree", 1, 64);
-  const int q = a.integer(s, a.param(s, b, o + 1, "v_degree"), "v_degree", 1, 64);
-  ControlNet net;
+  SplineSurfaceData d;
+  d.degree_u = a.integer(s, a.param(s, b, o, "u_degree"), "u_degree", 1, 64);
+  d.degree_v = a.integer(s, a.param(s, b, o + 1, "v_degree"), "v_degree", 1, 64);
   for (const StepValue& row : a.list(s, a.param(s, b, o + 2, "control_points_list"), "control_points_list")) {
-    net.emplace_back();
-    for (const StepValue& v : a.list(s, row, "a row of control points")) net.back().push_back(a.point(s, v, "control point"));
+    d.points.emplace_back();
+    for (const StepValue& v : a.list(s, row, "a row of control points")) d.points.back().push_back(a.point(s, v, "control point"));
   }
-  if (net.empty() || net[0].empty()) a.fail(s, "has no control points");
-  const std::size_t nu = net.size(), nv = net[0].size();
-  std::vector<double> ku, kv;
+  if (d.points.empty() || d.points[0].empty()) a.fail(s, "has no control points");
+  const std::size_t nu = d.points.size(), nv = d.points[0].size();
   if (s.record("BEZIER_SURFACE")) {
-    ku = bezier_knots(p);
-    kv = bezier_knots(q);
+    d.knots_u = bezier_knots(d.degree_u);
+    d.knots_v = bezier_knots(d.degree_v);
   } else {
     const StepRecord& k = base ? a.record(s, "B_SPLINE_SURFACE_WITH_KNOTS") : b;
     const std::size_t ko = base ? 0 : 8;
-    ku = expand_knots(a, s, a.param(s, k, ko, "u_multiplicities"), a.param(s, k, ko + 2, "u_knots"), nu + p + 1);
-    kv = expand_knots(a, s, a.param(s, k, ko + 1, "v_multiplicities"), a.param(s, k, ko + 3, "v_knots"), nv + q + 1);
+    d.knots_u = expand_knots(a, s, a.param(s, k, ko, "u_multiplicities"), a.param(s, k, ko + 2, "u_knots"), nu + d.degree_u + 1);
+    d.knots_v = expand_knots(a, s, a.param(s, k, ko + 1, "v_multiplicities"), a.param(s, k, ko + 3, "v_knots"), nv + d.degree_v + 1);
   }
-  WeightNet w;
   if (const StepRecord* rat = s.record("RATIONAL_B_SPLINE_SURFACE"))
     for (const StepValue& row : a.list(s, a.param(s, *rat, 0, "weights_data"), "weights_data"))
-      w.push_back(a.numbers(s, row, "weights"));
-  return checked(a, s, [&] { return BSplineSurface(p, q, ku, kv, net, w, a.file().where(s)); });
+      d.weights.push_back(a.numbers(s, row, "weights"));
+  return d;
 }
+
+Surface spline_surface(const StepAccess& a, const StepInstance& s) {
+  const SplineSurfaceData d = spline_data(a, s);
+  return checked(a, s, [&] { return BSplineSurface(d.degree_u, d.degree_v, d.knots_u, d.knots_v, d.points, d.weights, a.file().where(s)); });
+}
+
+bool is_spline(const StepInstance& s) { return s.record("B_SPLINE_SURFACE_WITH_KNOTS") || s.record("BEZIER_SURFACE"); }
 
 Surface any_surface(const StepAccess& a, const StepInstance& s, Trim trim, double angle_unit) {
   const std::string& t = s.records.front().type;
   if (s.records.size() == 1 && (t == "PLANE" || t == "CYLINDRICAL_SURFACE" || t == "CONICAL_SURFACE" ||
                                 t == "SPHERICAL_SURFACE" || t == "TOROIDAL_SURFACE"))
     return elementary(a, s, trim, angle_unit);
-  if (s.record("B_SPLINE_SURFACE_WITH_KNOTS") || s.record("BEZIER_SURFACE")) return spline_surface(a, s);
+  if (is_spline(s)) return spline_surface(a, s);
+  std::optional<Interval> v_range;
+  if (trim.rectangle) v_range = Interval{std::min((*trim.rectangle)[2], (*trim.rectangle)[3]), std::max((*trim.rectangle)[2], (*trim.rectangle)[3])};
+  if (const auto swept = internal::step_swept_surface(a, s, trim.boundary, v_range))
+    return checked(a, s, [&] {
+      return BSplineSurface(swept->degree_u, swept->degree_v, swept->knots_u, swept->knots_v, swept->points, swept->weights,
+                            a.file().where(s));
+    });
+  if (s.records.size() == 1 && t == "OFFSET_SURFACE") {
+    const StepRecord& r = s.records.front();
+    const StepInstance& basis = a.ref(s, a.param(s, r, 1, "basis_surface"), "basis_surface");
+    if (&basis == &s) a.fail(s, "offsets itself");
+    if (basis.records.front().type == "OFFSET_SURFACE") a.fail(s, "offsets an offset surface");
+    const double d = a.number(s, a.param(s, r, 2, "distance"), "distance");
+    return internal::step_offset_surface(any_surface(a, basis, trim, angle_unit), d, a, s);
+  }
   if (s.records.size() == 1 && t == "RECTANGULAR_TRIMMED_SURFACE") {
     const StepRecord& r = s.records.front();
     std::array<double, 4> rect{};
@@ -170,6 +190,7 @@ Surface any_surface(const StepAccess& a, const StepInstance& s, Trim trim, doubl
   }
   a.fail(s, "is not a surface type this reader knows (PLANE, CYLINDRICAL_SURFACE, CONICAL_SURFACE, "
             "SPHERICAL_SURFACE, TOROIDAL_SURFACE, B_SPLINE_SURFACE_WITH_KNOTS, BEZIER_SURFACE, rational ones, "
+            "SURFACE_OF_LINEAR_EXTRUSION, SURFACE_OF_REVOLUTION, OFFSET_SURFACE of an elementary surface, "
             "RECTANGULAR_TRIMMED_SURFACE)");
 }
 
@@ -220,6 +241,30 @@ Surface StepModel::surface(std::int64_t entity) const {
   if (!is_face(*inst)) return any_surface(a, *inst, {}, angle_unit_);
   const StepInstance& s = a.ref(*inst, inst->records.front().params.at(2), "face_geometry");
   return any_surface(a, s, Trim{internal::step_boundary_points(a, *inst), std::nullopt}, angle_unit_);
+}
+
+std::optional<SplineSurfaceData> StepModel::spline_data(std::int64_t entity) const {
+  const StepInstance* inst = file_.find(entity);
+  if (!inst) throw InputError(file_.source, cat("has no instance #", entity));
+  const StepAccess a(file_);
+  const StepInstance* s = is_face(*inst) ? &a.ref(*inst, inst->records.front().params.at(2), "face_geometry") : inst;
+  std::optional<Interval> v_range;
+  if (s->records.size() == 1 && s->records.front().type == "RECTANGULAR_TRIMMED_SURFACE") {
+    const StepRecord& r = s->records.front();
+    const double v1 = a.number(*s, a.param(*s, r, 4, "v1"), "v1"), v2 = a.number(*s, a.param(*s, r, 5, "v2"), "v2");
+    v_range = Interval{std::min(v1, v2), std::max(v1, v2)};
+    s = &a.ref(*s, a.param(*s, r, 1, "basis_surface"), "basis_surface");
+  }
+  if (is_spline(*s)) return ::ssimarch::spline_data(a, *s);
+  return internal::step_swept_surface(a, *s, is_face(*inst) ? internal::step_boundary_points(a, *inst) : std::vector<Vec3>{},
+                                      v_range);
+}
+
+std::shared_ptr<const FaceRegion> StepModel::face_region(std::int64_t entity) const {
+  const StepInstance* inst = file_.find(entity);
+  if (!inst) throw InputError(file_.source, cat("has no instance #", entity));
+  if (!is_face(*inst)) return nullptr;
+  return internal::step_face_region(StepAccess(file_), *inst, cat("STEP face #", entity, " of ", file_.source));
 }
 
 BSplineCurve StepModel::bspline_curve(std::int64_t entity) const {

@@ -1,5 +1,6 @@
 #include "ssimarch/io/step_surface_json.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "ssimarch/core/error.hpp"
@@ -28,7 +29,8 @@ std::int64_t positive_integer(const nlohmann::json& j, const std::string& where)
 }  // namespace
 
 Surface step_surface_from_json(const nlohmann::json& spec, const std::filesystem::path& base_dir, StepFileCache* cache,
-                               const InputLimits& limits, const std::string& where) {
+                               const InputLimits& limits, const std::string& where,
+                               std::shared_ptr<const FaceRegion>* region, std::optional<SplineSurfaceData>* spline) {
   JsonObject f(spec, where, {"step"}, {"face", "entity"});
   if (f.has("face") == f.has("entity"))
     throw InputError(where, "a STEP surface names exactly one of \"face\" (its number in `ssimarch faces FILE`) and "
@@ -36,13 +38,53 @@ Surface step_surface_from_json(const nlohmann::json& spec, const std::filesystem
   const std::filesystem::path file = json_string(f.at("step"), f.path("step"), "a STEP file path");
   const std::filesystem::path resolved = file.is_absolute() || base_dir.empty() ? file : base_dir / file;
   const StepModel& model = cache->get(resolved, limits);
+  std::int64_t id = 0;
   if (f.has("face")) {
     const std::int64_t k = positive_integer(f.at("face"), f.path("face"));
-    return model.surface(model.face(static_cast<int>(std::min<std::int64_t>(k, 1 << 30)), f.path("face")).entity);
+    id = model.face(static_cast<int>(std::min<std::int64_t>(k, 1 << 30)), f.path("face")).entity;
+  } else {
+    id = positive_integer(f.at("entity"), f.path("entity"));
+    if (!model.file().find(id)) throw InputError(f.path("entity"), internal::cat(model.file().source, " has no instance #", id));
   }
-  const std::int64_t id = positive_integer(f.at("entity"), f.path("entity"));
-  if (!model.file().find(id)) throw InputError(f.path("entity"), internal::cat(model.file().source, " has no instance #", id));
-  return model.surface(id);
+  Surface surface = model.surface(id);
+  if (region) *region = model.face_region(id);
+  if (spline) *spline = model.spline_data(id);
+  return surface;
+}
+
+std::vector<int> step_face_list(const std::string& text, const StepModel& model, const std::string& where) {
+  const int n = static_cast<int>(model.faces().size());
+  std::vector<int> out;
+  if (text == "all") {
+    for (int i = 1; i <= n; ++i) out.push_back(i);
+  } else {
+    std::size_t at = 0;
+    while (at <= text.size()) {
+      const std::size_t comma = std::min(text.find(',', at), text.size());
+      const std::string item = text.substr(at, comma - at);
+      const bool digits = !item.empty() && item.size() <= 9 && item.find_first_not_of("0123456789") == std::string::npos;
+      if (!digits) throw InputError(where, "expected face numbers separated by commas (e.g. 3,7) or all, got \"" + text + "\"");
+      const int k = std::stoi(item);
+      model.face(k, where);  // throws naming how many faces there are
+      if (std::find(out.begin(), out.end(), k) != out.end())
+        throw InputError(where, "face " + item + " is listed twice");
+      out.push_back(k);
+      at = comma + 1;
+    }
+  }
+  if (out.size() < 2)
+    throw InputError(where, "needs at least two faces to intersect (" + model.file().source + " has " + std::to_string(n) + ")");
+  return out;
+}
+
+nlohmann::json step_faces_scene_json(const std::filesystem::path& step, const std::vector<int>& faces) {
+  nlohmann::json surfaces = nlohmann::json::object(), pairs = nlohmann::json::array();
+  auto name = [](int k) { return "face" + std::to_string(k); };
+  for (int k : faces) surfaces[name(k)] = {{"step", step.string()}, {"face", k}};
+  for (std::size_t i = 0; i < faces.size(); ++i)
+    for (std::size_t j = i + 1; j < faces.size(); ++j)
+      pairs.push_back({{"name", name(faces[i]) + "-" + name(faces[j])}, {"surfaces", {name(faces[i]), name(faces[j])}}});
+  return {{"surfaces", surfaces}, {"intersections", pairs}};
 }
 
 }  // namespace ssimarch

@@ -135,11 +135,60 @@ int add_trimmed(StepData* d, const std::string& name, int basis, const ParamDoma
   return d->add(o.str());
 }
 
+// Knots as distinct values with multiplicities (STEP's form).
+void distinct_knots(const std::vector<double>& knots, std::vector<double>* values, std::vector<int>* mults) {
+  for (double k : knots) {
+    if (!values->empty() && values->back() == k) {
+      ++mults->back();
+    } else {
+      values->push_back(k);
+      mults->push_back(1);
+    }
+  }
+}
+
+// B_SPLINE_SURFACE_WITH_KNOTS (ISO 10303-42 §4.4.17), or for a rational net the complex
+// instance with RATIONAL_B_SPLINE_SURFACE (§4.4.20; records in alphabetical order, Part 21
+// §11.2.5.3). Not closed, not periodic: ssimarch's spline surfaces are neither.
+int add_spline_surface(StepData* d, const std::string& name, const SplineSurfaceData& n) {
+  std::ostringstream net;
+  net << '(';
+  for (std::size_t i = 0; i < n.points.size(); ++i) {
+    std::vector<int> row;
+    for (const Vec3& p : n.points[i]) row.push_back(d->add("CARTESIAN_POINT('',", vec3(p), ")"));
+    net << (i ? "," : "") << list(row, ref);
+  }
+  net << ')';
+  std::vector<double> ku, kv;
+  std::vector<int> mu, mv;
+  distinct_knots(n.knots_u, &ku, &mu);
+  distinct_knots(n.knots_v, &kv, &mv);
+  std::ostringstream knots;
+  knots << list(mu, count) << ',' << list(mv, count) << ',' << list(ku, step_real) << ',' << list(kv, step_real)
+        << ",.UNSPECIFIED.";
+  std::ostringstream o;
+  if (n.weights.empty()) {
+    o << "B_SPLINE_SURFACE_WITH_KNOTS(" << step_string(name) << ',' << n.degree_u << ',' << n.degree_v << ','
+      << net.str() << ",.UNSPECIFIED.,.F.,.F.,.U.," << knots.str() << ')';
+    return d->add(o.str());
+  }
+  std::ostringstream w;
+  w << '(';
+  for (std::size_t i = 0; i < n.weights.size(); ++i) w << (i ? "," : "") << list(n.weights[i], step_real);
+  w << ')';
+  o << "(BOUNDED_SURFACE()B_SPLINE_SURFACE(" << n.degree_u << ',' << n.degree_v << ',' << net.str()
+    << ",.UNSPECIFIED.,.F.,.F.,.U.)B_SPLINE_SURFACE_WITH_KNOTS(" << knots.str()
+    << ")GEOMETRIC_REPRESENTATION_ITEM()RATIONAL_B_SPLINE_SURFACE(" << w.str() << ")REPRESENTATION_ITEM("
+    << step_string(name) << ")SURFACE())";
+  return d->add(o.str());
+}
+
 // The surface in ISO 10303-42 form with ssimarch's parameterisation (docs/cad.md), or 0 for a
 // kind STEP has no entity for (expression surfaces, ellipsoids, paraboloids, capsules) and for
-// B-spline and Bezier patches, whose control nets surface/ does not expose yet (docs/cad.md).
-int add_surface(StepData* d, const std::string& name, const Surface& surface) {
+// spline surfaces whose control data the caller does not have (`spline`: null).
+int add_surface(StepData* d, const std::string& name, const Surface& surface, const SplineSurfaceData* spline) {
   const std::string n = step_string(name);
+  if (surface.get_if<BSplineSurface>() || surface.get_if<BezierPatch>()) return spline ? add_spline_surface(d, name, *spline) : 0;
   if (const auto* p = surface.get_if<Plane>())
     return add_trimmed(d, name, d->add("PLANE(", n, ",", ref(add_placement(d, p->frame())), ")"), p->domain());
   if (const auto* c = surface.get_if<Cylinder>())
@@ -160,13 +209,15 @@ int add_surface(StepData* d, const std::string& name, const Surface& surface) {
 // INTERSECTION_CURVE (both) whose associated geometry is the PCURVE on each parametric surface
 // and the surface itself for an implicit one (ISO 10303-42 §4.4.66-4.4.71); the bare
 // B-spline when neither surface has a STEP form.
-int add_curve(StepData* d, const IntersectionRun& r, std::size_t c, int ctx2, std::map<std::string, int>* surface_ids) {
+int add_curve(StepData* d, const IntersectionRun& r, std::size_t c, int ctx2, std::map<std::string, int>* surface_ids,
+              const std::map<std::string, SplineSurfaceData>& splines) {
   const auto names = parametric_surface_names(r);
   const std::array<const Surface*, 2> surfaces{&r.problem.first(), &r.problem.second()};
   std::array<int, 2> surface_id{};
   for (std::size_t k = 0; k < 2; ++k) {
     auto [it, fresh] = surface_ids->emplace(names[k], 0);
-    if (fresh) it->second = add_surface(d, names[k], *surfaces[k]);
+    const auto spline = splines.find(names[k]);
+    if (fresh) it->second = add_surface(d, names[k], *surfaces[k], spline == splines.end() ? nullptr : &spline->second);
     surface_id[k] = it->second;
   }
   std::ostringstream named;
@@ -193,7 +244,9 @@ int add_curve(StepData* d, const IntersectionRun& r, std::size_t c, int ctx2, st
 
 }  // namespace
 
-void write_step(std::ostream& out, const std::vector<IntersectionRun>& runs) {
+void write_step(std::ostream& out, const std::vector<IntersectionRun>& runs, const Scene* scene) {
+  static const std::map<std::string, SplineSurfaceData> kNone;
+  const auto& splines = scene ? scene->spline_data : kNone;
   double largest = 0;
   bool any = false;
   for (const IntersectionRun& r : runs)
@@ -209,7 +262,7 @@ void write_step(std::ostream& out, const std::vector<IntersectionRun>& runs) {
   std::map<std::string, int> surface_ids;  // scene surface name -> STEP id (0: no STEP form)
   for (const IntersectionRun& r : runs)
     for (std::size_t c = 0; c < r.splines.size(); ++c)
-      if (r.splines[c]) curves.push_back(add_curve(&d, r, c, ctx2, &surface_ids));
+      if (r.splines[c]) curves.push_back(add_curve(&d, r, c, ctx2, &surface_ids, splines));
   const int set = d.add("GEOMETRIC_CURVE_SET('intersection curves',", list(curves, ref), ")");
   const int rep = d.add("GEOMETRICALLY_BOUNDED_WIREFRAME_SHAPE_REPRESENTATION('ssimarch',(", ref(set), "),", ref(ctx3), ")");
   d.add("SHAPE_DEFINITION_REPRESENTATION(", ref(shape), ",", ref(rep), ")");

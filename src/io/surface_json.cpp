@@ -220,29 +220,47 @@ std::vector<double> knots(const json& j, const Constants& c, const std::string& 
   return k;
 }
 
-Surface bezier(const json& j, const Constants& c, const std::string& where) {
+SplineSurfaceData bezier_data(const json& j, const Constants& c, const std::string& where) {
   Fields f(j, where, {"control_points"}, {"weights"});
-  const ControlNet net = control_net(f.at("control_points"), c, f.path("control_points"));
-  const WeightNet w = f.has("weights") ? weight_net(f.at("weights"), c, f.path("weights")) : WeightNet{};
-  return BezierPatch(net, w, where);
+  SplineSurfaceData d;
+  d.points = control_net(f.at("control_points"), c, f.path("control_points"));
+  d.weights = f.has("weights") ? weight_net(f.at("weights"), c, f.path("weights")) : WeightNet{};
+  d.degree_u = static_cast<int>(d.points.size()) - 1;
+  d.degree_v = d.points.empty() ? -1 : static_cast<int>(d.points[0].size()) - 1;
+  for (auto [degree, k] : {std::pair{d.degree_u, &d.knots_u}, std::pair{d.degree_v, &d.knots_v}}) {
+    k->assign(static_cast<std::size_t>(std::max(degree + 1, 0)), 0.0);
+    k->resize(2 * k->size(), 1.0);
+  }
+  return d;
 }
 
-Surface bspline(const json& j, const Constants& c, const std::string& where) {
+Surface bezier(const json& j, const Constants& c, const std::string& where) {
+  const SplineSurfaceData d = bezier_data(j, c, where);
+  return BezierPatch(d.points, d.weights, where);
+}
+
+SplineSurfaceData bspline_data(const json& j, const Constants& c, const std::string& where) {
   Fields f(j, where, {"degree", "knots_u", "knots_v", "control_points"}, {"weights"});
   const json& dj = f.at("degree");
   const std::string dp = f.path("degree");
-  int p, q;
+  SplineSurfaceData d;
   if (dj.is_array()) {
     json_array(dj, 2, dp, "one degree or two [p, q]");
-    p = integer(dj[0], c, index_path(dp, 0), 1);
-    q = integer(dj[1], c, index_path(dp, 1), 1);
+    d.degree_u = integer(dj[0], c, index_path(dp, 0), 1);
+    d.degree_v = integer(dj[1], c, index_path(dp, 1), 1);
   } else {
-    p = q = integer(dj, c, dp, 1);
+    d.degree_u = d.degree_v = integer(dj, c, dp, 1);
   }
-  const ControlNet net = control_net(f.at("control_points"), c, f.path("control_points"));
-  const WeightNet w = f.has("weights") ? weight_net(f.at("weights"), c, f.path("weights")) : WeightNet{};
-  return BSplineSurface(p, q, knots(f.at("knots_u"), c, f.path("knots_u")), knots(f.at("knots_v"), c, f.path("knots_v")),
-                        net, w, where);
+  d.points = control_net(f.at("control_points"), c, f.path("control_points"));
+  d.weights = f.has("weights") ? weight_net(f.at("weights"), c, f.path("weights")) : WeightNet{};
+  d.knots_u = knots(f.at("knots_u"), c, f.path("knots_u"));
+  d.knots_v = knots(f.at("knots_v"), c, f.path("knots_v"));
+  return d;
+}
+
+Surface bspline(const json& j, const Constants& c, const std::string& where) {
+  const SplineSurfaceData d = bspline_data(j, c, where);
+  return BSplineSurface(d.degree_u, d.degree_v, d.knots_u, d.knots_v, d.points, d.weights, where);
 }
 
 using Maker = Surface (*)(const json&, const Constants&, const std::string&);
@@ -295,6 +313,13 @@ Surface surface_from_json(const json& spec, const Constants& constants, const st
                                               "'s data goes inside \"" + found->key + "\": {...})");
   }
   return found->make(spec.at(found->key), constants, where + "." + found->key);
+}
+
+std::optional<SplineSurfaceData> spline_data_from_json(const json& spec, const Constants& constants, const std::string& where) {
+  for (const char* key : {"bspline", "nurbs"})
+    if (spec.is_object() && spec.contains(key)) return bspline_data(spec.at(key), constants, where + "." + key);
+  if (spec.is_object() && spec.contains("bezier")) return bezier_data(spec.at("bezier"), constants, where + ".bezier");
+  return std::nullopt;
 }
 
 }  // namespace ssimarch

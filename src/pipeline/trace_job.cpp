@@ -11,6 +11,7 @@
 #include "ssimarch/geometry/intersection_geometry.hpp"
 #include "ssimarch/march/model_size.hpp"
 #include "ssimarch/pipeline/branch_geometry.hpp"
+#include "ssimarch/pipeline/face_clip.hpp"
 #include "ssimarch/singular/locate.hpp"
 #include "ssimarch/topology/trace_all.hpp"
 
@@ -98,6 +99,12 @@ IntersectionRun run_intersection(const Scene& scene, const IntersectionSpec& spe
   if (!run.problem.disjoint() && !fits_model(spec.options.trace, run.problem.scale(), &key, &error))
     throw InputError(scene.source + ": " + spec.name + (key == "model size" ? "" : ".options." + key), error);
   find_curves(spec, &run);
+  // CAD faces: the curves cut to their trimming loops (docs/cad.md).
+  auto region = [&](std::size_t k) {
+    const auto it = scene.regions.find(spec.surfaces[spec.swapped ? 1 - k : k]);
+    return it == scene.regions.end() ? nullptr : it->second.get();
+  };
+  clip_to_regions({region(0), region(1)}, &run);
   report_coincidence(spec, &run);
   run.network = build_curve_network(run.problem, run.result);
   for (const NetworkFailure& f : run.network.failures)
@@ -107,9 +114,15 @@ IntersectionRun run_intersection(const Scene& scene, const IntersectionSpec& spe
     for (const TracedCurve& c : run.result.curves)
       run.geometry.push_back(geometry_along_curve(run.problem, c, *spec.options.geometry));
   if (spec.options.bspline)
-    for (std::size_t c = 0; c < run.result.curves.size(); ++c)
+    for (std::size_t c = 0; c < run.result.curves.size(); ++c) {
       run.splines.push_back(spline_of_curve(run.problem, run.result.curves[c], spec.options.spline,
                                             &run.result.singular_points, static_cast<int>(c)));
+      // The certified spline's arc length (its parameter: Gauss-Legendre on each quintic piece)
+      // replaces the circular-arc estimate over the traced points, which is off by O(h^4) per
+      // segment (1.6e-6 on a torus section at the default deviation); a closed form's is exact.
+      if (run.splines.back() && run.conics.empty())
+        run.result.curves[c].length = run.splines.back()->curve.end() - run.splines.back()->curve.start();
+    }
   return run;
 }
 

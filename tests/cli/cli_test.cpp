@@ -380,3 +380,37 @@ TEST(Cli, HtmlPageOfATraceAndOfAResult) {
 }
 
 }  // namespace
+
+// `trace MODEL.step --faces I,J`: the faces of a STEP model intersected pairwise, trimmed to their
+// loops (tests/io/data/plate_with_hole.step: the plate z = 0 with a hole of radius 1 and a
+// cylinder y^2 + (z - 0.3)^2 = 0.25, |x| <= 2.5, across it: four segments of y = +-0.4).
+TEST(Cli, TraceFacesOfAStepModel) {
+  const std::string model = std::string(SSIMARCH_SOURCE_DIR) + "/tests/io/data/plate_with_hole.step";
+  CliRun r = run("trace " + model + " --faces 1,2 -q");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["intersections"].size(), 1u);
+  EXPECT_EQ(j["intersections"][0]["name"], "face1-face2");
+  const auto& curves = j["intersections"][0]["curves"];
+  ASSERT_EQ(curves.size(), 4u);
+  for (const auto& c : curves) EXPECT_NEAR(c["length"].get<double>(), 2.5 - std::sqrt(0.84), 1e-9);
+  CliRun all = run("trace " + model + " --faces all -q");
+  ASSERT_EQ(all.status, 0) << all.err;
+  EXPECT_EQ(nlohmann::json::parse(all.out)["intersections"].size(), 1u);
+  // Errors: no --faces, a face the model lacks, a face twice, one face, --faces with a scene.
+  CliRun none = run("trace " + model);
+  EXPECT_EQ(none.status, 2);
+  EXPECT_THAT(none.err, HasSubstr("--faces"));
+  CliRun missing = run("trace " + model + " --faces 1,3");
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_THAT(missing.err, HasSubstr("face 3 does not exist"));
+  EXPECT_THAT(missing.err, HasSubstr("has 2 faces"));
+  EXPECT_EQ(run("trace " + model + " --faces 1,1").status, 2);
+  EXPECT_EQ(run("trace " + model + " --faces 2").status, 2);
+  EXPECT_EQ(run("trace " + model + " --faces 1,x").status, 2);
+  CliRun scene = run("trace " + kExamples + "thesis_pair2_cylinder_sphere.json --faces 1,2");
+  EXPECT_EQ(scene.status, 2);
+  EXPECT_THAT(scene.err, HasSubstr("STEP model"));
+  CliRun help = run("trace --help");
+  EXPECT_THAT(help.out, HasSubstr("--faces"));
+}

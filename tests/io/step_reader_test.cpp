@@ -126,6 +126,81 @@ TEST(StepReader, AnalyticSurfacesFollowIso10303_42) {
   EXPECT_NEAR(cone.domain().v.lo, -1.0 + 2.0 / std::tan(0.5), 1e-14);
 }
 
+// Swept and offset surfaces (ISO 10303-42 §4.4.30-4.4.33) as exact rational B-splines: a line
+// turned about z is the cylinder r = 2, a circle the torus (R, r) = (3, 1), an ellipse extruded
+// the elliptic cylinder (x/2)^2 + y^2 = 1; offsets of a trimmed cylinder and a sphere; an offset
+// of a B-spline is refused naming the instance and the type.
+TEST(StepReader, SweptAndOffsetSurfacesAreExact) {
+  const StepModel m(parse_step(
+      step_text(std::string(kPlacement) +
+                "#20=CYLINDRICAL_SURFACE('',#1,1.5);\n#21=RECTANGULAR_TRIMMED_SURFACE('',#20,0.,6.3,-1.,2.,.T.,.T.);\n"
+                "#40=SPHERICAL_SURFACE('',#1,2.5);\n"
+                "#60=LINE('',#61,#62);\n#61=CARTESIAN_POINT('',(2.,0.,0.));\n#62=VECTOR('',#63,1.);\n#63=DIRECTION('',(0.,0.,1.));\n"
+                "#64=TRIMMED_CURVE('',#60,(PARAMETER_VALUE(-1.)),(PARAMETER_VALUE(3.)),.T.,.PARAMETER.);\n"
+                "#65=AXIS1_PLACEMENT('',#66,#63);\n#66=CARTESIAN_POINT('',(0.,0.,0.));\n"
+                "#67=SURFACE_OF_REVOLUTION('',#64,#65);\n"
+                "#70=CIRCLE('',#71,1.);\n#71=AXIS2_PLACEMENT_3D('',#72,#73,#74);\n#72=CARTESIAN_POINT('',(3.,0.,0.));\n"
+                "#73=DIRECTION('',(0.,-1.,0.));\n#74=DIRECTION('',(1.,0.,0.));\n#75=SURFACE_OF_REVOLUTION('',#70,#65);\n"
+                "#80=ELLIPSE('',#81,2.,1.);\n#81=AXIS2_PLACEMENT_3D('',#66,#63,#74);\n#82=VECTOR('',#63,1.5);\n"
+                "#83=SURFACE_OF_LINEAR_EXTRUSION('',#80,#82);\n#84=RECTANGULAR_TRIMMED_SURFACE('',#83,0.,1.,-0.5,2.,.T.,.T.);\n"
+                "#90=OFFSET_SURFACE('',#21,0.25,.F.);\n#91=OFFSET_SURFACE('',#40,-0.5,.F.);\n"
+                "#92=B_SPLINE_SURFACE_WITH_KNOTS('',1,1,((#61,#66),(#72,#61)),.UNSPECIFIED.,.F.,.F.,.F.,(2,2),(2,2),(0.,1.),(0.,1.),"
+                ".UNSPECIFIED.);\n#93=OFFSET_SURFACE('',#92,0.1,.F.);\n"),
+      "t.step"));
+  const Surface cylinder = m.surface(67), torus = m.surface(75), elliptic = m.surface(84);
+  const Surface offset_cylinder = m.surface(90), offset_sphere = m.surface(91);
+  EXPECT_EQ(cylinder.domain().v.lo, -1.0);
+  EXPECT_EQ(cylinder.domain().v.hi, 3.0);
+  EXPECT_EQ(elliptic.domain().v.lo, -0.5);
+  EXPECT_EQ(elliptic.domain().v.hi, 2.0);
+  for (int i = 0; i <= 16; ++i)
+    for (int j = 0; j <= 8; ++j) {
+      const double a = i / 16.0, b = j / 8.0;
+      const ParamDomain& d = cylinder.domain();
+      const Vec3 c = at(cylinder, d.u.lo + a * d.u.width(), d.v.lo + b * d.v.width());
+      EXPECT_NEAR(std::hypot(c.x(), c.y()), 2.0, 1e-14);
+      EXPECT_NEAR(c.z(), d.v.lo + b * d.v.width(), 1e-14);  // the line's own parameter
+      const ParamDomain& e = torus.domain();
+      const Vec3 t = at(torus, e.u.lo + a * e.u.width(), e.v.lo + b * e.v.width());
+      EXPECT_NEAR(std::pow(std::hypot(t.x(), t.y()) - 3.0, 2) + t.z() * t.z(), 1.0, 1e-14);
+      const ParamDomain& f = elliptic.domain();
+      const double v = f.v.lo + b * f.v.width();
+      const Vec3 q = at(elliptic, f.u.lo + a * f.u.width(), v);
+      EXPECT_NEAR(q.x() * q.x() / 4 + q.y() * q.y(), 1.0, 1e-14);
+      EXPECT_NEAR(q.z(), 1.5 * v, 1e-14);
+    }
+  // The profile's point at u = 0 and, half way round, opposite it.
+  expect_near(at(cylinder, 0.0, 0.5), Vec3(2, 0, 0.5), 1e-15);
+  expect_near(at(cylinder, 0.5, 0.5), Vec3(-2, 0, 0.5), 1e-15);
+  for (double u : {0.3, 2.0, 4.5})
+    for (double v : {-0.7, 0.4, 1.1}) {
+      const Vec3 radial = std::cos(u) * kX + std::sin(u) * kY;
+      expect_near(at(offset_cylinder, u, v), kO + 1.75 * radial + v * kZ, 1e-14);
+      expect_near(at(offset_sphere, u, v), kO + 2.0 * std::cos(v) * radial + 2.0 * std::sin(v) * kZ, 1e-14);
+    }
+  EXPECT_EQ(offset_cylinder.domain().v.hi, 2.0);
+  try {
+    m.surface(93);
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("#93"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("OFFSET_SURFACE"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("bspline"), std::string::npos) << e.what();
+  }
+  // A revolved line without a trim or a face bounding it: the message says so.
+  const StepModel bare(parse_step(step_text("#60=LINE('',#61,#62);\n#61=CARTESIAN_POINT('',(2.,0.,0.));\n#62=VECTOR('',#63,1.);\n"
+                                            "#63=DIRECTION('',(0.,0.,1.));\n#65=AXIS1_PLACEMENT('',#61,#63);\n"
+                                            "#66=CARTESIAN_POINT('',(0.,0.,0.));\n#64=AXIS1_PLACEMENT('',#66,#63);\n"
+                                            "#67=SURFACE_OF_REVOLUTION('',#60,#64);\n"),
+                                  "t.step"));
+  try {
+    bare.surface(67);
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("unbounded line"), std::string::npos) << e.what();
+  }
+}
+
 TEST(StepReader, DegreesAreConverted) {
   const StepModel m(parse_step(step_text(std::string(kPlacement) +
                                          "#30=CONICAL_SURFACE('',#1,0.,30.);\n#31=RECTANGULAR_TRIMMED_SURFACE('',#30,0.,360.,0.,2.,.T.,.T.);\n"
@@ -186,7 +261,9 @@ TEST(StepReader, ErrorsNameTheInstance) {
   EXPECT_NE(message(std::string(kPlacement) + "#5=CYLINDRICAL_SURFACE('',#1,'r');\n", 5).find("radius must be a number"),
             std::string::npos);
   EXPECT_NE(message(std::string(kPlacement) + "#5=CYLINDRICAL_SURFACE('',#1,-1.);\n", 5).find("t.step:12: #5"), std::string::npos);
-  EXPECT_NE(message(std::string(kPlacement) + "#5=SURFACE_OF_REVOLUTION('',#1,#1);\n", 5).find("not a surface type"),
+  EXPECT_NE(message(std::string(kPlacement) + "#5=CURVE_BOUNDED_SURFACE('',#1,(),.F.);\n", 5).find("not a surface type"),
+            std::string::npos);
+  EXPECT_NE(message(std::string(kPlacement) + "#5=SURFACE_OF_REVOLUTION('',#1,#6);\n#6=AXIS1_PLACEMENT('',#2,#3);\n", 5).find("#1: AXIS2_PLACEMENT_3D: is not a swept curve"),
             std::string::npos);
   EXPECT_NE(message("#1=B_SPLINE_SURFACE_WITH_KNOTS('',1,1,((#2,#2),(#2,#2)),.UNSPECIFIED.,.F.,.F.,.F.,(2,9),(2,2),"
                     "(0.,1.),(0.,1.),.UNSPECIFIED.);\n#2=CARTESIAN_POINT('',(0.,0.,0.));\n",
@@ -265,7 +342,7 @@ TEST(StepReader, RoundTripThroughTheWriter) {
   std::vector<IntersectionRun> runs;
   for (const auto& spec : s.intersections) runs.push_back(run_intersection(s, spec));
   std::ostringstream os;
-  write_step(os, runs);
+  write_step(os, runs, &s);
   const StepModel m(parse_step(os.str(), "out.step"));
   // The surfaces read back are the scene's, point for point.
   std::map<std::string, std::int64_t> surface_ids;
@@ -278,15 +355,17 @@ TEST(StepReader, RoundTripThroughTheWriter) {
           inst.records.front().type != "CONICAL_SURFACE")
         surface_ids[r.params[0].text] = id;
   }
-  ASSERT_EQ(surface_ids.size(), 5u);  // the B-spline and Bezier patches are not written yet
+  // Every surface of the scene: the trimmed plane, cylinder and cone, the torus, the ball, the
+  // rational B-spline and Bezier patches and the polynomial B-spline.
+  ASSERT_EQ(surface_ids.size(), 8u);
   for (const auto& [name, id] : surface_ids) {
     const Surface& original = s.surfaces.at(name);
     const Surface read = m.surface(id);
     const ParamDomain& d = original.domain();
     EXPECT_EQ(read.domain().u.lo, d.u.lo) << name;
     EXPECT_EQ(read.domain().v.hi, d.v.hi) << name;
-    for (double a : {0.1, 0.5, 0.9})
-      for (double b : {0.2, 0.7}) {
+    for (double a : {0.0, 0.1, 0.37, 0.5, 0.9, 1.0})
+      for (double b : {0.0, 0.2, 0.61, 0.7, 1.0}) {
         const double u = d.u.lo + a * d.u.width(), v = d.v.lo + b * d.v.width();
         expect_near(at(read, u, v), at(original, u, v), 1e-14);
       }
@@ -317,9 +396,9 @@ TEST(StepReader, RoundTripThroughTheWriter) {
       }
     }
   }
-  EXPECT_GE(intersection_curves, 3);
-  EXPECT_GE(surface_curves, 2);  // the patches (not written) with the implicit sphere and the plane
-  EXPECT_GE(pcurves, 7);
+  EXPECT_GE(intersection_curves, 6);  // every surface of the scene has a STEP form
+  EXPECT_EQ(surface_curves, 0);
+  EXPECT_GE(pcurves, 11);
 }
 
 }  // namespace

@@ -9,7 +9,8 @@
 // its boundary (edges sampled: lines by their vertices, circles and ellipses along their arcs,
 // B-spline edges by their control points, which hold the curve in their hull): the rectangle
 // of a plane, the axial range of a cylinder or cone. Spheres, tori and B-spline surfaces keep
-// their whole domain, and a boundary's interior loops (holes) are not honoured.
+// their whole domain. The loops themselves (holes, curved outer bounds) are the face's region
+// (face_region), to which a scene cuts the traced curves.
 // Plane angles are converted to radians by the file's plane-angle unit (a CONVERSION_BASED_UNIT
 // such as degrees); lengths stay in the file's unit.
 // Every error is an InputError naming "file:line: #id" of the instance at fault.
@@ -17,11 +18,15 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "ssimarch/geometry/bspline_curve.hpp"
 #include "ssimarch/io/step_part21.hpp"
+#include "ssimarch/pipeline/face_region.hpp"
+#include "ssimarch/pipeline/spline_surface_data.hpp"
 #include "ssimarch/surface/surface.hpp"
 
 namespace ssimarch {
@@ -48,6 +53,13 @@ class StepModel {
   /// The surface of a face instance (trimmed to its boundary's range, see above) or of a
   /// surface instance. Throws InputError for other entities and unsupported surface types.
   Surface surface(std::int64_t entity) const;
+  /// The control data of a face's (or surface instance's) B-spline or Bezier surface, through a
+  /// RECTANGULAR_TRIMMED_SURFACE; empty for other surfaces.
+  std::optional<SplineSurfaceData> spline_data(std::int64_t entity) const;
+  /// The region a face instance keeps inside its trimming loops (outer and inner bounds, each
+  /// edge's exact curve: LINE, CIRCLE, ELLIPSE, B-spline; docs/cad.md "Trimming loops"); null
+  /// for a surface instance and for a face bounded only by seams and vertices.
+  std::shared_ptr<const FaceRegion> face_region(std::int64_t entity) const;
   /// A B_SPLINE_CURVE_WITH_KNOTS (2D or 3D, not rational) as a B-spline curve.
   BSplineCurve bspline_curve(std::int64_t entity) const;
   /// Radians per plane-angle unit of the file (1 unless it declares another unit).

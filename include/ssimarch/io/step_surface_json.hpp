@@ -8,7 +8,9 @@
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "ssimarch/core/input_limits.hpp"
 #include "ssimarch/io/step_reader.hpp"
@@ -27,9 +29,23 @@ class StepFileCache {
 /// True when a surface's JSON is the STEP form (has the key "step").
 bool is_step_surface(const nlohmann::json& spec);
 
-/// The surface a STEP form names. Throws InputError naming `where` + ".step" / ".face" /
-/// ".entity" for a bad key, and the file:line: #id of the STEP instance at fault.
+/// The surface a STEP form names, in *region (when given) the face's region inside its
+/// trimming loops (null for a surface instance), and in *spline (when given) a spline
+/// surface's control data. Throws InputError naming `where` + ".step" /
+/// ".face" / ".entity" for a bad key, and the file:line: #id of the STEP instance at fault.
 Surface step_surface_from_json(const nlohmann::json& spec, const std::filesystem::path& base_dir, StepFileCache* cache,
-                               const InputLimits& limits, const std::string& where);
+                               const InputLimits& limits, const std::string& where,
+                               std::shared_ptr<const FaceRegion>* region = nullptr,
+                               std::optional<SplineSurfaceData>* spline = nullptr);
+
+/// The faces of a STEP model to intersect, from a command-line list: "3,7,12" (numbers as
+/// `ssimarch faces` lists them, each at most once, at least two) or "all". Throws
+/// InputError(where, ...) for anything else or a face the model does not have.
+std::vector<int> step_face_list(const std::string& text, const StepModel& model, const std::string& where);
+
+/// A scene of faces of a STEP model ({"step": path, "face": i} named "face<i>", trimmed to
+/// their loops) with one intersection per pair of them, named "face<i>-face<j>", i < j in the
+/// list's order, default options (io/scene.hpp parses it).
+nlohmann::json step_faces_scene_json(const std::filesystem::path& step, const std::vector<int>& faces);
 
 }  // namespace ssimarch

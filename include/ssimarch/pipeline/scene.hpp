@@ -5,14 +5,17 @@
 
 #include <array>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "ssimarch/core/vec3.hpp"
 #include "ssimarch/expr/program.hpp"
-#include "ssimarch/problem/problem.hpp"
+#include "ssimarch/pipeline/face_region.hpp"
 #include "ssimarch/pipeline/option_table.hpp"
+#include "ssimarch/pipeline/spline_surface_data.hpp"
+#include "ssimarch/problem/problem.hpp"
 #include "ssimarch/surface/surface.hpp"
 
 namespace ssimarch {
@@ -35,6 +38,11 @@ struct Scene {
   Constants constants;
   std::vector<std::string> surface_names;  // in file order
   std::map<std::string, Surface> surfaces;
+  /// Surfaces that are CAD faces: the region their trimming loops keep (absent: the whole
+  /// surface in its domain). The curves of an intersection are cut to both surfaces' regions.
+  std::map<std::string, std::shared_ptr<const FaceRegion>> regions;
+  /// Spline surfaces' control data as given (for writing them to STEP), by surface name.
+  std::map<std::string, SplineSurfaceData> spline_data;
   std::vector<IntersectionSpec> intersections;
 
   /// Throws InputError naming the known surfaces when `name` is unknown.

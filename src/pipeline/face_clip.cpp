@@ -1,0 +1,266 @@
+// Curves cut to the trimming loops of CAD faces (docs/cad.md, "Trimming loops"). A boundary
+// crossing between two traced points is a root of the signed distance phi(x) = min over the
+// regions of (p(x) - c) . inward along the curve; at the root p lies on both surfaces and on the
+// boundary curve itself (p - c is normal to the boundary tangent and to the face's inward
+// direction, so along the normal: zero for a point of the surface near c).
+#include "ssimarch/pipeline/face_clip.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "ssimarch/analytic/conic_pieces.hpp"
+#include "ssimarch/march/tracer.hpp"
+#include "ssimarch/problem/gauss_newton.hpp"
+
+namespace ssimarch {
+
+namespace {
+
+struct Clipper {
+  const Problem& problem;
+  std::array<const FaceRegion*, 2> regions;
+  CorrectorOptions corrector;
+  double scale;  // max(1, model size)
+};
+
+// phi at x and the region that attains it.
+struct Phi {
+  double value = std::numeric_limits<double>::infinity();
+  double gap = 0;  // |p - nearest boundary point| of that region
+  int region = -1;
+};
+
+Phi phi(const Clipper& c, const VecX& x) {
+  const Linearization L = c.problem.linearize(x);
+  const Vec3 p = c.problem.point(x);
+  Phi out;
+  for (int k = 0; k < 2; ++k) {
+    if (!c.regions[static_cast<std::size_t>(k)]) continue;
+    const FaceRegion::Side s = c.regions[static_cast<std::size_t>(k)]->side(p, k == 0 ? L.normal_first : L.normal_second);
+    if (s.signed_distance < out.value) out = {s.signed_distance, (p - s.nearest).norm(), k};
+  }
+  return out;
+}
+
+// The curve point between a and b (a inside, b outside, or the reverse) where phi = 0: Illinois
+// regula falsi in s, each trial point the curve's point where the unknown i that changes most
+// between a and b takes a.x[i] + s (b.x[i] - a.x[i]). Empty when a trial point cannot be
+// corrected or phi does not vanish there (its sign changed across a jump of the nearest
+// boundary part, not across the boundary).
+std::optional<CurvePoint> crossing(const Clipper& c, const CurvePoint& a, const CurvePoint& b, double fa, double fb,
+                                   int* region) {
+  const VecX dx = c.problem.difference(a.x, b.x);
+  Eigen::Index i = 0;
+  dx.cwiseAbs().maxCoeff(&i);
+  VecX x_best;
+  Phi best;
+  auto trial = [&](double s) -> std::optional<double> {
+    const CorrectorResult r = solve_with_fixed_unknown(c.problem, a.x + s * dx, static_cast<int>(i), a.x[i] + s * dx[i], c.corrector);
+    if (r.status != CorrectorStatus::kConverged) return std::nullopt;
+    const Phi f = phi(c, r.x);
+    if (!(std::abs(f.value) >= std::abs(best.value))) {
+      best = f;
+      x_best = r.x;
+    }
+    return f.value;
+  };
+  const double tol = 1e-13 * c.scale;
+  double s0 = 0, s1 = 1, f0 = fa, f1 = fb;
+  for (int it = 0; it < 200 && std::abs(best.value) > tol && std::abs(s1 - s0) > 1e-17; ++it) {
+    const double s = std::clamp(s1 - f1 * (s1 - s0) / (f1 - f0), std::min(s0, s1), std::max(s0, s1));
+    const auto f = trial(s);
+    if (!f) return std::nullopt;
+    if ((*f > 0) == (f1 > 0)) {
+      f0 /= 2;  // Illinois: the end kept twice has its value halved
+    } else {
+      s0 = s1;
+      f0 = f1;
+    }
+    s1 = s;
+    f1 = *f;
+  }
+  if (!(std::abs(best.value) <= 1e3 * tol && best.gap <= 1e3 * tol)) return std::nullopt;
+  const Linearization L = c.problem.linearize(x_best);
+  Vec3 t = L.normal_first.cross(L.normal_second);
+  if (t.dot(b.p - a.p) < 0) t = -t;
+  *region = best.region;
+  return CurvePoint{c.problem.wrap(x_best), c.problem.point(x_best), t.norm() > 0 ? Vec3(t.normalized()) : a.t};
+}
+
+double length_of(const TracedCurve& c) {
+  double length = 0;
+  for (std::size_t i = 0; i + 1 < c.points.size(); ++i)
+    length += arc_length_estimate(c.points[i].p, c.points[i].t, c.points[i + 1].p, c.points[i + 1].t);
+  return length;
+}
+
+// A point of the curve with where it stands, and at crossings the boundary point itself.
+struct Marked {
+  CurvePoint point;
+  bool inside = false;
+  bool boundary = false;  // an exact crossing point
+  int region = -1;
+};
+
+// The points of curve `curve` with the crossings inserted (a closed curve rotated to start at
+// its first crossing, and then open). *crossings counts them.
+std::vector<Marked> mark(const Clipper& c, const TracedCurve& curve, int* crossings) {
+  std::vector<Marked> out;
+  std::vector<double> f;
+  for (const CurvePoint& p : curve.points) f.push_back(phi(c, p.x).value);
+  bool inside = f.front() > 0;
+  *crossings = 0;
+  for (std::size_t i = 0; i < curve.points.size(); ++i) {
+    if (i > 0 && (f[i] > 0) != (f[i - 1] > 0)) {
+      int region = -1;
+      if (auto x = crossing(c, curve.points[i - 1], curve.points[i], f[i - 1], f[i], &region)) {
+        out.push_back({*x, true, true, region});
+        inside = f[i] > 0;
+        ++*crossings;
+      }
+    }
+    out.push_back({curve.points[i], inside, false, -1});
+  }
+  if (!curve.closed || *crossings == 0) return out;
+  // Closed: the last point is the first; start at the first crossing and go round once.
+  out.pop_back();
+  const auto first = std::find_if(out.begin(), out.end(), [](const Marked& m) { return m.boundary; });
+  std::rotate(out.begin(), first, out.end());
+  out.push_back(out.front());
+  return out;
+}
+
+std::string end_message(const Clipper& c, int region) {
+  return "on the boundary of " + c.regions[static_cast<std::size_t>(region)]->name();
+}
+
+// The pieces of one curve inside the regions; each piece's first point index in the input curve
+// is not kept (pieces are new curves).
+std::vector<TracedCurve> pieces(const Clipper& c, const TracedCurve& curve) {
+  int crossings = 0;
+  const std::vector<Marked> m = mark(c, curve, &crossings);
+  if (crossings == 0) return m.front().inside ? std::vector<TracedCurve>{curve} : std::vector<TracedCurve>{};
+  std::vector<TracedCurve> out;
+  TracedCurve piece;
+  bool open = false;
+  auto finish = [&](Termination end, const std::string& message) {
+    piece.end_end = end;
+    piece.end_message = message;
+    piece.closed = false;
+    piece.length = length_of(piece);
+    if (piece.points.size() >= 2) out.push_back(piece);
+    piece = TracedCurve{};
+    piece.tangential_contact = curve.tangential_contact;
+    open = false;
+  };
+  piece.tangential_contact = curve.tangential_contact;
+  for (std::size_t k = 0; k < m.size(); ++k) {
+    const Marked& p = m[k];
+    if (p.boundary) {
+      if (open) {
+        piece.points.push_back(p.point);
+        finish(Termination::kLeftDomain, end_message(c, p.region));
+      }
+      // Entering when the next point is inside.
+      if (k + 1 < m.size() && m[k + 1].inside && !m[k + 1].boundary) {
+        piece.points.push_back(p.point);
+        piece.start_end = Termination::kLeftDomain;
+        piece.start_message = end_message(c, p.region);
+        open = true;
+      }
+      continue;
+    }
+    if (!p.inside) continue;
+    if (!open) {  // an open curve's first point inside: the piece keeps the curve's own start
+      piece.start_end = curve.start_end;
+      piece.start_message = curve.start_message;
+      open = true;
+    }
+    piece.points.push_back(p.point);
+  }
+  if (open) finish(curve.end_end, curve.end_message);
+  return out;
+}
+
+// The parameter of the conic's point nearest p: the nearest of 256 samples of its range, then
+// Gauss-Newton on (k(t) - p) . k'(t) = 0.
+double conic_parameter(const Conic& k, const Vec3& p) {
+  double best = k.range.lo, dmin = std::numeric_limits<double>::infinity();
+  for (int i = 0; i <= 256; ++i) {
+    const double t = k.range.lo + k.range.width() * i / 256;
+    const double d = (k.point(t) - p).norm();
+    if (d < dmin) {
+      dmin = d;
+      best = t;
+    }
+  }
+  for (int it = 0; it < 50; ++it) {
+    const Vec3 d = k.derivative(best);
+    if (!(d.squaredNorm() > 0)) break;
+    const double step = (k.point(best) - p).dot(d) / d.squaredNorm();
+    best -= step;
+    if (std::abs(step) <= 1e-16 * (1 + std::abs(best))) break;
+  }
+  return best;
+}
+
+// The conic of a piece of its curve: the same conic, its range from the piece's ends in the
+// piece's direction of travel (a periodic conic's range may pass 2 pi).
+Conic conic_piece(const Conic& k, const TracedCurve& piece) {
+  Conic out = k;
+  double t0 = conic_parameter(k, piece.points.front().p), t1 = conic_parameter(k, piece.points.back().p);
+  const bool increasing = k.derivative(t0).dot(piece.points.front().t) >= 0;
+  if (!increasing) std::swap(t0, t1);
+  if (k.periodic())
+    while (t1 <= t0) t1 += 2 * std::numbers::pi;
+  out.range = {std::min(t0, t1), std::max(t0, t1)};
+  return out;
+}
+
+}  // namespace
+
+void clip_to_regions(const std::array<const FaceRegion*, 2>& regions, IntersectionRun* run) {
+  if (!regions[0] && !regions[1]) return;
+  const Problem& P = run->problem;
+  const Clipper c{P, regions, CorrectorOptions{run->spec.options.trace.tolerance, 20}, std::max(1.0, P.scale())};
+  std::vector<TracedCurve> kept;
+  std::vector<Conic> conics;
+  std::vector<std::vector<int>> new_index(run->result.curves.size());
+  for (std::size_t i = 0; i < run->result.curves.size(); ++i) {
+    for (TracedCurve& piece : pieces(c, run->result.curves[i])) {
+      new_index[i].push_back(static_cast<int>(kept.size()));
+      if (i < run->conics.size()) {
+        conics.push_back(conic_piece(run->conics[i], piece));
+        piece.length = conic_length(conics.back());  // exact, as the closed form's own pieces
+      }
+      kept.push_back(std::move(piece));
+    }
+  }
+  run->result.curves = std::move(kept);
+  if (!run->conics.empty()) run->conics = std::move(conics);
+  // Singular and isolated points: kept inside the regions, curve indices renumbered (a curve
+  // cut into pieces is listed by each piece).
+  auto inside = [&](const SingularPointReport& s) { return phi(c, s.x).value >= -1e-9 * c.scale; };
+  for (auto* list : {&run->result.singular_points, &run->result.isolated_points}) {
+    std::vector<SingularPointReport> keep;
+    for (SingularPointReport& s : *list) {
+      if (!inside(s)) continue;
+      std::vector<int> curves;  // the pieces of its curves that pass it
+      for (int old : s.curves)
+        if (old >= 0 && static_cast<std::size_t>(old) < new_index.size())
+          for (int k : new_index[static_cast<std::size_t>(old)])
+            for (const CurvePoint& q : run->result.curves[static_cast<std::size_t>(k)].points)
+              if ((q.p - s.p).norm() <= 1e-9 * c.scale) {
+                curves.push_back(k);
+                break;
+              }
+      s.curves = curves;
+      keep.push_back(std::move(s));
+    }
+    *list = std::move(keep);
+  }
+}
+
+}  // namespace ssimarch

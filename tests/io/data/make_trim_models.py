@@ -1,0 +1,72 @@
+import math
+class W:
+    def __init__(s): s.lines=[]; s.n=0
+    def add(s, text):
+        s.n+=1; s.lines.append(f"#{s.n}={text};"); return s.n
+    def pt(s,p): return s.add("CARTESIAN_POINT('',(%s))"%",".join(repr(float(x)) for x in p))
+    def dir(s,d): return s.add("DIRECTION('',(%s))"%",".join(repr(float(x)) for x in d))
+    def place(s,o,z,x): return s.add(f"AXIS2_PLACEMENT_3D('',#{s.pt(o)},#{s.dir(z)},#{s.dir(x)})")
+    def vertex(s,p): return s.add(f"VERTEX_POINT('',#{s.pt(p)})")
+    def line_edge(s,va,vb,pa,pb):
+        d=[b-a for a,b in zip(pa,pb)]; L=math.sqrt(sum(x*x for x in d)); u=[x/L for x in d]
+        vec=s.add("VECTOR('',#%d,%r)"%(s.dir(u),L))
+        ln=s.add(f"LINE('',#{s.pt(pa)},#{vec})")
+        return s.add(f"EDGE_CURVE('',#{va},#{vb},#{ln},.T.)")
+    def circle_edge(s,va,vb,o,z,x,r,same=True):
+        c=s.add(f"CIRCLE('',#{s.place(o,z,x)},{float(r)!r})")
+        return s.add(f"EDGE_CURVE('',#{va},#{vb},#{c},{'.T.' if same else '.F.'})")
+    def loop(s,edges,outer=True,orient=True):
+        oe=[s.add(f"ORIENTED_EDGE('',*,*,#{e},{'.T.' if o else '.F.'})") for e,o in edges]
+        lp=s.add("EDGE_LOOP('',(%s))"%",".join(f"#{i}" for i in oe))
+        return s.add(f"{'FACE_OUTER_BOUND' if outer else 'FACE_BOUND'}('',#{lp},{'.T.' if orient else '.F.'})")
+    def face(s,name,bounds,surf,same=True):
+        return s.add(f"ADVANCED_FACE('{name}',(%s),#{surf},{'.T.' if same else '.F.'})"%",".join(f"#{b}" for b in bounds))
+    def text(s,desc):
+        return ("ISO-10303-21;\nHEADER;\n/* "+desc+" */\nFILE_DESCRIPTION(('ssimarch trimming-loop test'),'2;1');\n"
+          "FILE_NAME('t','2026-12-02T08:30:00',('ssimarch tests'),(''),'tests/io/data generator','ssimarch','');\n"
+          "FILE_SCHEMA(('AUTOMOTIVE_DESIGN { 1 0 10303 214 1 1 1 1 }'));\nENDSEC;\nDATA;\n"+"\n".join(s.lines)+"\nENDSEC;\nEND-ISO-10303-21;\n")
+
+def square(w, o, e0, e1, h):
+    pts=[[o[k]+a*h*e0[k]+b*h*e1[k] for k in range(3)] for a,b in [(-1,-1),(1,-1),(1,1),(-1,1)]]
+    vs=[w.vertex(p) for p in pts]
+    return [(w.line_edge(vs[i],vs[(i+1)%4],pts[i],pts[(i+1)%4]),True) for i in range(4)]
+
+def cyl_full(w, o, axis, ref, r, length):
+    # a whole cylinder face between two rims (seam line used twice)
+    top=[o[k]+length*axis[k] for k in range(3)]
+    p0=[o[k]+r*ref[k] for k in range(3)]; p1=[top[k]+r*ref[k] for k in range(3)]
+    v0=w.vertex(p0); v1=w.vertex(p1)
+    rim0=w.circle_edge(v0,v0,o,axis,ref,r); rim1=w.circle_edge(v1,v1,top,axis,ref,r)
+    seam=w.line_edge(v0,v1,p0,p1)
+    b=w.loop([(rim0,True),(seam,True),(rim1,False),(seam,False)])
+    surf=w.add(f"CYLINDRICAL_SURFACE('',#{w.place(o,axis,ref)},{float(r)!r})")
+    return w.face('cylinder',[b],surf)
+
+# 1. plate with a hole, and a cylinder across it
+w=W()
+sq=square(w,[0,0,0],[1,0,0],[0,1,0],3.0)
+outer=w.loop(sq)
+v5=w.vertex([1,0,0]); hole=w.circle_edge(v5,v5,[0,0,0],[0,0,1],[1,0,0],1.0)
+inner=w.loop([(hole,False)],outer=False)
+plane=w.add(f"PLANE('',#{w.place([0,0,0],[0,0,1],[1,0,0])})")
+w.face('plate',[outer,inner],plane)
+cyl_full(w,[-2.5,0,0.3],[1,0,0],[0,0,-1],0.5,5.0)
+open('plate_with_hole.step','w').write(w.text("A square plate z = 0, |x|, |y| <= 3, with a hole of radius 1 at the origin (face 1), and a whole cylinder face y^2 + (z - 0.3)^2 = 0.25, -2.5 <= x <= 2.5 (face 2)."))
+
+# 2. half cylinder (y >= 0) and an inclined plane
+w=W()
+a0=w.vertex([1,0,0]); a1=w.vertex([-1,0,0]); b0=w.vertex([1,0,2]); b1=w.vertex([-1,0,2])
+bottom=w.circle_edge(a0,a1,[0,0,0],[0,0,1],[1,0,0],1.0,True)
+top=w.circle_edge(b1,b0,[0,0,2],[0,0,1],[1,0,0],1.0,False)
+left=w.line_edge(a1,b1,[-1,0,0],[-1,0,2]); right=w.line_edge(b0,a0,[1,0,2],[1,0,0])
+b=w.loop([(bottom,True),(left,True),(top,True),(right,True)])
+surf=w.add(f"CYLINDRICAL_SURFACE('',#{w.place([0,0,0],[0,0,1],[1,0,0])},1.0)")
+w.face('half cylinder',[b],surf)
+n=[-0.3,0,1]; L=math.sqrt(sum(x*x for x in n)); n=[x/L for x in n]
+e0=[1,0,0.3]; L=math.sqrt(sum(x*x for x in e0)); e0=[x/L for x in e0]
+e1=[n[1]*e0[2]-n[2]*e0[1], n[2]*e0[0]-n[0]*e0[2], n[0]*e0[1]-n[1]*e0[0]]
+sq=square(w,[0,0,1],e0,e1,3.0)
+outer=w.loop(sq)
+plane=w.add(f"PLANE('',#{w.place([0,0,1],n,e0)})")
+w.face('inclined plane',[outer],plane)
+open('half_cylinder_cut.step','w').write(w.text("Half of the cylinder x^2 + y^2 = 1, y >= 0, 0 <= z <= 2 (face 1: two half circles, two lines), and the plane z = 1 + 0.3 x (face 2, a square of side 6)."))

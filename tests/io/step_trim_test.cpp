@@ -1,0 +1,131 @@
+// Trimming loops of STEP faces (docs/cad.md, "Trimming loops"): curves traced between faces are
+// cut to the faces' outer and inner loops, each piece ending exactly on the boundary it
+// crosses. Models: tests/io/data/plate_with_hole.step and half_cylinder_cut.step (written by
+// tests/io/data/make_trim_models.py); references are closed forms.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "ssimarch/io/scene.hpp"
+#include "ssimarch/io/step_reader.hpp"
+#include "ssimarch/pipeline/trace_job.hpp"
+
+namespace ssimarch {
+namespace {
+
+const std::string kData = std::string(SSIMARCH_SOURCE_DIR) + "/tests/io/data/";
+
+Scene faces_scene(const std::string& file, const std::string& options = "{}") {
+  return parse_scene(R"({"surfaces": {"a": {"step": ")" + file + R"(", "face": 1}, "b": {"step": ")" + file +
+                         R"(", "face": 2}}, "intersections": [{"name": "ab", "surfaces": ["a", "b"], "options": )" + options +
+                         "}]}",
+                     "trim.json", kData);
+}
+
+// Arc length of t -> c(t) on [a, b] by composite Gauss-Legendre (5 points, n panels).
+template <class C>
+double quadrature_length(C c, double a, double b, int n = 2000) {
+  static const double x[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831, 0.9061798459386640};
+  static const double w[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665, 0.2369268850561891};
+  double sum = 0;
+  const double h = (b - a) / n;
+  for (int i = 0; i < n; ++i)
+    for (int k = 0; k < 5; ++k) {
+      const double t = a + h * (i + 0.5 + 0.5 * x[k]), e = 1e-6;
+      sum += 0.5 * h * w[k] * (c(t + e) - c(t - e)).norm() / (2 * e);
+    }
+  return sum;
+}
+
+// The plate z = 0 (|x|, |y| <= 3) with a hole of radius 1, cut by the whole cylinder
+// y^2 + (z - 0.3)^2 = 0.25, |x| <= 2.5: the lines y = +-0.4, z = 0 without |x| < sqrt(0.84).
+TEST(StepTrim, PlateWithAHoleCutByACylinder) {
+  for (const char* options : {R"({"closed_form": true})", R"({"closed_form": false})"}) {
+    SCOPED_TRACE(options);
+    const Scene s = faces_scene("plate_with_hole.step", options);
+    ASSERT_EQ(s.regions.size(), 2u);
+    const IntersectionRun r = run_intersection(s, s.intersections[0]);
+    ASSERT_EQ(r.result.curves.size(), 4u);
+    const double inner = std::sqrt(0.84), piece = 2.5 - inner;
+    int on_hole = 0;
+    for (const TracedCurve& c : r.result.curves) {
+      EXPECT_FALSE(c.closed);
+      EXPECT_EQ(c.start_end, Termination::kLeftDomain);
+      EXPECT_EQ(c.end_end, Termination::kLeftDomain);
+      EXPECT_NEAR(c.length, piece, 1e-9);
+      for (const CurvePoint* p : {&c.points.front(), &c.points.back()}) {
+        EXPECT_NEAR(std::abs(p->p.y()), 0.4, 1e-12);
+        EXPECT_NEAR(p->p.z(), 0.0, 1e-12);
+        const double x = std::abs(p->p.x());
+        if (x < 2) {  // the end on the hole: exactly on its circle
+          ++on_hole;
+          EXPECT_NEAR(std::hypot(p->p.x(), p->p.y()), 1.0, 1e-12);
+        } else {
+          EXPECT_NEAR(x, 2.5, 1e-12);  // the cylinder's rim
+        }
+      }
+      for (const CurvePoint& p : c.points) EXPECT_GE(std::hypot(p.p.x(), p.p.y()), 1.0 - 1e-12);
+    }
+    EXPECT_EQ(on_hole, 4);
+    EXPECT_TRUE(run_complete(r)) << (r.network.failures.empty() ? "" : r.network.failures[0].message);
+    if (!r.conics.empty()) {  // the closed form's lines, cut to the same pieces
+      ASSERT_EQ(r.conics.size(), 4u);
+      for (const Conic& k : r.conics) EXPECT_NEAR(k.range.width() * k.derivative(k.range.lo).norm(), piece, 1e-9);
+    }
+  }
+}
+
+// Half of the cylinder x^2 + y^2 = 1 (y >= 0, 0 <= z <= 2) cut by the plane z = 1 + 0.3 x: the
+// half of the ellipse (cos t, sin t, 1 + 0.3 cos t), t in [0, pi], from (1, 0, 1.3) to (-1, 0, 0.7).
+TEST(StepTrim, TrimmedCylinderFaceKeepsHalfTheEllipse) {
+  for (const char* options : {R"({"closed_form": true})", R"({"closed_form": false})"}) {
+    SCOPED_TRACE(options);
+    const Scene s = faces_scene("half_cylinder_cut.step", options);
+    const IntersectionRun r = run_intersection(s, s.intersections[0]);
+    ASSERT_EQ(r.result.curves.size(), 1u);
+    const TracedCurve& c = r.result.curves[0];
+    EXPECT_FALSE(c.closed);
+    const double exact = quadrature_length([](double t) { return Vec3(std::cos(t), std::sin(t), 1 + 0.3 * std::cos(t)); },
+                                           0.0, std::numbers::pi);
+    EXPECT_NEAR(c.length, exact, 1e-8);
+    for (const CurvePoint* p : {&c.points.front(), &c.points.back()}) {
+      EXPECT_NEAR(p->p.y(), 0.0, 1e-12);
+      EXPECT_NEAR(std::abs(p->p.x()), 1.0, 1e-12);
+      EXPECT_NEAR(p->p.z(), 1 + 0.3 * p->p.x(), 1e-12);
+    }
+    for (const CurvePoint& p : c.points) EXPECT_GE(p.p.y(), -1e-12);
+    EXPECT_TRUE(run_complete(r));
+  }
+}
+
+// The region's side: inside the plate and outside its hole, by the sign of the distance to the
+// nearest edge, and the nearest point exact on lines and circles.
+TEST(StepTrim, RegionSideOfThePlate) {
+  const StepModel m = StepModel::read(kData + "plate_with_hole.step");
+  const auto region = m.face_region(m.faces()[0].entity);
+  ASSERT_TRUE(region);
+  const Vec3 up(0, 0, 1);
+  struct Case {
+    Vec3 p;
+    double distance;
+    Vec3 nearest;
+  };
+  for (const Case& k : {Case{{2, 0.5, 0}, 1.0, {3, 0.5, 0}}, Case{{0.5, 0, 0}, -0.5, {1, 0, 0}},
+                        Case{{0, -1.5, 0}, 0.5, {0, -1, 0}}, Case{{3.5, 1, 0}, -0.5, {3, 1, 0}},
+                        Case{{0.6, 0.8, 0}, 0.0, {0.6, 0.8, 0}}}) {
+    const FaceRegion::Side side = region->side(k.p, up);
+    EXPECT_NEAR(side.signed_distance, k.distance, 1e-14) << k.p.transpose();
+    EXPECT_NEAR((side.nearest - k.nearest).norm(), 0.0, 1e-14) << k.p.transpose();
+  }
+  // The cylinder's rims bound it; its seam (one edge used both ways) does not.
+  const auto cylinder = m.face_region(m.faces()[1].entity);
+  ASSERT_TRUE(cylinder);
+  const Vec3 on_seam(0, 0, -0.2), out(0, 0, -1);
+  EXPECT_NEAR(cylinder->side(on_seam, out).signed_distance, 2.5, 1e-14);
+  EXPECT_NEAR(cylinder->side(Vec3(3, 0, -0.2), out).signed_distance, -0.5, 1e-14);
+}
+
+}  // namespace
+}  // namespace ssimarch
