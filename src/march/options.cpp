@@ -1,9 +1,7 @@
 #include "ssimarch/march/options.hpp"
 
-#include <cmath>
-
+#include "ssimarch/march/option_ranges.hpp"
 #include "ssimarch/march/result.hpp"
-#include "ssimarch/problem/curve_jet.hpp"
 
 namespace ssimarch {
 
@@ -85,23 +83,14 @@ bool TraceOptions::is_valid(std::string* error) const {
     if (error) *error = m;
     return false;
   };
-  if (!(step_length >= 0) || !std::isfinite(step_length)) return fail("step_length must be a finite number >= 0 (0 = automatic)");
-  if (!(min_step >= 0) || !std::isfinite(min_step)) return fail("min_step must be a finite number >= 0 (0 = automatic)");
+  // Every numeric field by its range (march/option_ranges.cpp, the one statement of them), then
+  // the rules between fields.
+  for (const TraceOptionRange& r : trace_option_ranges()) {
+    const std::string why = r.range.check(r.get(*this), r.integer);
+    if (!why.empty()) return fail(std::string(r.key) + " " + why);
+  }
   if (step_length > 0 && min_step > step_length) return fail("min_step must not exceed step_length");
-  if (!(min_step_length >= 0) || !std::isfinite(min_step_length)) return fail("min_step_length must be a finite number >= 0 (0 = automatic)");
   if (step_length > 0 && min_step_length > step_length) return fail("min_step_length must not exceed step_length");
-  if (!(deviation >= 0) || !std::isfinite(deviation)) return fail("deviation must be a finite number >= 0 (0 = automatic)");
-  if (!(turn_angle > 0 && turn_angle <= 1.5)) return fail("turn_angle must be in (0, 1.5] radians");
-  if (taylor_order < 1 || taylor_order > kMaxCurveJetOrder) return fail("taylor_order must be between 1 and " + std::to_string(kMaxCurveJetOrder));
-  if (!(tolerance > 0) || !std::isfinite(tolerance)) return fail("tolerance must be a finite number > 0");
-  if (tolerance < 1e-15) return fail("tolerance below 1e-15 cannot be reached in double precision");
-  if (max_corrector_iterations < 1 || max_corrector_iterations > 1000) return fail("max_corrector_iterations must be between 1 and 1000");
-  if (!(max_turn_angle > 0 && max_turn_angle <= 3.14159)) return fail("max_turn_angle must be in (0, pi) radians");
-  if (!(max_correction_ratio > 0) || !std::isfinite(max_correction_ratio)) return fail("max_correction_ratio must be a finite number > 0");
-  if (max_points < 2) return fail("max_points must be at least 2");
-  if (!(max_length > 0)) return fail("max_length must be > 0");
-  if (start_samples < 2 || start_samples > 200) return fail("start_samples must be between 2 and 200");
-  if (start_box_budget < 1) return fail("start_box_budget must be at least 1");
   return true;
 }
 

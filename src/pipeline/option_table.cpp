@@ -2,52 +2,18 @@
 // field it sets. Meanings and defaults: docs/marching.md (the strategies), docs/geometry.md.
 #include "ssimarch/pipeline/option_table.hpp"
 
-#include <charconv>
-#include <cmath>
 #include <functional>
-#include <limits>
 
 #include "ssimarch/core/error.hpp"
-#include "ssimarch/problem/curve_jet.hpp"
+#include "ssimarch/march/option_ranges.hpp"
 
 namespace ssimarch {
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
 std::string join(const std::vector<std::string>& names) {
   std::string s;
   for (const auto& x : names) s += (s.empty() ? "" : ", ") + x;
-  return s;
-}
-
-// Admissible numbers: lo <(=) x <(=) hi, or 0 where 0 asks for the automatic value.
-struct Range {
-  double lo = 0, hi = kInf;
-  bool lo_open = false, hi_open = false;
-  bool zero_is_automatic = false;
-  std::string_view why;  // appended to the rule, e.g. why a bound exists
-  bool infinity_is_unbounded = false;  // the default +inf means "no bound" (a file cannot write inf)
-
-  bool admits(double x) const {
-    if (zero_is_automatic && x == 0) return true;
-    return (lo_open ? x > lo : x >= lo) && (hi_open ? x < hi : x <= hi);
-  }
-};
-
-std::string shortest(double x) {
-  char buf[32];
-  auto r = std::to_chars(buf, buf + sizeof buf, x);
-  return std::string(buf, r.ptr);
-}
-
-std::string range_rule(const Range& r, bool integer) {
-  std::string s = integer ? "an integer" : "a finite number";
-  if (r.hi == kInf) s += (r.lo_open ? " > " : " >= ") + shortest(r.lo);
-  else s += std::string(" in ") + (r.lo_open ? "(" : "[") + shortest(r.lo) + ", " + shortest(r.hi) + (r.hi_open ? ")" : "]");
-  if (r.zero_is_automatic) s += " (0 = automatic)";
-  if (!r.why.empty()) s += "; " + std::string(r.why);
   return s;
 }
 
@@ -68,22 +34,22 @@ using Getter = std::function<std::string(const TraceJobOptions&)>;
 
 struct Row {
   TraceOptionSpec spec;
-  Range range;
+  OptionRange range;
   Setter set_number;
   ChoiceSetter set_choice;
   Getter get;
   std::function<double(const TraceJobOptions&)> number;  // kReal, kInteger: the value as a double
 };
 
-template <class T>
-Row number_row(TraceOptionSpec spec, Range range, T TraceOptions::*field) {
-  const bool integer = std::is_integral_v<T>;
-  spec.type = integer ? TraceOptionSpec::Type::kInteger : TraceOptionSpec::Type::kReal;
-  spec.rule = range_rule(range, integer);
-  return Row{std::move(spec), range,
-             [field](TraceJobOptions* o, double x) { o->trace.*field = static_cast<T>(x); }, {},
-             [field](const TraceJobOptions& o) { return shortest(static_cast<double>(o.trace.*field)); },
-             [field](const TraceJobOptions& o) { return static_cast<double>(o.trace.*field); }};
+// A number of the marching: its range is the one TraceOptions::is_valid checks (march/option_ranges.hpp).
+Row number_row(TraceOptionSpec spec) {
+  const TraceOptionRange* field = find_trace_option_range(spec.key);
+  if (!field) throw std::logic_error("trace option \"" + std::string(spec.key) + "\" has no range in march/option_ranges.cpp");
+  spec.type = field->integer ? TraceOptionSpec::Type::kInteger : TraceOptionSpec::Type::kReal;
+  spec.rule = field->range.rule(field->integer);
+  return Row{std::move(spec), field->range, [field](TraceJobOptions* o, double x) { field->set(o->trace, x); }, {},
+             [field](const TraceJobOptions& o) { return shortest_number(field->get(o.trace)); },
+             [field](const TraceJobOptions& o) { return field->get(o.trace); }};
 }
 
 template <class E>
@@ -158,11 +124,12 @@ Row bspline_tolerance_row() {
   TraceOptionSpec spec = describe("bspline_tolerance", "model length", "0 = 1e-9 extent",
                                   "the B-spline and each p-curve's image stay within this of the true curve; pieces "
                                   "whose measured distance exceeds it are halved at an exact curve point");
-  const Range range{0, kInf, false, false, true, {}};
+  OptionRange range;
+  range.zero_is_automatic = true;
   spec.type = TraceOptionSpec::Type::kReal;
-  spec.rule = range_rule(range, false);
+  spec.rule = range.rule(false);
   return Row{std::move(spec), range, [](TraceJobOptions* o, double x) { o->spline.tolerance = x; }, {},
-             [](const TraceJobOptions& o) { return shortest(o.spline.tolerance); },
+             [](const TraceJobOptions& o) { return shortest_number(o.spline.tolerance); },
              [](const TraceJobOptions& o) { return o.spline.tolerance; }};
 }
 
@@ -170,7 +137,6 @@ std::vector<Row> make_rows() {
   using P = PredictorKind;
   using C = CorrectorKind;
   using S = StepRule;
-  const Range auto_length{0, kInf, false, false, true, {}};
   std::vector<Row> rows;
   rows.push_back(choice_row<P>(describe("predictor", "", "`taylor`", "where the next point is guessed (docs/marching.md)", "predictor"),
                                {P::kTangent, P::kCircle, P::kCircleWuAndrade, P::kParabola, P::kPolynomial, P::kHelix, P::kTaylor},
@@ -180,45 +146,27 @@ std::vector<Row> make_rows() {
   rows.push_back(choice_row<S>(describe("step", "", "`chordal`", "step rule", "step rule"),
                                {S::kConstant, S::kAngular, S::kDeviation, S::kOrder3, S::kChordal}, &TraceOptions::step));
   rows.push_back(number_row(describe("step_length", "model length", "0 = automatic", "the constant rule's step L; the adaptive rules' largest step. Automatic: extent/100 (constant), "
-                              "extent/10 (adaptive), extent = diagonal of the problem's region"),
-                            auto_length, &TraceOptions::step_length));
-  rows.push_back(number_row(describe("min_step_length", "model length", "0 = 1e-3 step_length", "smallest step an adaptive rule proposes"),
-                            auto_length, &TraceOptions::min_step_length));
-  rows.push_back(number_row(describe("deviation", "model length", "0 = 1e-4 extent", "chordal deviation delta: the `chordal` rule keeps each chord's midpoint within delta of the curve"),
-                            auto_length, &TraceOptions::deviation));
-  rows.push_back(number_row(describe("turn_angle", "radians", "0.1", "the `angular` rule's tangent turn per step"),
-                            Range{0, 1.5, true, false, false, {}}, &TraceOptions::turn_angle));
-  rows.push_back(number_row(describe("min_step", "model length", "0 = 1e-7 step_length", "below this the tracer stops at the point and reports why"),
-                            auto_length, &TraceOptions::min_step));
-  rows.push_back(number_row(describe("taylor_order", "", "4", "order of the `taylor` predictor"),
-                            Range{1, static_cast<double>(kMaxCurveJetOrder), false, false, false, "the orders of the curve jet"},
-                            &TraceOptions::taylor_order));
-  rows.push_back(number_row(describe("tolerance", "model length", "1e-12", "a point is accepted when its distance from both surfaces is at most this"),
-                            Range{1e-15, kInf, false, false, false, "smaller cannot be reached in double precision"},
-                            &TraceOptions::tolerance));
-  rows.push_back(number_row(describe("max_corrector_iterations", "", "12", "Newton updates per point"),
-                            Range{1, 1000, false, false, false, {}}, &TraceOptions::max_corrector_iterations));
-  rows.push_back(number_row(describe("max_turn_angle", "radians", "0.6", "a step turning the tangent by more is rejected and retried shorter (branch-jump guard)"),
-                            Range{0, 3.14159, true, false, false, "below pi"}, &TraceOptions::max_turn_angle));
-  rows.push_back(number_row(describe("max_correction_ratio", "", "0.5", "a step whose corrected point is farther than this times the step from the prediction is rejected"),
-                            Range{0, kInf, true, false, false, {}}, &TraceOptions::max_correction_ratio));
-  rows.push_back(number_row(describe("max_points", "", "200000", "per curve"),
-                            Range{2, 1e15, false, false, false, {}}, &TraceOptions::max_points));
-  rows.push_back(number_row(describe("max_length", "model length", "unbounded", "per curve"),
-                            Range{0, kInf, true, false, false, {}, true}, &TraceOptions::max_length));
+                              "extent/10 (adaptive), extent = diagonal of the problem's region")));
+  rows.push_back(number_row(describe("min_step_length", "model length", "0 = 1e-3 step_length", "smallest step an adaptive rule proposes")));
+  rows.push_back(number_row(describe("deviation", "model length", "0 = 1e-4 extent", "chordal deviation delta: the `chordal` rule keeps each chord's midpoint within delta of the curve")));
+  rows.push_back(number_row(describe("turn_angle", "radians", "0.1", "the `angular` rule's tangent turn per step")));
+  rows.push_back(number_row(describe("min_step", "model length", "0 = 1e-7 step_length", "below this the tracer stops at the point and reports why")));
+  rows.push_back(number_row(describe("taylor_order", "", "4", "order of the `taylor` predictor")));
+  rows.push_back(number_row(describe("tolerance", "model length", "1e-12", "a point is accepted when its distance from both surfaces is at most this")));
+  rows.push_back(number_row(describe("max_corrector_iterations", "", "12", "Newton updates per point")));
+  rows.push_back(number_row(describe("max_turn_angle", "radians", "0.6", "a step turning the tangent by more is rejected and retried shorter (branch-jump guard)")));
+  rows.push_back(number_row(describe("max_correction_ratio", "", "0.5", "a step whose corrected point is farther than this times the step from the prediction is rejected")));
+  rows.push_back(number_row(describe("max_points", "", "200000", "per curve")));
+  rows.push_back(number_row(describe("max_length", "model length", "unbounded", "per curve")));
   rows.push_back(number_row(describe("start_samples", "", "24", "samples per parameter direction (per axis, at most 16, for implicit pairs) when searching "
-                              "start points by sampling; cost: n^2 corrector runs (n^3 for implicit pairs)"),
-                            Range{2, 200, false, false, false,
-                                  "each of the n^2 corrector runs costs up to about 0.3 ms (200: about 12 s; docs/reliability.md)"},
-                            &TraceOptions::start_samples));
+                              "start points by sampling; cost: n^2 corrector runs (n^3 for implicit pairs)")));
   rows.push_back(flag_row(describe("certified_start_points", "", "true",
                                    "find start points by the certified interval search (docs/topology.md); false: by sampling",
                                    "yes/no"),
                           &TraceOptions::certified_start_points));
   rows.push_back(number_row(describe("start_box_budget", "", "5000",
                                      "boxes the certified search examines per square system before it reports the rest "
-                                     "as `uncertain_regions`"),
-                            Range{1, 1e9, false, false, false, {}}, &TraceOptions::start_box_budget));
+                                     "as `uncertain_regions`")));
   rows.push_back(job_flag_row(describe("closed_form", "", "true",
                                        "answer pairs of primitives with an exact intersection (a plane and a quadric, "
                                        "coaxial surfaces of revolution, two spheres, a cylinder or cone and a quadric) in "
@@ -254,14 +202,8 @@ double number_of(const OptionValue& value, const Constants& constants, const std
 }
 
 void check_number(const Row& row, double x, const std::string& where) {
-  const bool integer = row.spec.type == TraceOptionSpec::Type::kInteger;
-  if (row.range.infinity_is_unbounded && x == kInf) return;
-  if (!std::isfinite(x)) throw InputError(where, "must be " + row.spec.rule + ", got a value that is not finite");
-  if (x != 0 && std::fabs(x) < std::numeric_limits<double>::min())
-    throw InputError(where, "must be " + row.spec.rule + ", got the subnormal " + shortest(x) +
-                                " (below 2.2e-308 double precision loses digits)");
-  if (integer && x != std::floor(x)) throw InputError(where, "must be " + row.spec.rule + ", got " + shortest(x));
-  if (!row.range.admits(x)) throw InputError(where, "must be " + row.spec.rule + ", got " + shortest(x));
+  const std::string why = row.range.check(x, row.spec.type == TraceOptionSpec::Type::kInteger);
+  if (!why.empty()) throw InputError(where, why);
 }
 
 }  // namespace

@@ -5,12 +5,14 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <limits>
 #include <sstream>
 
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/io/scene.hpp"
+#include "ssimarch/march/option_ranges.hpp"
 
 namespace ssimarch {
 namespace {
@@ -157,6 +159,52 @@ TEST(OptionTable, FlagsAndKeysAreOneToOne) {
   EXPECT_EQ(option_value_text(*find_trace_option("predictor"), defaults), "taylor");
   EXPECT_EQ(option_value_text(*find_trace_option("tolerance"), defaults), "1e-12");
   EXPECT_EQ(option_value_text(*find_trace_option("geometry"), defaults), "none");
+}
+
+// One statement of the ranges (march/option_ranges.hpp): the table's rule of every numeric field
+// of TraceOptions is the one TraceOptions::is_valid checks, and both reject the same values.
+TEST(OptionTable, TheTableAndTraceOptionsCheckOneRangePerField) {
+  std::size_t numeric_rows = 0;
+  for (const TraceOptionSpec& spec : trace_option_table()) {
+    if (spec.type == TraceOptionSpec::Type::kChoice) continue;
+    ++numeric_rows;
+    const TraceOptionRange* field = find_trace_option_range(spec.key);
+    if (spec.key == "bspline_tolerance") {  // a job option (the spline), not a field of the marching
+      EXPECT_EQ(field, nullptr);
+      continue;
+    }
+    ASSERT_NE(field, nullptr) << spec.key;
+    EXPECT_EQ(spec.rule, field->range.rule(field->integer)) << spec.key;
+  }
+  EXPECT_EQ(numeric_rows, trace_option_ranges().size() + 1);
+  // A value each rule rejects, set in code: is_valid names the field and says the table's rule.
+  const std::pair<const char*, double> bad[] = {{"step_length", -1},        {"step_length", 1e-320},
+                                                {"min_step_length", -0.5},  {"deviation", std::nan("")},
+                                                {"turn_angle", 2},          {"min_step", -1e-9},
+                                                {"taylor_order", 9},        {"tolerance", 1e-16},
+                                                {"max_corrector_iterations", 0}, {"max_turn_angle", 4},
+                                                {"max_correction_ratio", 0}, {"max_points", 1},
+                                                {"max_length", 0},          {"start_samples", 201},
+                                                {"start_box_budget", 0}};
+  std::size_t checked = 0;
+  for (const TraceOptionRange& field : trace_option_ranges()) {
+    TraceOptions o;
+    std::string error;
+    ASSERT_TRUE(o.is_valid(&error)) << error;
+    for (const auto& [key, value] : bad) {
+      if (field.key != key) continue;
+      ++checked;
+      field.set(o, value);
+      ASSERT_FALSE(o.is_valid(&error)) << key << " = " << value;
+      EXPECT_THAT(error, HasSubstr(std::string(key) + " must be " + find_trace_option(key)->rule)) << key;
+      o = TraceOptions{};
+    }
+  }
+  EXPECT_EQ(checked, std::size(bad));
+  TraceOptions o;
+  o.max_length = std::numeric_limits<double>::infinity();  // the default: no bound
+  std::string error;
+  EXPECT_TRUE(o.is_valid(&error)) << error;
 }
 
 // docs/scene-format.md's option list is the table's own (regenerate it with
