@@ -136,7 +136,9 @@ TEST(Puiseux, BranchesOfContactOrderThreeAndFourStayApart) {
 // on it, never on its twin).
 TEST(Puiseux, HalfBranchesOfTouchingBranchesAreDistinctAndPairedByBranch) {
   for (const int k : {3, 4}) {
-    const std::string f = "(v-u^2-u^" + std::to_string(k) + ")*(v-u^2+u^" + std::to_string(k) + ")";
+    // (append, not a literal + to_string: GCC 12's -Wrestrict false positive, PR 105329)
+    const std::string K = std::to_string(k);
+    const std::string f = std::string("(v-u^2-u^").append(K).append(")*(v-u^2+u^").append(K).append(")");
     const Problem P = testing::graph_vs_plane_pi(f);
     VecX x(2);
     x << 0, 0;
