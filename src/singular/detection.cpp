@@ -7,6 +7,7 @@
 
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/problem/closest_point.hpp"
+#include "ssimarch/problem/poles_and_trims.hpp"
 
 namespace ssimarch {
 
@@ -131,6 +132,23 @@ std::vector<SingularLocation> hunt_singular_points(const Problem& problem, const
       found.push_back(s);
       if (options.on_found) options.on_found(s);
     }
+  }
+  return found;
+}
+
+std::vector<SingularLocation> singular_points_at_poles(const Problem& problem, const LocateOptions& options) {
+  std::vector<SingularLocation> found;
+  const double tol = 1e-9 * std::max(1.0, problem.scale());
+  for (const Pole& pole : problem_poles(problem)) {
+    std::optional<VecX> x = unknowns_near(problem, pole.point);
+    if (!x) continue;
+    (*x)[pole.unknown] = pole.value;  // on the edge itself
+    if (!(problem.linearize(*x).distance <= tol)) continue;  // the pole is not on the other surface
+    const SingularLocation s = locate_singular_point(problem, *x, options);
+    if (s.status != LocateStatus::kConverged || !problem.inside(s.x, 1e-9)) continue;
+    bool known = false;
+    for (const auto& f : found) known = known || (f.point - s.point).norm() <= tol;
+    if (!known) found.push_back(s);
   }
   return found;
 }

@@ -3,33 +3,70 @@
 #include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numeric>
 
 #include "ssimarch/problem/curve_jet.hpp"
 
 namespace ssimarch {
 
-std::vector<Vec2> circle_crossings(const LocalJet& h, double r, int samples) {
-  auto value = [&](double a) { return evaluate(h, Vec2(r * std::cos(a), r * std::sin(a))).value; };
-  std::vector<Vec2> out;
-  const double step = 2 * M_PI / samples;
-  double a0 = 0, f0 = value(0);
-  for (int i = 1; i <= samples; ++i) {
-    const double a1 = i * step, f1 = value(a1);
-    if ((f0 < 0 && f1 >= 0) || (f0 >= 0 && f1 < 0)) {
-      double lo = a0, hi = a1, flo = f0;
-      for (int it = 0; it < 60; ++it) {  // bisection to the last bit of the angle
-        const double mid = 0.5 * (lo + hi), fm = value(mid);
-        if ((fm < 0) == (flo < 0))
-          lo = mid, flo = fm;
-        else
-          hi = mid;
-      }
-      const double a = 0.5 * (lo + hi);
-      out.emplace_back(r * std::cos(a), r * std::sin(a));
-    }
-    a0 = a1, f0 = f1;
+namespace {
+
+// The angle in (lo, hi) where h changes sign (bisection to the last bit), h(lo) of sign `below`.
+double bisect_angle(const std::function<double(double)>& value, double lo, double hi, bool below) {
+  for (int it = 0; it < 60; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    if ((value(mid) < 0) == below)
+      lo = mid;
+    else
+      hi = mid;
   }
+  return 0.5 * (lo + hi);
+}
+
+// The angle in [lo, hi] where sigma h is least (golden section): two crossings closer together
+// than the sampling (branches sharing their leading terms, a tacnode of contact order 3 or 4)
+// leave no sign change between samples, only a dip of |h| towards zero there.
+double least_angle(const std::function<double(double)>& value, double lo, double hi, double sigma) {
+  const double g = 0.5 * (std::sqrt(5.0) - 1);
+  double a = hi - g * (hi - lo), b = lo + g * (hi - lo);
+  double fa = sigma * value(a), fb = sigma * value(b);
+  for (int it = 0; it < 80; ++it) {
+    if (fa <= fb)
+      hi = b, b = a, fb = fa, a = hi - g * (hi - lo), fa = sigma * value(a);
+    else
+      lo = a, a = b, fa = fb, b = lo + g * (hi - lo), fb = sigma * value(b);
+  }
+  return fa <= fb ? a : b;
+}
+
+}  // namespace
+
+std::vector<Vec2> circle_crossings(const LocalJet& h, double r, int samples) {
+  const std::function<double(double)> value = [&](double a) { return evaluate(h, Vec2(r * std::cos(a), r * std::sin(a))).value; };
+  const double step = 2 * M_PI / samples;
+  std::vector<double> f(static_cast<std::size_t>(samples) + 1);
+  for (int i = 0; i <= samples; ++i) f[static_cast<std::size_t>(i)] = value(i * step);
+  std::vector<double> angles;
+  auto at = [&](int i) { return f[static_cast<std::size_t>((i % samples + samples) % samples)]; };
+  for (int i = 1; i <= samples; ++i) {
+    const double f0 = at(i - 1), f1 = at(i);
+    if ((f0 < 0 && f1 >= 0) || (f0 >= 0 && f1 < 0)) {
+      angles.push_back(bisect_angle(value, (i - 1) * step, i * step, f0 < 0));
+      continue;
+    }
+    // A dip of |h| at sample i with no sign change on either side: look for a hidden pair.
+    const double fi = at(i), fn = at(i + 1);
+    if (!(std::fabs(fi) < std::fabs(f0) && std::fabs(fi) <= std::fabs(fn)) || (fi < 0) != (fn < 0) || fi == 0) continue;
+    const double sigma = fi > 0 ? 1.0 : -1.0;
+    const double m = least_angle(value, (i - 1) * step, (i + 1) * step, sigma);
+    if (!(sigma * value(m) < 0)) continue;
+    angles.push_back(bisect_angle(value, (i - 1) * step, m, sigma < 0));
+    angles.push_back(bisect_angle(value, m, (i + 1) * step, sigma > 0));
+  }
+  std::sort(angles.begin(), angles.end());
+  std::vector<Vec2> out;
+  for (double a : angles) out.emplace_back(r * std::cos(a), r * std::sin(a));
   return out;
 }
 
@@ -89,9 +126,40 @@ void offset_term(const LocalJet& h, const Vec2& p, const Vec2& normal, const Vec
   b->offset_coefficient = w1 / std::pow(X1, gamma);
 }
 
+// How far half-branch B is from continuing A analytically through the point, from their Puiseux
+// expansions W = sum b_e X^e in their own frames (tangent, rot90(tangent)), weighted by r^e (the
+// size of each term on the circle of radius r). One analytic branch w(x) = sum a_j x^j of the
+// line's frame gives, on opposite sides, b_j^B = (-1)^(j+1) b_j^A (X = -x and the normal turns
+// with the tangent); two halves of a cusp-like branch W = sum b_j tau^j, X = tau^q on the same side
+// are tau -> -tau, b^B = (-1)^j b^A with j = q e. This separates branches that share leading
+// terms (a tacnode whose branches differ first at X^3, a ramphoid cusp's halves at X^(5/2)).
+double continuation_mismatch(const HalfBranch& A, const HalfBranch& B, double r) {
+  const bool same_side = A.tangent.dot(B.tangent) > 0;
+  const int q = std::max(A.expansion.denominator, B.expansion.denominator);
+  auto coefficient = [](const HalfBranch& h, double e) {
+    for (const PuiseuxTerm& t : h.expansion.terms)
+      if (std::fabs(t.exponent - e) <= 1e-9) return t.coefficient;
+    return 0.0;
+  };
+  std::vector<double> exponents;
+  for (const HalfBranch* h : {&A, &B})
+    for (const PuiseuxTerm& t : h->expansion.terms) exponents.push_back(t.exponent);
+  double cost = 0;
+  for (double e : exponents) {
+    const double j = e * q;
+    const bool integral = std::fabs(e - std::round(e)) <= 1e-9;
+    double sign = 0;
+    if (same_side) sign = (std::lround(j) % 2 == 0) ? 1.0 : -1.0;
+    else if (integral) sign = (std::lround(e) % 2 == 0) ? -1.0 : 1.0;
+    else return 1e300;  // a fractional exponent does not continue across the point
+    cost += std::fabs(coefficient(B, e) - sign * coefficient(A, e)) * std::pow(r, e);
+  }
+  return cost;
+}
+
 // Pairs half-branches on each tangent line (see the header): opposite sides by matching offsets,
 // then same-side leftovers (cusp-like branches).
-void pair_half_branches(const Classification& kind, std::vector<HalfBranch>* hb) {
+void pair_half_branches(const Classification& kind, double radius, std::vector<HalfBranch>* hb) {
   int branch = 0;
   auto join = [&](int a, int b) {
     (*hb)[static_cast<std::size_t>(a)].continuation = b;
@@ -105,6 +173,7 @@ void pair_half_branches(const Classification& kind, std::vector<HalfBranch>* hb)
       if ((*hb)[i].line == static_cast<int>(l)) ((*hb)[i].tangent.dot(d) > 0 ? plus : minus).push_back(static_cast<int>(i));
     auto cost = [&](int a, int b) {
       const HalfBranch &A = (*hb)[static_cast<std::size_t>(a)], &B = (*hb)[static_cast<std::size_t>(b)];
+      if (!A.expansion.terms.empty() || !B.expansion.terms.empty()) return continuation_mismatch(A, B, radius);
       const int ga = static_cast<int>(std::lround(A.offset_exponent)), gb = static_cast<int>(std::lround(B.offset_exponent));
       if (ga != gb && A.offset_exponent != 0 && B.offset_exponent != 0) return 1e300;
       const double sign = (ga % 2 == 0) ? 1.0 : -1.0;
@@ -167,13 +236,24 @@ std::vector<HalfBranch> half_branches_at(const Problem& problem, const LocalCurv
     // The expansion in the half-branch's own frame: rot90(tangent) = +-rot90(d).
     const auto [num, den] = exponent_fraction(b.offset_exponent);
     const double leading = (b.tangent.dot(d) > 0 ? 1.0 : -1.0) * b.offset_coefficient;
-    b.expansion = puiseux_expansion(curve.h, b.tangent, leading, num, den);
+    b.leading_coefficient = leading;
+    const Vec2 through(p.dot(b.tangent), p.dot(Vec2(-b.tangent[1], b.tangent[0])));
+    b.expansion = puiseux_expansion(curve.h, b.tangent, leading, num, den, 6, &through);
     b.normal_3d = curve.direction_3d(Vec2(-b.tangent[1], b.tangent[0]));
-    b.param_tangent = dx * b.tangent;
+    if (curve.lifted()) {
+      // A degenerate parametrisation (local_curve.hpp): the half-branch's parameters along it by a
+      // chord, and none where the implicit form's branch leaves the parametric patch (the other
+      // nappe of a cone whose range ends at its apex): its nearest parameters are then far off.
+      const VecX x1 = curve.unknowns_at(p), xh = curve.unknowns_at(0.5 * p);
+      if ((problem.point(x1) - curve.point_at(p)).norm() > 0.5 * r) continue;
+      b.param_tangent = problem.difference(xh, x1) / (0.5 * r);
+    } else {
+      b.param_tangent = dx * b.tangent;
+    }
     exit_point(problem, curve, p, options, &b);
     out.push_back(b);
   }
-  pair_half_branches(kind, &out);
+  pair_half_branches(kind, r, &out);
   return out;
 }
 

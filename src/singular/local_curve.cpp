@@ -1,6 +1,10 @@
 #include "ssimarch/singular/local_curve.hpp"
 
 #include <cmath>
+#include <memory>
+
+#include "ssimarch/problem/closest_point.hpp"
+#include "ssimarch/problem/singular_tolerances.hpp"
 
 namespace ssimarch {
 
@@ -26,6 +30,24 @@ Vec3 implicit_gradient(const Surface& s, const Vec3& p, double* value) {
   return {f.d(0), f.d(1), f.d(2)};
 }
 
+// |Hess f(p)| (Frobenius), the scale of f where its gradient vanishes.
+double implicit_hessian_norm(const Surface& s, const Vec3& p) {
+  using J32 = Jet<3, 2>;
+  const J32 f = s.value(Vec3T<J32>(J32::variable(0, p.x()), J32::variable(1, p.y()), J32::variable(2, p.z())));
+  double n2 = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      J32::MultiIndex a{0, 0, 0};
+      ++a[static_cast<std::size_t>(i)];
+      ++a[static_cast<std::size_t>(j)];
+      n2 += f.derivative(a) * f.derivative(a);
+    }
+  return std::sqrt(n2);
+}
+
+// How far a parametric chart is from degenerate: |F_u x F_v| / (|F_u|^2 + |F_v|^2), in [0, 1/2].
+double chart_condition(const Surface& s, double u, double v);
+
 // Orthonormal tangent frame (e1, e2) with e1 x e2 = n, e1 along `hint` where it is not parallel to n.
 void frame_from_normal(const Vec3& n, const Vec3& hint, Vec3* e1, Vec3* e2) {
   Vec3 a = hint - hint.dot(n) * n;
@@ -36,6 +58,21 @@ void frame_from_normal(const Vec3& n, const Vec3& hint, Vec3* e1, Vec3* e2) {
   }
   *e1 = a.normalized();
   *e2 = n.cross(*e1);
+}
+
+double chart_condition(const Surface& s, double u, double v) {
+  const FirstOrder f = parametric_first_order(s, u, v);
+  const double d = f.du.squaredNorm() + f.dv.squaredNorm();
+  return d > 0 ? f.du.cross(f.dv).norm() / d : 0.0;
+}
+
+// The unit dividing an implicit surface's value into model units over a parametric chart: its
+// gradient's length, floored where the surface is singular (a cone's apex) by
+// kSingularSurfaceGradientRatio times |Hess g| and the problem's scale (same zero set).
+double implicit_unit(const Surface& g, const Vec3& p, double scale) {
+  const double grad = implicit_gradient(g, p, nullptr).norm();
+  if (grad >= kSingularSurfaceGradientRatio * scale * implicit_hessian_norm(g, p)) return grad;
+  return std::max(grad, kSingularSurfaceGradientRatio * scale * implicit_hessian_norm(g, p));
 }
 
 bool finite(const LocalCurve& c) {
@@ -66,9 +103,9 @@ bool parametric_chart(const Surface& F, double u0, double v0, LocalCurve* c, Vec
 void parametric_implicit(const Problem& pr, const VecX& x, LocalCurve* c) {
   Vec3T<LocalJet> Fj;
   if (!parametric_chart(pr.first(), x[0], x[1], c, &Fj)) return;
-  const Vec3 grad = implicit_gradient(pr.second(), c->origin, nullptr);
-  if (!(grad.norm() > 0)) return;
-  c->h = pr.second().value(Fj) / grad.norm();
+  const double unit = implicit_unit(pr.second(), c->origin, pr.scale());
+  if (!(unit > 0)) return;
+  c->h = pr.second().value(Fj) / unit;
   c->point = {Fj.x, Fj.y, Fj.z};
   c->status = LocalCurveStatus::kOk;
 }
@@ -118,12 +155,6 @@ void parametric_parametric(const Problem& pr, const VecX& x, LocalCurve* c) {
   c->status = LocalCurveStatus::kOk;
 }
 
-// Ratio |grad f| / |grad g| (dimensionless; model-unit implicit forms) below which an implicit
-// surface counts as singular at a point of an implicit-implicit pair (a cone's apex, where its
-// gradient vanishes and it has no tangent plane): the local curve is then built over the other
-// surface's tangent plane. (To join problem/singular_tolerances.hpp.)
-constexpr double kSingularSurfaceGradientRatio = 1e-3;
-
 // The surface `chart` over its tangent plane at the point of it nearest x (Newton along its
 // gradient), h = the surface `other` over that chart.
 void implicit_chart(const Surface& chart, const Surface& other, const VecX& x, LocalCurve* c) {
@@ -161,6 +192,75 @@ void implicit_chart(const Surface& chart, const Surface& other, const VecX& x, L
   c->status = LocalCurveStatus::kOk;
 }
 
+// The nearest parameters of a degenerate parametric surface of the pair, replacing the constant
+// jets of its unknowns (first, first + 1) at a point of the local curve: near a cone's apex or a
+// sphere's pole the parameters are not smooth functions of the point, so they are not jets.
+std::function<VecX(const Vec3&, VecX)> lift_parameters(const Problem& pr, bool first, bool second) {
+  auto F = first ? std::make_shared<const Surface>(pr.first()) : nullptr;
+  auto G = second ? std::make_shared<const Surface>(pr.second()) : nullptr;
+  return [F, G](const Vec3& P, VecX x) {
+    int slot = 0;
+    for (const auto& S : {F, G}) {
+      if (S) {
+        if (const auto uv = closest_parameters(*S, P)) x.segment<2>(2 * slot) = *uv;
+      }
+      ++slot;
+    }
+    return x;
+  };
+}
+
+// A parametric chart of the pair degenerate at x (a cone's apex, a sphere's pole: F_u x F_v = 0,
+// docs/math/singular_local_curve.md §6): the intersection near the point is the same set in 3D,
+// so h is built over a chart that is regular there, with the degenerate surface's implicit form
+// as the equation. The chart: the other surface's parameters when it is parametric and regular,
+// otherwise the implicit form (of the two) whose gradient is larger at the point (the smooth one
+// when the other is singular there, as a cone's apex on a sphere's pole).
+void degenerate_chart(const Problem& pr, const VecX& x, bool first_degenerate, bool second_degenerate, LocalCurve* c) {
+  const Surface &F = pr.first(), &G = pr.second();
+  if ((first_degenerate && !F.is_implicit()) || (second_degenerate && !G.is_implicit())) return;
+  const bool pp = pr.kind() == PairKind::kParametricParametric;
+  c->unknowns.clear();
+  for (Eigen::Index i = 0; i < x.size(); ++i) c->unknowns.emplace_back(x[i]);
+  const FirstOrder f = parametric_first_order(F, x[0], x[1]);
+  if (pp && first_degenerate != second_degenerate) {  // the regular one's parameters are the chart
+    const int chart = first_degenerate ? 1 : 0;
+    const Surface &C = chart == 0 ? F : G, &D = chart == 0 ? G : F;
+    Vec3T<LocalJet> Cj;
+    const std::size_t k = static_cast<std::size_t>(2 * chart);
+    if (!parametric_chart(C, x[static_cast<Eigen::Index>(k)], x[static_cast<Eigen::Index>(k) + 1], c, &Cj)) return;
+    const double unit = implicit_unit(D, c->origin, pr.scale());
+    if (!(unit > 0)) return;
+    const std::vector<LocalJet> uv = c->unknowns;  // parametric_chart set the chart's (U, V) only
+    c->unknowns.clear();
+    for (Eigen::Index i = 0; i < x.size(); ++i) c->unknowns.emplace_back(x[i]);
+    c->unknowns[k] = uv[0], c->unknowns[k + 1] = uv[1];
+    c->h = D.value(Cj) / unit;
+    c->point = {Cj.x, Cj.y, Cj.z};
+  } else {  // implicit charts: the degenerate parametric surface(s) by their implicit forms
+    const Vec3 P0 = f.p;
+    const double gf = implicit_gradient(F, P0, nullptr).norm(), gg = implicit_gradient(G, P0, nullptr).norm();
+    const bool on_first = gf >= gg;
+    LocalCurve chart;
+    implicit_chart(on_first ? F : G, on_first ? G : F, P0, &chart);
+    if (chart.status != LocalCurveStatus::kOk) return;
+    c->origin = chart.origin, c->normal = chart.normal, c->e1 = chart.e1, c->e2 = chart.e2;
+    c->h = chart.h;
+    c->point = chart.point;
+  }
+  c->base = x;
+  c->lift = lift_parameters(pr, first_degenerate, pp && second_degenerate);
+  c->status = LocalCurveStatus::kOk;
+}
+
+// Whether the first (0) or second (1) surface of the pair has a degenerate parametric chart at x.
+bool degenerate_at(const Problem& pr, const VecX& x, int slot) {
+  if (slot == 1 && pr.kind() != PairKind::kParametricParametric) return false;
+  const Surface& s = slot == 0 ? pr.first() : pr.second();
+  const Eigen::Index k = 2 * slot;
+  return chart_condition(s, x[k], x[k + 1]) < kDegenerateChartRatio;
+}
+
 void implicit_implicit(const Problem& pr, const VecX& x, LocalCurve* c) {
   const Vec3 p(x[0], x[1], x[2]);
   const double gf = implicit_gradient(pr.first(), p, nullptr).norm();
@@ -176,7 +276,12 @@ void implicit_implicit(const Problem& pr, const VecX& x, LocalCurve* c) {
 VecX LocalCurve::unknowns_at(const Vec2& st) const {
   VecX r(static_cast<Eigen::Index>(unknowns.size()));
   for (std::size_t i = 0; i < unknowns.size(); ++i) r[static_cast<Eigen::Index>(i)] = evaluate(unknowns[i], st).value;
+  if (lift) r = lift(point_at(st), r);
   return r;
+}
+
+Vec3 LocalCurve::point_at(const Vec2& st) const {
+  return {evaluate(point[0], st).value, evaluate(point[1], st).value, evaluate(point[2], st).value};
 }
 
 MatX LocalCurve::unknowns_jacobian() const {
@@ -192,6 +297,15 @@ LocalCurve local_curve(const Problem& problem, const VecX& x) {
   LocalCurve c;
   c.kind = problem.kind();
   c.base = x;
+  // A degenerate chart of a surface without an implicit form (an expression or a patch) stays:
+  // it is still a chart away from the degenerate point itself.
+  const bool d0 = problem.kind() != PairKind::kImplicitImplicit && problem.first().is_implicit() && degenerate_at(problem, x, 0);
+  const bool d1 = problem.kind() == PairKind::kParametricParametric && problem.second().is_implicit() && degenerate_at(problem, x, 1);
+  if (d0 || d1) {
+    degenerate_chart(problem, x, d0, d1, &c);
+    if (c.status == LocalCurveStatus::kOk && !finite(c)) c.status = LocalCurveStatus::kNonFinite;
+    return c;
+  }
   switch (problem.kind()) {
     case PairKind::kParametricImplicit: parametric_implicit(problem, x, &c); break;
     case PairKind::kParametricParametric: parametric_parametric(problem, x, &c); break;

@@ -93,6 +93,22 @@ bool insert_into(SingularRegistry* registry, int n, int ci, TracedCurve* c, doub
   return false;
 }
 
+// A singular point a hunt found: an isolated point is reported; one with real branches that no
+// march stopped at (a trace stepped over it, e.g. a node within its first step) becomes a node of
+// the network: attach_crossings makes it a point of the curves passing it, the rest of its
+// half-branches are traced from it.
+void take_found(const Problem& P, const SingularLocation& s, double merge, double radius, SingularRegistry* registry,
+                const std::vector<TracedCurve>& curves, std::vector<SingularPointReport>* isolated) {
+  if (near_node(s.point, *registry, merge) || near_contact_curve(s.point, curves, radius)) return;
+  const LocalCurve c = local_curve(P, s.x);
+  if (c.status != LocalCurveStatus::kOk) return;
+  const Classification kind = classify(c.h);
+  bool known = false;
+  for (const SingularPointReport& r : *isolated) known = known || (r.p - s.point).norm() <= merge;
+  if (kind.type == SingularType::kIsolated && !known) isolated->push_back(make_report(s, kind, {}));
+  if (has_real_branches(kind.type)) registry->add(s);
+}
+
 }  // namespace
 
 void attach_crossings(SingularRegistry* registry, std::vector<TracedCurve>* curves, double radius) {
@@ -121,6 +137,12 @@ bool trace_contact_from(const Tracer& tracer, const VecX& x, std::vector<TracedC
 void hunt_tangencies(const Tracer& tracer, const StartPointSearch& search, SingularRegistry* registry,
                      std::vector<TracedCurve>* curves, std::vector<SingularPointReport>* isolated) {
   const Problem& P = tracer.problem();
+  const double radius = 0.2 * tracer.spacing();
+  const double merge = 1e-7 * std::max(1.0, P.scale());
+  // The poles of the parametrisations on the other surface first, whatever the search found: a
+  // singular point there (a cone's apex touching a sphere's pole) is no ordinary root of the
+  // search's systems in the parameters.
+  for (const SingularLocation& s : singular_points_at_poles(P)) take_found(P, s, merge, radius, registry, *curves, isolated);
   HuntOptions hunt;
   std::vector<std::vector<Interval>> candidates;
   if (search.method == "certified") {
@@ -142,26 +164,12 @@ void hunt_tangencies(const Tracer& tracer, const StartPointSearch& search, Singu
   // A grid cell from a singular point sin(theta) is about a cell's fraction of the scale; 0.2
   // leaves room while skipping the transversal rest of the curve.
   hunt.max_sine = 0.2;
-  const double radius = 0.2 * tracer.spacing();
-  const double merge = 1e-7 * std::max(1.0, P.scale());
   hunt.skip = [&](const Vec3& p) { return near_contact_curve(p, *curves, radius) || near_node(p, *registry, merge); };
   hunt.on_found = [&](const SingularLocation& s) {
     const ContactPoint c = correct_onto_contact(P, s.x);
     if (is_contact_point(c) && !near_contact_curve(c.location.point, *curves, radius)) add_contact_curve(tracer, c, curves, registry);
   };
-  for (const SingularLocation& s : hunt_singular_points(P, hunt)) {
-    if (near_node(s.point, *registry, merge) || near_contact_curve(s.point, *curves, radius)) continue;
-    const LocalCurve c = local_curve(P, s.x);
-    if (c.status != LocalCurveStatus::kOk) continue;
-    const Classification kind = classify(c.h);
-    bool known = false;
-    for (const SingularPointReport& r : *isolated) known = known || (r.p - s.point).norm() <= merge;
-    if (kind.type == SingularType::kIsolated && !known) isolated->push_back(make_report(s, kind, {}));
-    // A singular point with real branches that no march stopped at (a trace stepped over it,
-    // e.g. a node within its first step): a node of the network; attach_crossings makes it a
-    // point of the curves passing it, the rest of its half-branches are traced from it.
-    if (has_real_branches(kind.type)) registry->add(s);
-  }
+  for (const SingularLocation& s : hunt_singular_points(P, hunt)) take_found(P, s, merge, radius, registry, *curves, isolated);
 }
 
 }  // namespace ssimarch

@@ -6,8 +6,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "singular/pairs.hpp"
+#include "ssimarch/singular/half_branches.hpp"
 #include "ssimarch/singular/local_curve.hpp"
 #include "ssimarch/singular/locate.hpp"
 
@@ -254,6 +257,54 @@ TEST(Classify, AkSeriesUpToTheJetOrder) {
         else if (k == 4) expected = SingularType::kRamphoidCusp;
         else if (k == 5) expected = SingularType::kOscnode;
         EXPECT_EQ(c.type, expected) << to_string(c.type);
+      }
+}
+
+// A10 and A11 (issue 10: A_k beyond A9) realised as intersections: the graph (u, v, v^2 - s u^(k+1))
+// against the plane z = 0 (parametric-implicit and parametric-parametric), whose local curve at the
+// origin is v^2 - s u^(k+1). A10: one real branch, two half-branches v = +-u^(11/2) leaving along
+// +u (s = 1) or -u (s = -1); A11 with s = 1: two real branches v = +-u^6 crossing the circle
+// 1e-12 apart at epsilon = 0.01, four half-branches; s = -1: an isolated point.
+TEST(Classify, A10AndA11RealisedAsIntersections) {
+  for (const int k : {10, 11})
+    for (const double s : {1.0, -1.0})
+      for (const PairKind kind : {PairKind::kParametricImplicit, PairKind::kParametricParametric}) {
+        const std::string f = std::string("v^2").append(s > 0 ? "-" : "+").append("u^").append(std::to_string(k + 1));
+        const Problem P = kind == PairKind::kParametricImplicit ? testing::graph_vs_plane_pi(f) : testing::graph_vs_plane_pp(f);
+        SCOPED_TRACE(std::string(f).append(kind == PairKind::kParametricImplicit ? " pi" : " pp"));
+        const VecX x = VecX::Zero(P.dim());
+        const LocalCurve c = local_curve(P, x);
+        ASSERT_EQ(c.status, LocalCurveStatus::kOk);
+        const Classification kd = classify(c.h);
+        EXPECT_EQ(kd.ak, std::string("A").append(std::to_string(k)));
+        EXPECT_EQ(kd.milnor, k);
+        const bool isolated = k == 11 && s < 0;
+        EXPECT_EQ(kd.type, isolated ? SingularType::kIsolated : SingularType::kHigherDoublePoint);
+        EXPECT_EQ(kd.real_branches, k == 10 ? 1 : (isolated ? 0 : 2));
+        const std::vector<HalfBranch> hb = half_branches(P, c, kd);
+        ASSERT_EQ(hb.size(), k == 10 ? 2u : (isolated ? 0u : 4u));
+        for (const HalfBranch& b : hb) {
+          ASSERT_GE(b.continuation, 0);
+          EXPECT_NE(hb[static_cast<std::size_t>(b.continuation)].branch, -1);
+          ASSERT_FALSE(b.expansion.terms.empty());
+          const PuiseuxTerm& t = b.expansion.terms[0];
+          if (k == 10) {  // v = +-u^(11/2) for s u > 0: along +-u, W = +-X^(11/2)
+            EXPECT_NEAR(b.tangent[0], s, 1e-9);
+            EXPECT_NEAR(t.exponent, 5.5, 1e-12);
+            EXPECT_NEAR(std::fabs(t.coefficient), 1.0, 1e-9);
+          } else {  // v = +-u^6 on both sides
+            EXPECT_NEAR(std::fabs(b.tangent[0]), 1.0, 1e-9);
+            EXPECT_NEAR(t.exponent, 6.0, 1e-12);
+            EXPECT_NEAR(std::fabs(t.coefficient), 1.0, 1e-9);
+            // The continuation is the same branch v = c u^6 on the other side: straight on.
+            const HalfBranch& o = hb[static_cast<std::size_t>(b.continuation)];
+            EXPECT_LT(b.tangent.dot(o.tangent), -0.99);
+            EXPECT_NEAR(o.expansion.terms[0].coefficient, -t.coefficient, 1e-9);
+          }
+        }
+        if (k == 10) {
+          EXPECT_LT(hb[0].expansion.terms[0].coefficient * hb[1].expansion.terms[0].coefficient, 0);
+        }
       }
 }
 

@@ -5,8 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "singular/pairs.hpp"
+#include "ssimarch/singular/classify.hpp"
+#include "ssimarch/singular/detection.hpp"
+#include "ssimarch/singular/half_branches.hpp"
+#include "ssimarch/surface/primitives.hpp"
 
 namespace ssimarch {
 namespace {
@@ -95,6 +100,59 @@ TEST(LocalCurve, ParametricImplicitVivianiMatchesTheSurfaces) {
     Vec3 P(std::cos(uv[0]), std::sin(uv[0]) - 1, uv[1]);
     EXPECT_NEAR(evaluate(c.h, st).value, (P.squaredNorm() - 4) / 4 / (P0.norm() / 2), 1e-14);
   }
+}
+
+}  // namespace
+}  // namespace ssimarch
+
+namespace ssimarch {
+namespace {
+
+// Degenerate parametrisations (docs/math/singular_local_curve.md §6). The double cone x^2 + y^2 =
+// z^2 (apex at the origin, both nappes) in its parametric form, against the cylinder
+// (x - 1)^2 + y^2 = 1 through the apex: at the apex row v = 0, where F_u = 0, the local curve is
+// built over the cylinder with the cone's implicit form, and the apex is a node of the curve in 3D
+// with tangents (0, -1, -+1)/sqrt2 (examples/cone_apex_cylinder.json: z = 2 cos(t/2)).
+TEST(LocalCurve, ParametricConeApexIsANodeOfTheCurveIn3D) {
+  const Surface cone = Cone(Vec3::Zero(), Vec3::UnitZ(), M_PI / 4, Interval{-2.5, 2.5}, Vec3::UnitX());
+  const Surface cyl = Cylinder(Vec3(1, 0, 0), Vec3::UnitZ(), 1.0, Interval{-3, 3}, Vec3::UnitX());
+  const Problem P(cone, cyl, PairKind::kParametricImplicit);
+  VecX x(2);
+  x << M_PI / 2, 0.0;
+  const LocalCurve c = local_curve(P, x);
+  ASSERT_EQ(c.status, LocalCurveStatus::kOk);
+  EXPECT_TRUE(c.lifted());
+  const Classification k = classify(c.h);
+  EXPECT_EQ(k.type, SingularType::kNode);
+  const auto hb = half_branches(P, c, k);
+  ASSERT_EQ(hb.size(), 4u);
+  const Vec3 t1 = Vec3(0, -1, -1).normalized(), t2 = Vec3(0, -1, 1).normalized();
+  for (const HalfBranch& b : hb) {
+    EXPECT_NEAR(std::max(std::fabs(b.tangent_3d.dot(t1)), std::fabs(b.tangent_3d.dot(t2))), 1.0, 1e-9);
+    ASSERT_TRUE(b.exit_ok);
+    EXPECT_LE(P.linearize(b.exit_x).h.norm(), 1e-12);
+    // The exit's parameters are on the generator u = pi/2 or 3 pi/2 through the apex.
+    EXPECT_NEAR(std::fabs(std::cos(b.exit_x[0])), 0.0, 0.05);
+    ASSERT_GE(b.continuation, 0);
+    EXPECT_NEAR(b.tangent_3d.dot(hb[static_cast<std::size_t>(b.continuation)].tangent_3d), -1.0, 1e-9);
+  }
+}
+
+// OpenCASCADE bug21494_2 in parametric form: the cone (apex (0, 0, 10), half-angle atan 1.5, axis
+// -z) touches the sphere of radius 10 at its north pole from inside; both parametrisations are
+// degenerate there. The local curve over the sphere's implicit chart is definite: an isolated A1.
+TEST(LocalCurve, ConeApexOnASpherePoleIsAnIsolatedPoint) {
+  const Surface cone = Cone(Vec3(0, 0, 10), -Vec3::UnitZ(), std::atan(1.5), Interval{0, 10}, Vec3::UnitX());
+  const Surface sphere = Sphere(Vec3::Zero(), 10.0);
+  const Problem P(cone, sphere, PairKind::kParametricParametric);
+  const std::vector<SingularLocation> at_poles = singular_points_at_poles(P);
+  ASSERT_EQ(at_poles.size(), 1u);
+  EXPECT_LT((at_poles[0].point - Vec3(0, 0, 10)).norm(), 1e-12);
+  const LocalCurve c = local_curve(P, at_poles[0].x);
+  ASSERT_EQ(c.status, LocalCurveStatus::kOk);
+  const Classification k = classify(c.h);
+  EXPECT_EQ(k.type, SingularType::kIsolated);
+  EXPECT_EQ(k.ak, "A1");
 }
 
 }  // namespace

@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <tuple>
+#include <vector>
 
 #include "singular/pairs.hpp"
 #include "ssimarch/singular/classify.hpp"
@@ -79,6 +82,117 @@ TEST(Puiseux, HalfBranchesOfTheCuspCarryTheExpansion) {
       EXPECT_NEAR(b.expansion.terms[i].coefficient, sign * kSqrt1p[i], 1e-6) << i;
     }
   }
+}
+
+// The thesis' ramphoid cusp (Ex. 14/15, oracle "Ex 11"): f = u^4 + u^2 v^2 - 2u^2 v - u v^2 + v^2 =
+// (v - u^2)^2 + u^2 v^2 - u v^2. Its two halves leave along +u and share the leading term u^2; they
+// separate at u^(5/2): v = u^2 +- u^(5/2) + u^3 +- u^(7/2)/2 -+ 5u^(9/2)/8 - u^5 -+ 19u^(11/2)/16 - u^6
+// + ... (sympy: v = sum c_j tau^j with u = tau^2 substituted into f and solved order by order).
+const std::vector<std::tuple<int, int, double>> kRamphoid = {{4, 0, 1}, {2, 2, 1}, {2, 1, -2}, {1, 2, -1}, {0, 2, 1}};
+std::vector<PuiseuxTerm> ramphoid_half(double sign) {
+  return {{2, 1}, {2.5, sign}, {3, 1}, {3.5, sign * 0.5}, {4.5, -sign * 5.0 / 8}, {5, -1}, {5.5, -sign * 19.0 / 16}, {6, -1}};
+}
+double series_at(const std::vector<PuiseuxTerm>& terms, double X) {
+  double w = 0;
+  for (const PuiseuxTerm& t : terms) w += t.coefficient * std::pow(X, t.exponent);
+  return w;
+}
+
+TEST(Puiseux, RamphoidCuspHalvesThatShareTheirLeadingTerm) {
+  const LocalJet h = germ(kRamphoid);
+  for (const double sign : {1.0, -1.0}) {
+    const std::vector<PuiseuxTerm> expected = ramphoid_half(sign);
+    const Vec2 through(0.01, series_at(expected, 0.01));
+    const PuiseuxExpansion e = puiseux_expansion(h, Vec2(1, 0), 1.0, 2, 1, 6, &through);
+    EXPECT_EQ(e.denominator, 2) << sign;
+    EXPECT_TRUE(e.complete) << sign;
+    expect_terms(e, expected);
+  }
+}
+
+// Two branches t = s^2 +- s^k touching with contact order k (k = 3: an oscnode A5, k = 4: A7): on
+// the +s side W = X^2 +- X^k; on the -s side (X = -s, W = -t) W = -X^2 +- (-1)^(k+1) X^k. Each
+// half-branch is told apart from its twin only by its own point on the circle.
+TEST(Puiseux, BranchesOfContactOrderThreeAndFourStayApart) {
+  for (const int k : {3, 4}) {
+    // (t - s^2 - s^k)(t - s^2 + s^k) = t^2 - 2 s^2 t + s^4 - s^(2k)
+    const LocalJet h = germ({{0, 2, 1}, {2, 1, -2}, {4, 0, 1}, {2 * k, 0, -1}});
+    for (const double side : {1.0, -1.0})
+      for (const double eps : {1.0, -1.0}) {
+        // t(s) = s^2 + eps s^k along X = side s, W = side t.
+        const double a2 = side, ak = side * eps * std::pow(side, k);
+        const std::vector<PuiseuxTerm> expected = {{2, a2}, {static_cast<double>(k), ak}};
+        const Vec2 through(0.01, series_at(expected, 0.01));
+        const PuiseuxExpansion e = puiseux_expansion(h, Vec2(side, 0), a2, 2, 1, 6, &through);
+        EXPECT_TRUE(e.complete) << k << side << eps;
+        expect_terms(e, expected);
+      }
+  }
+}
+
+// The same germs through half_branches: the halves are found on the circle (the contact-order-4
+// pair crosses it 2e-6 rad apart, inside one sample), carry distinct expansions equal to the
+// closed forms, and each continues along its own branch (a curve arriving on t = s^2 + s^k leaves
+// on it, never on its twin).
+TEST(Puiseux, HalfBranchesOfTouchingBranchesAreDistinctAndPairedByBranch) {
+  for (const int k : {3, 4}) {
+    // (append, not a literal + to_string: GCC 12's -Wrestrict false positive, PR 105329)
+    const std::string K = std::to_string(k);
+    const std::string f = std::string("(v-u^2-u^").append(K).append(")*(v-u^2+u^").append(K).append(")");
+    const Problem P = testing::graph_vs_plane_pi(f);
+    VecX x(2);
+    x << 0, 0;
+    const LocalCurve c = local_curve(P, x);
+    ASSERT_EQ(c.status, LocalCurveStatus::kOk);
+    const Classification kind = classify(c.h);
+    EXPECT_EQ(kind.ak, "A" + std::to_string(2 * k - 1)) << k;
+    EXPECT_EQ(kind.real_branches, 2) << k;
+    const auto hb = half_branches(P, c, kind);
+    ASSERT_EQ(hb.size(), 4u) << k;
+    std::vector<double> branch_of(hb.size());
+    for (std::size_t i = 0; i < hb.size(); ++i) {
+      const HalfBranch& b = hb[i];
+      ASSERT_EQ(b.expansion.terms.size(), 2u) << k << " " << i;
+      // A point of the half-branch from its expansion, in (s, t) = (u, v): which branch it is.
+      const double X = 0.1, W = series_at(b.expansion.terms, X);
+      const Vec2 st = X * b.tangent + W * Vec2(-b.tangent[1], b.tangent[0]);
+      branch_of[i] = (st[1] - st[0] * st[0]) / std::pow(st[0], k);
+      EXPECT_NEAR(std::fabs(branch_of[i]), 1.0, 1e-9) << k << " " << i;
+      EXPECT_NEAR(b.expansion.terms[0].exponent, 2.0, 1e-12);
+      EXPECT_NEAR(b.expansion.terms[1].exponent, static_cast<double>(k), 1e-12);
+    }
+    for (std::size_t i = 0; i < hb.size(); ++i) {
+      const std::size_t j = static_cast<std::size_t>(hb[i].continuation);
+      ASSERT_LT(j, hb.size());
+      EXPECT_NEAR(branch_of[i], branch_of[j], 1e-9) << k << " " << i;     // same branch
+      EXPECT_LT(hb[i].tangent.dot(hb[j].tangent), -0.99) << k << " " << i;  // straight on
+    }
+  }
+}
+
+TEST(Puiseux, ThesisRamphoidCuspHalvesThroughHalfBranches) {
+  const Problem P = testing::graph_vs_plane_pi("u^4+u^2*v^2-2*u^2*v-u*v^2+v^2");
+  VecX x(2);
+  x << 0, 0;
+  const LocalCurve c = local_curve(P, x);
+  ASSERT_EQ(c.status, LocalCurveStatus::kOk);
+  const Classification kind = classify(c.h);
+  EXPECT_EQ(kind.type, SingularType::kRamphoidCusp);
+  const auto hb = half_branches(P, c, kind);
+  ASSERT_EQ(hb.size(), 2u);
+  EXPECT_EQ(hb[0].continuation, 1);
+  EXPECT_EQ(hb[1].continuation, 0);
+  for (const HalfBranch& b : hb) {
+    EXPECT_NEAR(b.tangent[0], 1.0, 1e-12);
+    ASSERT_EQ(b.expansion.terms.size(), 8u);
+    const double sign = b.expansion.terms[1].coefficient > 0 ? 1.0 : -1.0;
+    const std::vector<PuiseuxTerm> expected = ramphoid_half(sign);
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+      EXPECT_NEAR(b.expansion.terms[i].exponent, expected[i].exponent, 1e-12) << i;
+      EXPECT_NEAR(b.expansion.terms[i].coefficient, expected[i].coefficient, 1e-6) << i;
+    }
+  }
+  EXPECT_LT(hb[0].expansion.terms[1].coefficient * hb[1].expansion.terms[1].coefficient, 0);
 }
 
 TEST(Puiseux, ExponentFraction) {

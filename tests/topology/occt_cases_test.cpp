@@ -7,7 +7,8 @@
 //  * bug25950 (as the script states the locus): a sphere and a spheroid touching along the great
 //    circle x = 0, which passes both poles of the sphere's parametrisation: one closed curve of
 //    tangential contact of length 6 pi;
-//  * a cone's apex on the curve (implicit cone): the node at the apex, one closed curve.
+//  * a cone's apex on the curve (implicit and parametric cone): the node at the apex, one closed curve;
+//  * bug21494_2: the cone's apex on the sphere's pole, an isolated point, in both forms.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -78,16 +79,54 @@ TEST(OcctCases, Bug25950ContactCircleThroughBothPolesIsOneClosedCurve) {
   }
 }
 
-TEST(OcctCases, CurveThroughAnImplicitConesApexHasItsNodeThere) {
+// Every form of the cone through its apex: implicit; parametric (the apex is the row v = 0 inside
+// its parameter rectangle, where F_u x F_v = 0); implicit as the second surface of a
+// parametric-implicit pair (its gradient vanishes at the apex). The apex is a node of the curve
+// in 3D whatever the parametrisation: two branches with tangents (0, -1, -+1)/sqrt2 crossing
+// straight, each half-branch once, the apex an exact point of the one closed curve.
+TEST(OcctCases, CurveThroughAConesApexHasItsNodeThereInEveryForm) {
   // z = 2 cos(t/2) on the cylinder (1 + cos t, sin t, z): length 8 sqrt2 E(1/2) (Viviani's).
   const double length = 15.2807911561;
-  const TraceResult r = trace_example("cone_apex_cylinder.json", "apex_implicit");
-  ASSERT_EQ(r.curves.size(), 1u);
-  EXPECT_TRUE(r.curves[0].closed);
-  EXPECT_NEAR(r.curves[0].length, length, 1e-6 * length);
-  ASSERT_EQ(r.singular_points.size(), 1u);
-  EXPECT_EQ(r.singular_points[0].type, "node");
-  EXPECT_LT(r.singular_points[0].p.norm(), 1e-10);
+  const Vec3 t1 = Vec3(0, -1, -1).normalized(), t2 = Vec3(0, -1, 1).normalized();
+  for (const char* name : {"apex_implicit", "apex_cone_parametric", "apex_cylinder_parametric"}) {
+    const TraceResult r = trace_example("cone_apex_cylinder.json", name);
+    ASSERT_EQ(r.curves.size(), 1u) << name;
+    EXPECT_TRUE(r.curves[0].closed) << name;
+    EXPECT_NEAR(r.curves[0].length, length, 1e-6 * length) << name;
+    ASSERT_EQ(r.singular_points.size(), 1u) << name;
+    const SingularPointReport& s = r.singular_points[0];
+    EXPECT_EQ(s.type, "node") << name;
+    EXPECT_EQ(s.ak, "A1") << name;
+    EXPECT_LT(s.p.norm(), 1e-10) << name;
+    EXPECT_EQ(s.curves, std::vector<int>{0}) << name;
+    const bool on_curve = std::any_of(r.curves[0].points.begin(), r.curves[0].points.end(),
+                                      [](const CurvePoint& q) { return q.p.norm() <= 1e-10; });
+    EXPECT_TRUE(on_curve) << name;
+    ASSERT_EQ(s.half_branches.size(), 4u) << name;
+    for (const auto& b : s.half_branches) {
+      EXPECT_NEAR(std::max(std::fabs(b.tangent.dot(t1)), std::fabs(b.tangent.dot(t2))), 1.0, 1e-9) << name;
+      ASSERT_GE(b.continuation, 0) << name;
+      EXPECT_NEAR(b.tangent.dot(s.half_branches[static_cast<std::size_t>(b.continuation)].tangent), -1.0, 1e-9) << name;
+    }
+  }
+}
+
+// bug21494_2 with both surfaces parametric: the cone's apex is the sphere's pole, an isolated
+// point of the intersection (the cone's tip inside the sphere), where both parametrisations are
+// degenerate; beside it the circle z = 50/13 of radius 120/13.
+TEST(OcctCases, Bug21494ApexOnThePoleIsAnIsolatedPointInEveryForm) {
+  for (const char* name : {"bug21494_2", "bug21494_2_param"}) {
+    const TraceResult r = trace_example("occt_bug21494_2_cone_sphere.json", name);
+    ASSERT_EQ(r.curves.size(), 1u) << name;
+    EXPECT_TRUE(r.curves[0].closed) << name;
+    EXPECT_NEAR(r.curves[0].length, 240 * std::numbers::pi / 13, 1e-8) << name;
+    std::vector<Vec3> isolated;
+    for (const auto& s : r.singular_points)
+      if (s.type == "isolated") isolated.push_back(s.p);
+    for (const auto& s : r.isolated_points) isolated.push_back(s.p);
+    ASSERT_FALSE(isolated.empty()) << name;
+    for (const Vec3& p : isolated) EXPECT_LT((p - Vec3(0, 0, 10)).norm(), 1e-10) << name;
+  }
 }
 
 }  // namespace

@@ -98,8 +98,9 @@ struct SingularPointReport {
   struct HalfBranch {
     Vec3 tangent = Vec3::Zero();  // unit 3D tangent leaving the point
     VecX param_tangent;           // the same in the unknowns (per unit length)
-    // Leading term of the offset from the tangent line, w = coefficient X^exponent (model units;
-    // exponent 0: straight within resolution).
+    // Leading term of the offset from the tangent line along `normal`, w = coefficient X^exponent
+    // (model units; exponent 0: straight within resolution), measured before the expansion's
+    // refinement: the same frame and sign as expansion[0].
     double coefficient = 0, exponent = 0;
     int continuation = -1;  // index of the half-branch that continues this one through the point
     // Puiseux expansion of the offset along `normal` (unit, 3D): w = sum coefficient X^exponent,

@@ -45,4 +45,26 @@ inline constexpr double kSuspectSingularRankRatio = 1e-4;
 /// thesis' own threshold sin(theta) < 0.01 (ch. 5 §5.2.1) fires far more often.
 inline constexpr double kWatchRankRatio = 1e-3;
 
+/// |grad f| / (reference gradient) below which an implicit surface counts as singular at a point
+/// of the local curve (singular/local_curve.cpp; dimensionless). Reference: the other implicit
+/// surface's gradient for an implicit-implicit pair, |Hess f| * (the problem's scale) for the
+/// implicit surface of a parametric-implicit pair. At a cone's apex grad f = 0 and the surface has
+/// no tangent plane: h = f / |grad f| would divide by zero, so the local curve is built over the
+/// other surface and f is divided by the reference instead (the zero set is the same; only the
+/// model-unit scaling of h changes). Near such a point |grad f| grows like |Hess f| times the
+/// distance, so 1e-3 switches within about 1e-3 of the problem's scale of the apex, where the
+/// gradient is already too small to be a faithful unit (h and its gradient blow up like
+/// 1 / distance as the locator converges).
+inline constexpr double kSingularSurfaceGradientRatio = 1e-3;
+
+/// |F_u x F_v| / (|F_u|^2 + |F_v|^2) (dimensionless, at most 1/2) below which a parametric chart
+/// counts as degenerate at a point: a cone's apex or a sphere's pole, inside the parameter
+/// rectangle or on its edge, where F_u x F_v = 0 and the parameters are not coordinates of the
+/// surface. A chart built there is valid only within about ratio * (the parameters' speed) of the
+/// point, so the local curve is built over the surface's implicit form instead (when it has one;
+/// singular/local_curve.cpp). 1e-3: a cone's chart at 1e-3 of its generator length from the apex,
+/// or a sphere's at 1e-3 rad from its pole, still reaches the apex / pole within a few of its radii
+/// of validity, and the implicit chart is exact at any distance, so the switch loses nothing.
+inline constexpr double kDegenerateChartRatio = 1e-3;
+
 }  // namespace ssimarch

@@ -54,7 +54,7 @@ using TangentLine = FormRoot;
 
 struct Classification {
   SingularType type = SingularType::kRegular;
-  std::string ak;         // "A1".."A9", "D4".., "E6", "E7", "E8", "X9"; empty where none applies
+  std::string ak;         // "A1".."A11", "D4".., "E6", "E7", "E8", "X9"; empty where none applies
   int multiplicity = 1;   // lowest degree of h
   int milnor = -1;        // Milnor number; -1 where infinite or beyond the jet
   int corank = 0;         // 2 - rank of the Hessian

@@ -74,4 +74,13 @@ struct HuntOptions {
 /// an earlier location ended (singular or a near miss) is not located again. Throws InputError for grid < 3.
 std::vector<SingularLocation> hunt_singular_points(const Problem& problem, const HuntOptions& options = {});
 
+/// The singular points of the curve at the poles of the problem's parametric surfaces (degenerate
+/// edges, problem/poles_and_trims.hpp: a cone's apex, a sphere's pole) that lie on the other
+/// surface: at such a point the parametrisation itself is singular, so neither a grid nor an
+/// interval search over the parameters sees it as an ordinary critical point; each is located
+/// from the pole (the local curve over a regular chart, local_curve.hpp). An isolated point where
+/// a cone's apex touches a sphere's pole (OpenCASCADE bug21494_2) is one. Points where the curve
+/// passes a pole regularly are not returned.
+std::vector<SingularLocation> singular_points_at_poles(const Problem& problem, const LocateOptions& options = {});
+
 }  // namespace ssimarch

@@ -42,6 +42,10 @@ struct HalfBranch {
   int line = -1;                      // index of its line in Classification::tangent_cone
   double offset_coefficient = 0;      // c of w = c X^gamma (sign w.r.t. the line's normal rot90(d))
   double offset_exponent = 0;         // gamma; 0 where the offset is below resolution (straight)
+  // The same leading coefficient c in the half-branch's own frame: the offset along normal_3d
+  // (rot90(tangent) = sign(tangent . d) rot90(d)), the frame of `expansion`, whose first term is
+  // c refined (the reports and JSON give this one).
+  double leading_coefficient = 0;
   // The Puiseux expansion W(X) = sum b_j X^(j/q) of the offset along normal_3d (= rot90(tangent)
   // in (s, t)), X >= 0 along the tangent, up to exponent 6 (singular/puiseux.hpp).
   PuiseuxExpansion expansion;
@@ -61,7 +65,8 @@ std::vector<HalfBranch> half_branches(const Problem& problem, const LocalCurve& 
                                       const HalfBranchOptions& options = {});
 
 /// Points (s, t) where h = 0 crosses the circle of radius r (sign changes of h on `samples`
-/// equally spaced angles, refined by bisection), in increasing angle.
+/// equally spaced angles, refined by bisection; a local minimum of |h| without a sign change is
+/// searched for a pair of crossings closer than the sampling), in increasing angle.
 std::vector<Vec2> circle_crossings(const LocalJet& h, double r, int samples);
 
 }  // namespace ssimarch

@@ -17,6 +17,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <vector>
 
 #include "ssimarch/problem/problem.hpp"
@@ -41,19 +42,32 @@ struct LocalCurve {
   Vec3 e1 = Vec3::Zero(), e2 = Vec3::Zero(), normal = Vec3::Zero();  // orthonormal frame, normal of the first surface
   LocalJet h;                       // the local curve h(s, t) = 0 (model units)
   std::vector<LocalJet> unknowns;   // x(s, t), one jet per unknown of the problem
-  std::array<LocalJet, 3> point;    // the 3D point P(s, t) of x(s, t) (on the first surface)
+  std::array<LocalJet, 3> point;    // the 3D point P(s, t) of x(s, t) (on the chart's surface)
+  // Set where a parametric surface of the pair is degenerate at the base point (a cone's apex, a
+  // sphere's pole: its parameters are not coordinates of the surface there) and the local curve
+  // was built over implicit forms instead: the unknowns of that surface are constant jets (the
+  // base), and `lift` replaces them at a 3D point P(s, t) by the surface's nearest parameters.
+  std::function<VecX(const Vec3& point, VecX unknowns)> lift;
 
   /// The unknowns at (s, t) from the jets (accurate to O(|(s,t)|^(kLocalOrder+1))).
   VecX unknowns_at(const Vec2& st) const;
-  /// d x / d(s, t) at the base point: n x 2.
+  /// The 3D point P(s, t) from the jets.
+  Vec3 point_at(const Vec2& st) const;
+  /// d x / d(s, t) at the base point: n x 2 (rows of lifted unknowns are zero: no derivative exists).
   MatX unknowns_jacobian() const;
+  /// Whether the unknowns of a degenerate parametrisation are lifted (see `lift`).
+  bool lifted() const { return static_cast<bool>(lift); }
   /// The 3D direction of a tangent-plane direction (s, t).
   Vec3 direction_3d(const Vec2& st) const { return st[0] * e1 + st[1] * e2; }
 };
 
 /// The local curve of `problem` at the unknowns `x`. For parametric-parametric pairs (p, q) of x
 /// are first moved (Newton) so that G(p,q) - F(u,v) is normal to F; for implicit-implicit pairs
-/// x is first moved onto f = 0 along grad f. Never throws for numeric trouble: see status.
+/// x is first moved onto f = 0 along grad f. Where a parametric chart of the pair is degenerate
+/// at x (problem/singular_tolerances.hpp kDegenerateChartRatio) the curve is built over the
+/// other surface's regular chart, or over implicit forms, with that surface's implicit form as
+/// the equation (docs/math/singular_local_curve.md §6); status kDegenerate when the degenerate
+/// surface has no implicit form. Never throws for numeric trouble: see status.
 LocalCurve local_curve(const Problem& problem, const VecX& x);
 
 }  // namespace ssimarch

@@ -15,10 +15,11 @@
 
 namespace ssimarch {
 
-/// Order of the local expansions. Ten leaves room for the splitting lemma up to A9, for the
-/// Milnor number of germs whose Jacobian ideal contains M^9, and for Puiseux terms of order 6
-/// on branches of multiplicity 2 (docs/math/singular_local_curve.md §4).
-inline constexpr int kLocalOrder = 10;
+/// Order of the local expansions: twelve, the most core/jet.hpp supports. It leaves room for the
+/// splitting lemma up to A11 (phi = c Y^(k+1) needs order k + 1), for the Milnor number of germs
+/// whose Jacobian ideal contains M^11, and for Puiseux terms of order 6 on branches of
+/// multiplicity 2 (docs/math/singular_local_curve.md §3-4).
+inline constexpr int kLocalOrder = 12;
 using LocalJet = Jet<2, kLocalOrder>;
 
 /// Coefficient of s^i t^j (normalised: the Taylor coefficient, not the derivative).

@@ -7,10 +7,13 @@
 // q its multiplicity along d (1 for a smooth branch, 2 for a cusp A2 or a ramphoid cusp A4, ...).
 // With X = tau^q the branch is a power series W(tau) solving H(tau^q, W(tau)) = 0,
 // H(X, W) = h(X d + W n). The leading term b_p tau^p is a root of the edge polynomial of the Newton
-// polygon of H for the slope p/q (refined by Newton from the measured leading coefficient); every
-// further coefficient is linear: with m the order of H_W(tau^q, W(tau)) and r = H(tau^q, W_(j-1)),
-// b_j = -r_(j+m) / [H_W]_m, valid while the residual has no term below j + m (the branch is
-// separated from the others); the expansion stops (truncated) where that fails.
+// polygon of H for the slope p/q; every further term is a root of the edge polynomial of the
+// Newton polygon of G(tau, V) = H(tau^Q, W_(j-1)(tau) + V) on an edge steeper than the last term
+// (once the branch is separated from the others that edge runs from V^0 to V^1 and the term is
+// the linear b_j = -r_(j+m) / [H_W]_m); a fractional slope refines tau (Q grows, up to 6). Multiple
+// roots (branches still sharing the term) are refined as simple roots of a derivative of the edge
+// polynomial, so that the later term that separates them is not swamped by eps^(1/m) errors. The
+// expansion stops (truncated) where a term would depend on monomials beyond the jet.
 #pragma once
 
 #include <utility>
@@ -34,7 +37,13 @@ struct PuiseuxExpansion {
 
 /// The expansion of the half-branch of h leaving the origin along the unit tangent `d` (in (s, t))
 /// whose leading offset is about `leading` X^(p/q) along rot90(d), up to exponent `order`.
-PuiseuxExpansion puiseux_expansion(const LocalJet& h, const Vec2& d, double leading, int p, int q, double order = 6);
+/// `through` (X, W) > 0 in the half-branch's frame: a point of it (its crossing of a small circle),
+/// which picks the branch wherever several share the terms found so far (a tacnode's or an
+/// oscnode's two branches on one side, a ramphoid cusp's two halves): each term is a root of the
+/// edge polynomial of the Newton polygon of H(tau^Q, W + V) for the edges steeper than the last
+/// term (Wall 2004 §2.1), and the root whose partial sum passes nearest that point is taken.
+PuiseuxExpansion puiseux_expansion(const LocalJet& h, const Vec2& d, double leading, int p, int q, double order = 6,
+                                   const Vec2* through = nullptr);
 
 /// p / q: the exponent gamma as a fraction with q <= 4 (gamma = 0, straight within resolution, is 2/1).
 std::pair<int, int> exponent_fraction(double gamma);
