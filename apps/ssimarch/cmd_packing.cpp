@@ -65,22 +65,29 @@ PackingJobResult run_job(const PackingJob& job, bool quiet) {
   }
 }
 
-void generate_spheres(const PackingArgs& a) {
+// Both generators: run the job, hold the no-overlap promise, write the particles, report.
+void generate(const char* what, const PackingArgs& a, const PackingJob& job, double overlap_limit) {
   if (a.count < 1) throw CliError("--count must be >= 1");
+  const PackingJobResult r = run_job(job, a.quiet);
+  check_no_overlap(what, r, overlap_limit);
+  write(a.output, r.particles);
+  if (r.report.placed < a.count)
+    std::cerr << "ssimarch: warning: " << what << " jammed after " << r.report.attempts << " attempts: placed "
+              << r.report.placed << " of " << a.count << "\n";
+  if (!a.quiet) report(what, r);
+}
+
+void generate_spheres(const PackingArgs& a) {
   SphereBedOptions o;
   o.container_radius = a.radius;
   o.diameter = a.diameter;
   o.diameter_max = a.diameter_max;
   o.count = a.count;
   o.seed = a.seed;
-  const PackingJobResult r = run_job(o, a.quiet);
-  check_no_overlap("drop-and-roll", r, o.contact_tolerance * o.diameter);
-  write(a.output, r.particles);
-  if (!a.quiet) report("drop-and-roll", r);
+  generate("drop-and-roll", a, o, o.contact_tolerance * o.diameter);
 }
 
 void generate_spherocylinders(const PackingArgs& a) {
-  if (a.count < 1) throw CliError("--count must be >= 1");
   SpherocylinderRsaOptions o;
   o.container_radius = a.radius;
   o.diameter = a.diameter;
@@ -89,13 +96,7 @@ void generate_spherocylinders(const PackingArgs& a) {
   o.height = a.height;
   o.target_solid_fraction = a.fraction;
   o.seed = a.seed;
-  const PackingJobResult r = run_job(o, a.quiet);
-  check_no_overlap("RSA", r, 0.0);
-  write(a.output, r.particles);
-  if (r.report.placed < a.count)
-    std::cerr << "ssimarch: warning: RSA jammed after " << r.report.attempts << " attempts: placed " << r.report.placed
-              << " of " << a.count << "\n";
-  if (!a.quiet) report("RSA", r);
+  generate("RSA", a, o, 0.0);
 }
 
 }  // namespace
@@ -114,14 +115,13 @@ void add_packing_command(CLI::App& app) {
     s->add_option("-o,--output", a->output, "output CSV (default stdout)");
     s->add_flag("-q,--quiet", a->quiet, "no progress and no summary line on stderr (warnings stay)");
     add_progress_option(s);
+    // A time and memory budget: the generator's cost depends on the bed (docs/reliability.md).
+    add_budget_options(s);
   }
   sp->add_option("--diameter-max", a->diameter_max, "if > d: diameters uniform in [d, diameter-max]");
   sc->add_option("--length", a->length, "cylinder length l (default 2)");
   sc->add_option("--height", a->height, "container height H (default: from --solid-fraction)");
   sc->add_option("--solid-fraction", a->fraction, "target solid fraction fixing H when --height is not given (default 0.2)");
-  // A time and memory budget: the generator's cost depends on the bed (docs/reliability.md).
-  add_budget_options(sp);
-  add_budget_options(sc);
   sp->callback([a] { generate_spheres(*a); });
   sc->callback([a] { generate_spherocylinders(*a); });
 }

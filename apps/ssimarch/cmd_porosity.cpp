@@ -326,7 +326,7 @@ void run(const PorosityArgs& a) {
 #endif
   if (!writer) {
     try {
-      run_job(job);  // the overlap search and --strict are rank 0's
+      run_job(job);  // every rank takes part in the overlap search; --strict and warnings are rank 0's
     } catch (const CliError&) {
       // Every rank has the same error (the shares agree on it): rank 0 reports it and sets the exit
       // status. A quiet non-zero exit here would make mpirun kill rank 0 before it prints.

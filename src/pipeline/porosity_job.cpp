@@ -20,6 +20,9 @@ using Clock = std::chrono::steady_clock;
 // Usable ranges (docs/porosity.md): profile points per profile and map cells; lengths.
 constexpr int kMaxProfilePoints = 10'000'000;
 constexpr double kMaxLength = 1e100, kMinLength = 1e-100;
+// Overlap depth, relative to the smaller diameter, above which two particles overlap (a contact
+// is not an overlap: overlaps.hpp).
+constexpr double kOverlapTolerance = 1e-9;
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
@@ -53,8 +56,11 @@ void require_length_scale(double v, const std::string& where, const char* what) 
 
 // `first`: the index of ps[0] in the whole packing (a process's share).
 void require_packing_scale(std::span<const Particle> ps, const std::string& source, long first = 0) {
+  auto usable = [](double v) { return std::abs(v) <= kMaxLength && (v == 0 || std::abs(v) >= kMinLength); };
   for (std::size_t i = 0; i < ps.size(); ++i) {
     const Particle& p = ps[i];
+    if (usable(p.diameter) && usable(p.length) && usable(p.centre.x()) && usable(p.centre.y()) && usable(p.centre.z()))
+      continue;  // the common case: no message built
     const std::string where = source + ": particle " + std::to_string(static_cast<long>(i) + first + 1);
     require_length_scale(p.diameter, where, "diameter");
     require_length_scale(p.length, where, "length");
@@ -77,7 +83,7 @@ std::span<const Particle> packing_of(const PorosityJob& job, Packing& storage, b
     return job.packing;
   }
   if (job.packing_file.empty()) throw InputError("packing", "no packing given (neither particles nor a file)");
-  storage = read_packing(job.packing_file, job.input_limits);
+  storage = read_packing(job.packing_file, job.input_limits, job.options.threads);
   if (storage.particles.empty()) throw InputError(job.packing_file.string(), "no particles");
   *spherocylinders = storage.spherocylinders;
   return storage.particles;
@@ -156,7 +162,7 @@ void run_stages(const PorosityJob& job, std::span<const Particle> ps, PorosityJo
 // of the file; counts, the height range and the profiles are combined over the processes.
 PorosityJobResult run_shared_porosity_job(const PorosityJob& job, const ProfileCommunicator& comm) {
   PorosityJobResult out;
-  const Packing share = read_packing_share(job.packing_file, job.input_limits, &comm);
+  const Packing share = read_packing_share(job.packing_file, job.input_limits, &comm, job.options.threads);
   const std::span<const Particle> ps = share.particles;
   long count = static_cast<long>(ps.size());
   const long first = comm.exclusive_prefix_sum(count);
@@ -172,8 +178,9 @@ PorosityJobResult run_shared_porosity_job(const PorosityJob& job, const ProfileC
   }
   if (problem = comm.first_error(problem); !problem.empty())
     throw InputError(problem.substr(0, problem.find('\x1f')), problem.substr(problem.find('\x1f') + 1));
-  // The overlap search needs neighbours from every share: not done on several processes
-  // (docs/scaling.md); out.overlaps stays empty.
+  // The overlap search moves the particles into slabs of the bed, with their neighbours from the
+  // slabs beside (overlaps.hpp, docs/scaling.md): each pair is counted once, by one process.
+  if (job.find_overlaps) out.overlaps = find_overlaps(ps, first, comm, kOverlapTolerance, job.options.threads);
   out.container.radius = job.container_radius;
   if (job.height_range) {
     out.container.slab = *job.height_range;
@@ -203,7 +210,8 @@ PorosityJobResult run_porosity_job(const PorosityJob& job) {
     const std::size_t n = all.size(), k = static_cast<std::size_t>(comm->rank()), p = static_cast<std::size_t>(comm->size());
     ps = all.subspan(n * k / p, n * (k + 1) / p - n * k / p);
   }
-  if (job.find_overlaps && (!comm || comm->rank() == 0)) out.overlaps = find_overlaps(all);
+  if (job.find_overlaps && (!comm || comm->rank() == 0))
+    out.overlaps = find_overlaps(all, kOverlapTolerance, job.options.threads);
   out.container.radius = job.container_radius;
   out.container.slab = job.height_range ? *job.height_range : vertical_extent(all);
   run_stages(job, ps, out);

@@ -1,11 +1,17 @@
+// Overlapping pairs (overlaps.hpp) in one process: a hierarchical grid of cell indices, queried in
+// parallel from every particle, each pair counted once from the particle first in (level, id).
 #include "ssimarch/porosity/overlaps.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <numbers>
+#include <optional>
 
-#include "spatial_grid.hpp"
+#include "cell_index.hpp"
+#include "overlap_search.hpp"
+#include "parallel.hpp"
 #include "ssimarch/porosity/generator.hpp"
 
 namespace ssimarch {
@@ -15,14 +21,109 @@ namespace {
 // Extent of a particle from its centre: half its length plus its radius.
 double reach(const Particle& p) { return p.half_length() + p.radius(); }
 
-// Distance between the axes (segments; points for spheres): the particles overlap by the sum of the
-// radii minus it.
-double axis_distance(const Particle& a, const Particle& b) {
-  if (a.length == 0 && b.length == 0) return (a.centre - b.centre).norm();
-  return segment_distance(a.minus_cap(), a.plus_cap(), b.minus_cap(), b.plus_cap());
-}
+// One level of the grid: its particles (reach in (2^(k-1), 2^k]) in cells of twice their largest
+// reach, so that a query from a particle no larger meets at most 3 x 3 x 3 cells.
+struct Level {
+  double max_reach = 0.0;
+  std::vector<std::uint32_t> members;
+  std::optional<internal::CellIndex> cells;
+};
+
+// Chunks of the queries: a fixed count, so the work splits the same way for any thread count
+// (the tally is exact anyway: integer counts and sums, a total order on the worst pair).
+constexpr int kChunks = 256;
 
 }  // namespace
+
+namespace internal {
+
+void PairTally::add(long i, long j, double d, double v) {
+  ++pairs;
+  volume.add(v);
+  const long a = std::min(i, j), b = std::max(i, j);
+  if (d > depth || (d == depth && (first < 0 || a < first || (a == first && b < second)))) {
+    depth = d;
+    first = a;
+    second = b;
+  }
+}
+
+void PairTally::merge(const PairTally& o) {
+  pairs += o.pairs;
+  volume += o.volume;
+  if (o.first >= 0 && (first < 0 || o.depth > depth ||
+                       (o.depth == depth && (o.first < first || (o.first == first && o.second < second))))) {
+    depth = o.depth;
+    first = o.first;
+    second = o.second;
+  }
+}
+
+int overlap_level(const Particle& p) { return std::ilogb(reach(p)) + 1; }
+
+PairTally search_overlaps(std::span<const Particle> ps, std::span<const long> ids, std::size_t owned,
+                          double relative_tolerance, double volume_scale, unsigned threads) {
+  auto id = [&](std::size_t k) { return ids.empty() ? static_cast<long>(k) : ids[k]; };
+  std::vector<std::int16_t> level_of(ps.size());  // ilogb + 1 of a finite reach: within +-1100
+  std::map<int, Level> levels;
+  for (std::size_t k = 0; k < ps.size(); ++k) {
+    level_of[k] = static_cast<std::int16_t>(overlap_level(ps[k]));
+    Level& L = levels[level_of[k]];
+    L.max_reach = std::max(L.max_reach, reach(ps[k]));
+    L.members.push_back(static_cast<std::uint32_t>(k));
+  }
+  for (auto& [k, L] : levels) {
+    L.cells.emplace(2 * L.max_reach, L.members, [&](std::uint32_t m) -> const Vec3& { return ps[m].centre; });
+    L.members = {};
+  }
+  // Each pair once: tested from the particle first in (level, id) (overlaps.hpp).
+  auto before = [&](std::size_t a, std::size_t b) {
+    return level_of[a] != level_of[b] ? level_of[a] < level_of[b] : id(a) < id(b);
+  };
+  auto test = [&](std::size_t i, std::size_t j, PairTally& t) {
+    const Particle &a = ps[i], &b = ps[j];
+    const bool spheres = a.length == 0 && b.length == 0;
+    const double s = a.radius() + b.radius();
+    if (spheres && (a.centre - b.centre).squaredNorm() >= s * s) return;  // the common case, no root
+    const double d = spheres ? (a.centre - b.centre).norm()
+                             : segment_distance(a.minus_cap(), a.plus_cap(), b.minus_cap(), b.plus_cap());
+    const double depth = s - d;
+    if (depth > relative_tolerance * std::min(a.diameter, b.diameter))
+      t.add(id(i), id(j), depth, sphere_lens_volume(a.radius(), b.radius(), d));
+  };
+  // Queries in cell order, level after level: consecutive queries meet the same neighbours, which
+  // stay in the cache whatever the order of the file. Chunks are ranges of that order.
+  std::vector<const internal::CellIndex*> by_level;
+  std::vector<std::size_t> level_start{0};
+  for (const auto& [k, L] : levels) {
+    by_level.push_back(&*L.cells);
+    level_start.push_back(level_start.back() + L.cells->order().size());
+  }
+  const std::size_t nq = level_start.back();
+  const int chunks = static_cast<int>(std::min<std::size_t>(kChunks, std::max<std::size_t>(nq, 1)));
+  std::vector<PairTally> tally(static_cast<std::size_t>(chunks), PairTally{0, FixedPointSum(volume_scale)});
+  internal::parallel_chunks(
+      chunks, threads,
+      [&](int c) {
+        PairTally& t = tally[static_cast<std::size_t>(c)];
+        std::size_t lv = 0;
+        for (std::size_t q = nq * static_cast<std::size_t>(c) / chunks; q < nq * static_cast<std::size_t>(c + 1) / chunks; ++q) {
+          while (q >= level_start[lv + 1]) ++lv;
+          const std::size_t i = by_level[lv]->order()[q - level_start[lv]];
+          if (i >= owned) continue;  // a neighbour from another process: its own process asks
+          for (auto it = levels.lower_bound(level_of[i]); it != levels.end(); ++it)
+            it->second.cells->visit(ps[i].centre, reach(ps[i]) + it->second.max_reach, [&](std::uint32_t j) {
+              if (before(i, j)) test(i, j, t);
+            });
+        }
+      },
+      nullptr);
+  PairTally out{0, FixedPointSum(volume_scale)};
+  for (const PairTally& t : tally) out.merge(t);
+  return out;
+}
+
+}  // namespace internal
 
 double sphere_lens_volume(double a, double b, double distance) {
   constexpr double pi = std::numbers::pi;
@@ -34,41 +135,19 @@ double sphere_lens_volume(double a, double b, double distance) {
   return pi * h * h * (distance * distance + 2 * distance * s - 3 * (a - b) * (a - b)) / (12 * distance);
 }
 
-ParticleOverlaps find_overlaps(std::span<const Particle> particles, double relative_tolerance) {
+ParticleOverlaps find_overlaps(std::span<const Particle> particles, double relative_tolerance, unsigned threads) {
   ParticleOverlaps out;
   if (particles.size() < 2) return out;
-  // Level k holds the particles of reach in (2^(k-1), 2^k]; its cells have side 2^(k+1), so a
-  // particle of level k meets the particles of level >= k in the 27 or so cells around it.
-  std::map<int, internal::SpatialGrid> levels;
-  std::vector<int> level_of(particles.size());
-  for (std::size_t i = 0; i < particles.size(); ++i) {
-    const int k = std::ilogb(reach(particles[i])) + 1;
-    level_of[i] = k;
-    auto it = levels.try_emplace(k, std::ldexp(1.0, k + 1)).first;
-    it->second.insert(particles[i].centre, static_cast<int>(i));
-  }
-  for (std::size_t i = 0; i < particles.size(); ++i) {
-    const Particle& a = particles[i];
-    for (auto it = levels.lower_bound(level_of[i]); it != levels.end(); ++it) {
-      const double level_reach = std::ldexp(1.0, it->first);
-      it->second.visit(a.centre, reach(a) + level_reach, [&](int j) {
-        const auto ju = static_cast<std::size_t>(j);
-        // Each pair once: from the lower level, or from the lower index within one level.
-        if (level_of[ju] == level_of[i] && ju <= i) return;
-        const Particle& b = particles[ju];
-        const double d = axis_distance(a, b);
-        const double depth = a.radius() + b.radius() - d;
-        if (!(depth > relative_tolerance * std::min(a.diameter, b.diameter))) return;
-        ++out.pairs;
-        out.doubled_volume += sphere_lens_volume(a.radius(), b.radius(), d);
-        if (depth > out.max_depth) {
-          out.max_depth = depth;
-          out.worst_first = static_cast<long>(std::min(i, ju));
-          out.worst_second = static_cast<long>(std::max(i, ju));
-        }
-      });
-    }
-  }
+  double vmax = 0;
+  for (const Particle& p : particles) vmax = std::max(vmax, p.volume());
+  const double scale = vmax > 0 ? vmax * static_cast<double>(particles.size()) : 1.0;
+  const internal::PairTally t =
+      internal::search_overlaps(particles, {}, particles.size(), relative_tolerance, scale, threads);
+  out.pairs = t.pairs;
+  out.max_depth = t.depth;
+  out.worst_first = t.first;
+  out.worst_second = t.second;
+  out.doubled_volume = t.volume.value();
   return out;
 }
 

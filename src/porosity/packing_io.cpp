@@ -304,11 +304,11 @@ Packing read_lammps_dump(std::istream& in, const std::string& name, const InputL
   return last;
 }
 
-Packing read_packing(const std::filesystem::path& path, const InputLimits& limits) {
+Packing read_packing(const std::filesystem::path& path, const InputLimits& limits, unsigned threads) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw InputError(path.string(), "is a directory, not a packing file");
   // Regular files: the streaming block reader (packing_share.cpp); devices and pipes: line by line.
-  if (std::filesystem::is_regular_file(path, ec)) return read_packing_share(path, limits);
+  if (std::filesystem::is_regular_file(path, ec)) return read_packing_share(path, limits, nullptr, threads);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path.string(), "cannot open file");
   // The format from the first non-blank line; a stream that cannot seek back (a pipe) is read once.

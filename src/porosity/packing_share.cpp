@@ -5,6 +5,7 @@
 // std::from_chars into a vector reserved to the row count. The text is never held.
 #include <algorithm>
 #include <charconv>
+#include <cstring>
 #include <cmath>
 #include <optional>
 #include <system_error>
@@ -15,6 +16,7 @@
 #include "particle_row_check.hpp"
 
 #include "file_lines.hpp"
+#include "parallel.hpp"
 
 namespace ssimarch {
 
@@ -76,25 +78,33 @@ std::size_t column_of(std::string_view line, char sep, std::size_t k) {
   return pos + 1;
 }
 
-// Row errors of this share, with file line numbers; up to kMaxReported kept.
+// Row errors of a piece of the file, with file line numbers; up to kMaxReported kept. Pieces
+// merge in file order (`merge`), so the first rows reported are the file's first bad rows.
 struct RowErrors {
-  std::string name, text;
+  std::string name;
+  std::vector<std::string> lines;
   long count = 0;
   void add(long line, const std::string& what, std::size_t column = 0) {
     if (count++ >= kMaxReported) return;
     // Appended piece by piece (GCC 12's -Wrestrict misfires on "literal" + std::string temporaries).
-    text.append("\n  ").append(name).append(":").append(std::to_string(line));
-    if (column) text.append(":").append(std::to_string(column));
-    text.append(": ").append(what);
+    std::string t;
+    t.append("\n  ").append(name).append(":").append(std::to_string(line));
+    if (column) t.append(":").append(std::to_string(column));
+    lines.push_back(t.append(": ").append(what));
+  }
+  void merge(const RowErrors& o) {
+    for (const std::string& l : o.lines)
+      if (lines.size() < static_cast<std::size_t>(kMaxReported)) lines.push_back(l);
+    count += o.count;
   }
   std::string message() const {
     if (count == 0) return {};
-    std::string m = std::to_string(count) + " bad row" + (count > 1 ? "s" : "") + ":" + text;
+    std::string m = std::to_string(count) + " bad row" + (count > 1 ? "s" : "") + ":";
+    for (const std::string& l : lines) m += l;
     if (count > kMaxReported) m += "\n  ... and " + std::to_string(count - kMaxReported) + " more";
     return m;
   }
 };
-
 
 // Where the numbers of a row are: CSV columns or LAMMPS ATOMS columns, and how to read them.
 struct Layout {
@@ -109,16 +119,58 @@ struct Layout {
   long data_line = 1;            // file line of the first byte of the header (CSV) or snapshot
 };
 
-// Parses one data row; false (and an error recorded) when it is bad.
-bool parse_row(std::string_view line, const Layout& L, long ln, std::vector<std::string_view>& f, RowErrors& err,
-               Particle& p) {
+// The numbers of a well-formed row, read in one sweep without splitting the row into a vector of
+// fields: true when the row has at least L.ncol fields and every wanted field is a number and
+// nothing else, exactly the rows parse_row accepts (fields as split() cuts them, numbers as
+// number() reads them). A bad row goes to parse_row, which says what is wrong.
+bool fast_row(std::string_view line, const Layout& L, double* v) {
+  const int nvalues = L.sc ? 8 : 4;
+  int want[8] = {-1, -1, -1, -1, -1, -1, -1, -1};  // value index of field f, -1 if not wanted
+  std::size_t need = L.ncol;
+  for (int k = 0; k < nvalues; ++k) {
+    if (L.col[k] >= 8) return false;
+    want[L.col[k]] = k;
+    need = std::max(need, static_cast<std::size_t>(L.col[k]) + 1);
+  }
+  auto space = [](char c) { return c == ' ' || c == '\t'; };
+  auto trimmed = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f' || c == '\n'; };
+  const char* p = line.data();
+  const char* const end = p + line.size();
+  for (std::size_t f = 0; f < need; ++f) {
+    const char *b = p, *e = p;
+    if (L.lammps) {  // a run of characters other than blanks and tabs
+      while (b < end && space(*b)) ++b;
+      if (b == end) return false;
+      e = b;
+      while (e < end && !space(*e)) ++e;
+      p = e;
+    } else {  // up to the next separator, trimmed
+      if (f > 0 && p++ == end) return false;
+      e = static_cast<const char*>(std::memchr(p, L.sep, static_cast<std::size_t>(end - p)));
+      if (!e) e = end;
+      p = e;
+      while (b < e && trimmed(*b)) ++b;
+      while (e > b && trimmed(e[-1])) --e;
+    }
+    if (f < 8 && want[f] >= 0) {
+      if (b < e && *b == '+') ++b;
+      const auto r = std::from_chars(b, e, v[want[f]]);
+      if (r.ec != std::errc() || r.ptr != e) return false;
+    }
+  }
+  return true;
+}
+
+// The row split into fields and each wanted field read on its own: for rows fast_row declines,
+// to name what is wrong (false, an error recorded) or to read them after all.
+bool slow_row(std::string_view line, const Layout& L, long ln, std::vector<std::string_view>& f, RowErrors& err,
+              double* v) {
   split(L.lammps ? line : trim(line), L.sep, f);
   if (f.size() < L.ncol) {
     err.add(ln, "expected " + std::to_string(L.ncol) + " fields, found " + std::to_string(f.size()));
     return false;
   }
   const int nvalues = L.sc ? 8 : 4;
-  double v[8] = {0, 0, 0, 0, 0, 0, 0, 0};
   for (int k = 0; k < nvalues; ++k) {
     const auto x = number(f[static_cast<std::size_t>(L.col[k])]);
     if (!x) {
@@ -128,6 +180,14 @@ bool parse_row(std::string_view line, const Layout& L, long ln, std::vector<std:
     }
     v[k] = *x;
   }
+  return true;
+}
+
+// Parses one data row; false (and an error recorded) when it is bad.
+bool parse_row(std::string_view line, const Layout& L, long ln, std::vector<std::string_view>& f, RowErrors& err,
+               Particle& p) {
+  double v[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+  if (!fast_row(line, L, v) && !slow_row(line, L, ln, f, err, v)) return false;
   for (int k = 0; k < 3; ++k) p.centre[k] = L.scaled ? L.lo[k] + v[k] * (L.hi[k] - L.lo[k]) : v[k];
   p.diameter = L.radius ? 2 * v[3] : v[3];
   if (L.sc) {
@@ -273,23 +333,91 @@ ShareScan scan_share(const std::filesystem::path& path, std::uint64_t b, std::ui
   return s;
 }
 
-// Parses the rows of [b, e) that lie after the header; `first_line` is the file line of b's first line.
-void parse_share(const std::filesystem::path& path, const Layout& L, std::uint64_t b, std::uint64_t e, long first_line,
-                 long reserve, const InputLimits& limits, Packing& out, RowErrors& err) {
-  const std::uint64_t from = std::max(b, L.data_begin);
-  if (from >= e && b < e) return;
-  internal::FileLines lines(path, from, e, limits.max_line_bytes);
-  long ln = from == b ? first_line - 1 : L.data_line - 1;
+// A share is read by threads in pieces: equal byte ranges of at least kMinPiece bytes, which own
+// their lines as shares do (file_lines.hpp). The particles and the errors do not depend on the
+// number of pieces: pieces are put together in file order.
+constexpr std::uint64_t kMinPiece = std::uint64_t{4} << 20;
+
+struct Piece {
+  std::uint64_t b = 0, e = 0;
+  ShareScan scan;
+  long first_line = 0;  // file line of the piece's first line
+  std::size_t at = 0;   // where its rows go in the share's particles (its lines are an upper bound)
+  std::size_t rows = 0;
+  RowErrors err;
+};
+
+std::vector<Piece> scan_pieces(const std::filesystem::path& path, std::uint64_t b, std::uint64_t e,
+                               const InputLimits& limits, unsigned threads) {
+  const unsigned workers = internal::worker_count(threads);
+  const std::uint64_t n = std::clamp<std::uint64_t>((e - std::min(b, e)) / kMinPiece, 1, 4 * workers);
+  std::vector<Piece> pieces(static_cast<std::size_t>(n));
+  for (std::uint64_t k = 0; k < n; ++k) {
+    pieces[k].b = b + (e - b) * k / n;
+    pieces[k].e = b + (e - b) * (k + 1) / n;
+  }
+  internal::parallel_chunks(static_cast<int>(n), threads, [&](int k) {
+    Piece& p = pieces[static_cast<std::size_t>(k)];
+    p.scan = scan_share(path, p.b, p.e, limits);
+  }, nullptr);
+  return pieces;
+}
+
+// What the pieces' scans say of the whole share (line numbers relative to its first line).
+ShareScan share_scan(std::vector<Piece>& pieces) {
+  ShareScan s;
+  for (Piece& p : pieces) {
+    if (p.scan.too_long >= 0 && s.too_long < 0) s.too_long = s.lines + p.scan.too_long;
+    if (p.scan.snapshot >= 0) s.snapshot = p.scan.snapshot, s.snapshot_line = s.lines + p.scan.snapshot_line;
+    p.at = static_cast<std::size_t>(s.lines);
+    s.lines += p.scan.lines;
+  }
+  return s;
+}
+
+// Parses the rows of a piece that lie after the header into `out`, from its first line on.
+void parse_piece(const std::filesystem::path& path, const Layout& L, const InputLimits& limits, Piece& piece,
+                 Particle* out) {
+  const std::uint64_t from = std::max(piece.b, L.data_begin);
+  if (from >= piece.e && piece.b < piece.e) return;
+  internal::FileLines lines(path, from, piece.e, limits.max_line_bytes);
+  long ln = from == piece.b ? piece.first_line - 1 : L.data_line - 1;
   std::string_view line;
   std::vector<std::string_view> f;
-  out.particles.reserve(static_cast<std::size_t>(std::max(0L, reserve)));
   while (lines.next(line)) {
     ++ln;
-    const std::string_view t = trim(line);
-    if (t.empty() || (!L.lammps && t[0] == '#')) continue;
-    Particle p;
-    if (parse_row(line, L, ln, f, err, p)) out.particles.push_back(p);
+    // Blank and comment lines: trim() only when the first character says the line may be one.
+    if (line.empty() || line[0] == '#' || std::string_view(" \t\r\v\f\n").find(line[0]) != std::string_view::npos) {
+      const std::string_view t = trim(line);
+      if (t.empty() || (!L.lammps && t[0] == '#')) continue;
+    }
+    if (parse_row(line, L, ln, f, piece.err, out[piece.rows])) ++piece.rows;
   }
+}
+
+// Parses every piece on the threads and closes the gaps the headers and bad rows left.
+void parse_share(const std::filesystem::path& path, const Layout& L, const InputLimits& limits, long first_line,
+                 std::vector<Piece>& pieces, unsigned threads, Packing& out, RowErrors& err) {
+  std::size_t lines = 0;
+  for (Piece& p : pieces) {
+    p.first_line = first_line + static_cast<long>(p.at);
+    p.err.name = err.name;
+    lines += static_cast<std::size_t>(p.scan.lines);
+  }
+  out.particles.resize(lines);
+  internal::parallel_chunks(static_cast<int>(pieces.size()), threads, [&](int k) {
+    Piece& p = pieces[static_cast<std::size_t>(k)];
+    parse_piece(path, L, limits, p, out.particles.data() + p.at);
+  }, nullptr);
+  std::size_t n = 0;
+  for (const Piece& p : pieces) {
+    std::copy(out.particles.begin() + static_cast<std::ptrdiff_t>(p.at),
+              out.particles.begin() + static_cast<std::ptrdiff_t>(p.at + p.rows),
+              out.particles.begin() + static_cast<std::ptrdiff_t>(n));
+    n += p.rows;
+    err.merge(p.err);
+  }
+  out.particles.resize(n);
 }
 
 bool starts_lammps(const std::filesystem::path& path, const InputLimits& limits) {
@@ -305,7 +433,7 @@ bool starts_lammps(const std::filesystem::path& path, const InputLimits& limits)
 }  // namespace
 
 Packing read_packing_share(const std::filesystem::path& path, const InputLimits& limits,
-                           const ProfileCommunicator* comm) {
+                           const ProfileCommunicator* comm, unsigned threads) {
   const std::string name = path.string();
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) throw InputError(name, "is not a regular file (a share is a byte range)");
@@ -318,7 +446,8 @@ Packing read_packing_share(const std::filesystem::path& path, const InputLimits&
   const std::uint64_t b = size * static_cast<std::uint64_t>(part) / static_cast<std::uint64_t>(parts);
   const std::uint64_t e = size * static_cast<std::uint64_t>(part + 1) / static_cast<std::uint64_t>(parts);
   // Pass 1: lines of the share; file line numbers from the shares before.
-  const ShareScan scan = scan_share(path, b, e, limits);
+  std::vector<Piece> pieces = scan_pieces(path, b, e, limits, threads);
+  const ShareScan scan = share_scan(pieces);
   const long first_line = 1 + (comm ? comm->exclusive_prefix_sum(scan.lines) : 0);
   // An input error as "where \x1f message": the lowest share's is raised by every share.
   std::string problem;
@@ -350,7 +479,7 @@ Packing read_packing_share(const std::filesystem::path& path, const InputLimits&
       L = csv_layout(path, limits);
     }
     out.spherocylinders = L.sc;
-    parse_share(path, L, b, e, first_line, scan.lines, limits, out, err);
+    parse_share(path, L, limits, first_line, pieces, threads, out, err);
     long rows[2] = {static_cast<long>(out.particles.size()) + err.count, err.count};
     if (comm) comm->sum(std::span<long>(rows, 2));
     if (L.lammps && rows[0] != L.natoms && rows[1] == 0)

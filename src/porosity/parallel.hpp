@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <exception>
 #include <functional>
 #include <mutex>
@@ -26,11 +27,18 @@ inline void parallel_chunks(int chunks, unsigned threads, const std::function<vo
                             const std::function<void(double)>& progress) {
   std::atomic<int> next{0}, done{0};
   std::exception_ptr error;
-  std::mutex error_mutex;
+  std::mutex error_mutex, done_mutex;
+  std::condition_variable all_done;  // wakes the progress loop at the end, not at its next tick
+  auto finish_one = [&] {
+    if (done.fetch_add(1) + 1 == chunks) {
+      std::lock_guard<std::mutex> lock(done_mutex);
+      all_done.notify_all();
+    }
+  };
   auto worker = [&] {
     for (int k; (k = next.fetch_add(1)) < chunks;) {
       if (interrupt_requested()) {
-        done.fetch_add(1);
+        finish_one();
         continue;
       }
       try {
@@ -39,7 +47,7 @@ inline void parallel_chunks(int chunks, unsigned threads, const std::function<vo
         std::lock_guard<std::mutex> lock(error_mutex);
         if (!error) error = std::current_exception();
       }
-      done.fetch_add(1);
+      finish_one();
     }
   };
   const unsigned n = std::max(1u, std::min<unsigned>(worker_count(threads), static_cast<unsigned>(std::max(chunks, 1))));
@@ -49,7 +57,8 @@ inline void parallel_chunks(int chunks, unsigned threads, const std::function<vo
     try {
       while (done.load() < chunks) {
         progress(static_cast<double>(done.load()) / std::max(chunks, 1));
-        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        std::unique_lock<std::mutex> lock(done_mutex);
+        all_done.wait_for(lock, std::chrono::milliseconds(100), [&] { return done.load() >= chunks; });
       }
       progress(1.0);
     } catch (...) {

@@ -47,10 +47,16 @@ QuadResult lateral_area(const ParticleShape& s, double r, const BedSlab& slab, d
                                kKernelSamples);
   }
   const bool clip = slab.z_min > s.z_min() || slab.z_max < s.z_max();
-  if (s.particle().length == 0 && !clip) {
-    // A sphere the height range does not cut: closed form (docs/math/cylinder_in_sphere.md).
+  if (s.particle().length == 0) {
+    // Spheres: closed forms, whole or cut by the ends of the height range
+    // (docs/math/cylinder_in_sphere.md §2, §4).
     const Vec3& c = s.particle().centre;
-    out.value = cylinder_area_in_sphere(std::hypot(c.x(), c.y()), s.particle().radius(), r);
+    // sqrt of the sum of squares, not hypot (a third of the cost of a closed-form value), unless
+    // the squares leave the normal range (the job keeps lengths within [1e-100, 1e100] anyway).
+    const double q = c.x() * c.x() + c.y() * c.y();
+    const double rho = std::isnormal(q) ? std::sqrt(q) : std::hypot(c.x(), c.y()), a = s.particle().radius();
+    out.value = clip ? cylinder_area_in_sphere_slab(rho, a, r, c.z() - slab.z_min, slab.z_max - c.z())
+                     : cylinder_area_in_sphere(rho, a, r);
     out.evaluations = 1;
     return out;
   }

@@ -51,7 +51,8 @@ ParticleShape::ParticleShape(const Particle& p) : p_(p) {
   }
   const double dseg = std::sqrt(dist2_segment(0, 0, cm_.x(), cm_.y(), cp_.x(), cp_.y()));
   rho_min_ = std::max(0.0, dseg - a_);
-  rho_max_ = std::max(std::hypot(cp_.x(), cp_.y()), std::hypot(cm_.x(), cm_.y())) + a_;
+  const double rho_plus = std::hypot(cp_.x(), cp_.y());
+  rho_max_ = (h_ == 0 ? rho_plus : std::max(rho_plus, std::hypot(cm_.x(), cm_.y()))) + a_;
   z_min_ = std::min(cp_.z(), cm_.z()) - a_;
   z_max_ = std::max(cp_.z(), cm_.z()) + a_;
 }

@@ -46,16 +46,46 @@ struct Prepared {
   ParticleShape shape(std::size_t k) const { return ParticleShape(particles[used[k]]); }
 };
 
-Prepared prepare(std::span<const Particle> ps, const Container& c) {
+// Chunks of a parallel pass over n items that each hold m accumulators: at most kMaxChunks, and
+// few enough to keep the accumulators near 500,000 values (large maps). The count depends on n and
+// m only, never on the thread count.
+int chunk_count(std::size_t n, std::size_t m) {
+  const std::size_t mem_cap = std::max<std::size_t>(8, 500'000 / std::max<std::size_t>(1, m));
+  return static_cast<int>(std::max<std::size_t>(1, std::min({static_cast<std::size_t>(kMaxChunks), n, mem_cap})));
+}
+
+// [b, e) of chunk k of `chunks` over n items.
+std::pair<std::size_t, std::size_t> chunk_range(std::size_t n, int k, int chunks) {
+  return {n * static_cast<std::size_t>(k) / static_cast<std::size_t>(chunks),
+          n * static_cast<std::size_t>(k + 1) / static_cast<std::size_t>(chunks)};
+}
+
+Prepared prepare(std::span<const Particle> ps, const Container& c, unsigned threads) {
   if (ps.size() > std::numeric_limits<std::uint32_t>::max())
     throw InputError("packing", "more than 2^32 particles in one process: run it on more MPI ranks");
   Prepared out;
   out.particles = ps;
-  for (std::size_t i = 0; i < ps.size(); ++i) {
-    const ParticleShape s(ps[i]);
-    if (s.rho_min() >= c.radius || s.z_max() <= c.slab.z_min || s.z_min() >= c.slab.z_max) continue;
-    if (s.rho_max() > c.radius || s.z_min() < c.slab.z_min || s.z_max() > c.slab.z_max) ++out.clipped;
-    out.used.push_back(static_cast<std::uint32_t>(i));
+  const int chunks = chunk_count(ps.size(), 1);
+  std::vector<std::vector<std::uint32_t>> used(static_cast<std::size_t>(chunks));
+  std::vector<long> clipped(static_cast<std::size_t>(chunks), 0);
+  internal::parallel_chunks(chunks, threads, [&](int k) {
+    const auto [b, e] = chunk_range(ps.size(), k, chunks);
+    auto& u = used[static_cast<std::size_t>(k)];
+    u.reserve(e - b);
+    for (std::size_t i = b; i < e; ++i) {
+      const ParticleShape s(ps[i]);
+      if (s.rho_min() >= c.radius || s.z_max() <= c.slab.z_min || s.z_min() >= c.slab.z_max) continue;
+      if (s.rho_max() > c.radius || s.z_min() < c.slab.z_min || s.z_max() > c.slab.z_max) ++clipped[static_cast<std::size_t>(k)];
+      u.push_back(static_cast<std::uint32_t>(i));
+    }
+  }, nullptr);
+  std::size_t n = 0;
+  for (const auto& u : used) n += u.size();
+  out.used.reserve(n);
+  for (int k = 0; k < chunks; ++k) {
+    out.used.insert(out.used.end(), used[static_cast<std::size_t>(k)].begin(), used[static_cast<std::size_t>(k)].end());
+    used[static_cast<std::size_t>(k)] = {};
+    out.clipped += clipped[static_cast<std::size_t>(k)];
   }
   return out;
 }
@@ -76,21 +106,16 @@ ProfileSums empty_sums(std::span<const double> norm) {
 template <class F>
 ProfileSums run_chunks(const Prepared& prep, std::span<const double> norm, const ProfileOptions& opt,
                        F&& per_particle) {
-  const int n = static_cast<int>(prep.size());
-  const std::size_t nvalues = norm.size();
-  // Each chunk holds its own accumulators: cap their memory at about 64 MB for large maps.
-  const int mem_cap = static_cast<int>(std::max<std::size_t>(8, 500'000 / std::max<std::size_t>(1, nvalues)));
-  const int chunks = std::max(1, std::min({kMaxChunks, n, mem_cap}));
-  std::vector<ProfileSums> res(chunks);
+  const int chunks = chunk_count(prep.size(), norm.size());
+  std::vector<ProfileSums> res(static_cast<std::size_t>(chunks));
   internal::parallel_chunks(
       chunks, opt.threads,
       [&](int k) {
-        ProfileSums& cr = res[k];
+        ProfileSums& cr = res[static_cast<std::size_t>(k)];
         cr = empty_sums(norm);
-        const int b = static_cast<int>(static_cast<long>(n) * k / chunks);
-        const int e = static_cast<int>(static_cast<long>(n) * (k + 1) / chunks);
+        const auto [b, e] = chunk_range(prep.size(), k, chunks);
         // Ctrl-C: the rest of the chunk is skipped; parallel_chunks throws Interrupted.
-        for (int i = b; i < e && !interrupt_requested(); ++i) per_particle(prep.shape(i), cr);
+        for (std::size_t i = b; i < e && !interrupt_requested(); ++i) per_particle(prep.shape(i), cr);
       },
       opt.progress);
   ProfileSums total = empty_sums(norm);
@@ -114,13 +139,28 @@ void finish(const ProfileSums& sums, std::span<const double> norm, std::vector<d
   st.particles_clipped = sums.particles_clipped;
 }
 
-// Particles touching each value, over all processes (the accuracy budget is split among them).
+// Particles touching each value, over all processes (the accuracy budget is split among them):
+// each chunk marks the ends of its particles' index ranges, and a running sum turns the marks
+// into counts.
 template <class Range>
 std::vector<long> touching(const Prepared& prep, std::size_t m, const ProfileOptions& opt, Range&& range_of) {
+  const int chunks = chunk_count(prep.size(), m);
+  std::vector<std::vector<long>> marks(static_cast<std::size_t>(chunks));
+  internal::parallel_chunks(chunks, opt.threads, [&](int k) {
+    auto& d = marks[static_cast<std::size_t>(k)];
+    d.assign(m + 1, 0);
+    const auto [b, e] = chunk_range(prep.size(), k, chunks);
+    for (std::size_t i = b; i < e; ++i) {
+      const auto [lo, hi] = range_of(prep.shape(i));
+      ++d[lo];
+      --d[hi];
+    }
+  }, nullptr);
   std::vector<long> count(m, 0);
-  for (std::size_t k = 0; k < prep.size(); ++k) {
-    const auto [b, e] = range_of(prep.shape(k));
-    for (std::size_t j = b; j < e; ++j) ++count[j];
+  long run = 0;
+  for (std::size_t j = 0; j < m; ++j) {
+    for (const auto& d : marks) run += d[j];
+    count[j] = run;
   }
   if (opt.communicator) opt.communicator->sum(count);
   return count;
@@ -187,7 +227,7 @@ PorosityProfile radial_profile(std::span<const Particle> particles, const Contai
   for (double r : radii)
     if (!(r > 0) || r > c.radius)
       throw InputError("radii", "must lie in (0, R] = (0, " + number(c.radius) + "] (got " + number(r) + ")");
-  const Prepared prep = prepare(particles, c);
+  const Prepared prep = prepare(particles, c, opt.threads);
   const std::size_t m = radii.size();
   // Work proportional to the radii a particle touches: [rho_min, rho_max] located by bisection.
   auto range_of = [&](const ParticleShape& s) { return index_range(radii, s.rho_min(), s.rho_max()); };
@@ -214,7 +254,7 @@ PorosityProfile bin_profile(std::span<const Particle> particles, const Container
   require_sorted(edges, "bin edges");
   if (edges.size() < 2 || edges.front() < 0 || edges.back() > c.radius)
     throw InputError("bin edges", "need at least two values within [0, R] = [0, " + number(c.radius) + "]");
-  const Prepared prep = prepare(particles, c);
+  const Prepared prep = prepare(particles, c, opt.threads);
   const std::size_t m = edges.size() - 1;
   auto bins_of = [&](const ParticleShape& s) {
     // Bins k with [edges[k], edges[k+1]] overlapping [rho_min, rho_max].
@@ -267,7 +307,7 @@ PorosityProfile axial_profile(std::span<const Particle> particles, const Contain
                               const ProfileOptions& opt) {
   check_container(c);
   require_sorted(heights, "heights");
-  const Prepared prep = prepare(particles, c);
+  const Prepared prep = prepare(particles, c, opt.threads);
   const std::size_t m = heights.size();
   auto range_of = [&](const ParticleShape& s) { return index_range(heights, s.z_min(), s.z_max()); };
   const std::vector<long> count = touching(prep, m, opt, range_of);
@@ -292,7 +332,7 @@ PorosityMap porosity_map(std::span<const Particle> particles, const Container& c
   require_sorted(heights, "heights");
   for (double r : radii)
     if (!(r > 0)) throw InputError("map radii", "must be > 0 (got " + number(r) + ")");
-  const Prepared prep = prepare(particles, c);
+  const Prepared prep = prepare(particles, c, opt.threads);
   const std::size_t nr = radii.size(), nz = heights.size();
   std::vector<double> norm(nr * nz);
   for (std::size_t iz = 0; iz < nz; ++iz)

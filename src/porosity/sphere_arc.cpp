@@ -2,13 +2,28 @@
 #include "ssimarch/porosity/sphere_arc.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 
 #include <boost/math/special_functions/ellint_rd.hpp>
+#include <boost/math/special_functions/ellint_rf.hpp>
 #include <boost/math/special_functions/ellint_rg.hpp>
 
 namespace ssimarch {
+
+namespace {
+
+// Carlson's integrals in double precision: Boost's default policy promotes double arguments to
+// long double (x87 arithmetic, about twice the time); the duplication algorithms are accurate to
+// a few ulps in double (Carlson 1995, §2), far below the profiles' tolerances.
+using DoublePolicy = boost::math::policies::policy<boost::math::policies::promote_double<false>>;
+
+double carlson_rf(double x, double y, double z) { return boost::math::ellint_rf(x, y, z, DoublePolicy()); }
+double carlson_rd(double x, double y, double z) { return boost::math::ellint_rd(x, y, z, DoublePolicy()); }
+double carlson_rg(double x, double y, double z) { return boost::math::ellint_rg(x, y, z, DoublePolicy()); }
+
+}  // namespace
 
 double circle_sphere_arc(const Vec3& c, double diameter, double z, double r) {
   const double a = diameter / 2;
@@ -38,12 +53,62 @@ double cylinder_area_in_sphere(double rho, double a, double r) {
   if (excess <= 0) {
     // Whole circle inside the shadow (m <= 1): L = 8 r sqrt(s) E(m), E(m) = 2 R_G(0, 1 - m, 1).
     const double mc = -excess / s;  // 1 - m = (A - B) / (A + B)
-    return 16 * r * std::sqrt(s) * boost::math::ellint_rg(0.0, mc, 1.0);
+    return 16 * r * std::sqrt(s) * carlson_rg(0.0, mc, 1.0);
   }
   // Arc |t| < t0 (m > 1): reciprocal modulus k = 1/m, L = 8 r s / sqrt(2B) * kc/3 * R_D(0, 1, kc)
   // with kc = 1 - 1/m = (B - A) / (2B); kc R_D(0, 1, kc) -> 3 as kc -> 0 (no cancellation).
   const double kc = excess / twoB;
-  return 8 * r * s / std::sqrt(twoB) * kc / 3 * boost::math::ellint_rd(0.0, 1.0, kc);
+  return 8 * r * s / std::sqrt(twoB) * kc / 3 * carlson_rd(0.0, 1.0, kc);
+}
+
+namespace {
+
+// G(t) = integral over [0, t] of h = sqrt(s - 2B sin^2(u/2)) du at the angle where h = tau, for
+// 0 < tau with tau^2 between h(T)^2 and s (docs/math/cylinder_in_sphere.md §4, eq. 9):
+// G = 2 s sin(t/2) (R_F(s c2, tau^2, s) - (2B/3) sin^2(t/2) R_D(s c2, tau^2, s)), c2 = cos^2(t/2).
+void angle_and_integral(double s, double twoB, double excess, double tau, double& t, double& G) {
+  const double sn2 = (s - tau * tau) / twoB, c2 = (excess + tau * tau) / twoB;
+  const double sn = std::sqrt(sn2);
+  t = 2 * std::atan2(sn, std::sqrt(c2));
+  const double x = s * c2, y = tau * tau;
+  G = 2 * s * sn * (carlson_rf(x, y, s) - twoB / 3 * sn2 * carlson_rd(x, y, s));
+}
+
+}  // namespace
+
+double cylinder_area_in_sphere_slab(double rho, double a, double r, double below, double above) {
+  // L = 2 r * integral over t in [0, T] of len(h(t)), len(h) = max(0, min(h, above) + min(h, below)),
+  // h(t) = sqrt(A + B cos t) decreasing in t; len is linear in h between its breakpoints, so each
+  // piece is alpha (G(t1) - G(t0)) + beta (t1 - t0) (docs/math/cylinder_in_sphere.md §4).
+  const double pi = std::numbers::pi;
+  if (!(r > 0) || !(a > 0)) return 0.0;
+  const double s = (a - r + rho) * (a + r - rho);
+  if (!(s > 0)) return 0.0;
+  auto len = [&](double h) { return std::max(0.0, std::min(h, above) + std::min(h, below)); };
+  const double h0 = std::sqrt(s);
+  if (rho == 0) return 2 * pi * r * len(h0);
+  const double twoB = 4 * r * rho, excess = (r + rho - a) * (r + rho + a);
+  const double hT = excess < 0 ? std::sqrt(-excess) : 0.0;  // h at the end T of the range of t
+  const double T = excess < 0 ? pi : 2 * std::atan2(std::sqrt(s / twoB), std::sqrt(std::max(0.0, excess) / twoB));
+  const double GT = cylinder_area_in_sphere(rho, a, r) / (4 * r);
+  std::array<double, 6> br{h0, hT};
+  std::size_t n = 2;
+  for (double v : {above, below, -above, -below})
+    if (v > hT && v < h0) br[n++] = v;
+  for (std::size_t i = 1; i < n; ++i)  // descending insertion sort (std::sort on a 6-array trips GCC 12's -Warray-bounds)
+    for (std::size_t j = i; j > 0 && br[j] > br[j - 1]; --j) std::swap(br[j], br[j - 1]);
+  double total = 0, t_hi = 0, G_hi = 0;  // at h = br[0] = h0: t = 0, G = 0
+  for (std::size_t k = 1; k < n; ++k) {
+    double t_lo = T, G_lo = GT;
+    if (br[k] > hT) angle_and_integral(s, twoB, excess, br[k], t_lo, G_lo);
+    const double mid = 0.5 * (br[k - 1] + br[k]);
+    const double alpha = (mid < above) + (mid < below);
+    const double beta = (mid < above ? 0.0 : above) + (mid < below ? 0.0 : below);
+    if (br[k - 1] > br[k] && alpha * mid + beta > 0) total += alpha * (G_lo - G_hi) + beta * (t_lo - t_hi);
+    t_hi = t_lo;
+    G_hi = G_lo;
+  }
+  return 2 * r * total;
 }
 
 double disk_disk_area(double r1, double r2, double d) {

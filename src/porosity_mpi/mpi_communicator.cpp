@@ -5,6 +5,8 @@
 
 #include <cstdint>
 #include <cstdlib>
+#include <limits>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -118,6 +120,32 @@ std::string MpiCommunicator::first_error(const std::string& message) const {
   MPI_Bcast(out.data(), static_cast<int>(n), MPI_CHAR, first, MPI_COMM_WORLD);
   if (rank_ == first) bytes_sent_ += n;
   return out;
+}
+
+std::string MpiCommunicator::exchange(std::string bytes, const std::vector<std::size_t>& counts) const {
+  // Counts first (MPI_Alltoall), then the bytes (MPI_Alltoallv: int counts and displacements, so
+  // at most 2 GiB sent or received by one rank; more ranks split a larger bed).
+  const auto n = static_cast<std::size_t>(size_);
+  std::vector<int> send_counts(n), recv_counts(n), send_at(n), recv_at(n);
+  constexpr std::size_t kMax = static_cast<std::size_t>(std::numeric_limits<int>::max());
+  if (bytes.size() > kMax) throw std::length_error("MPI exchange of more than 2 GiB from one rank: run on more ranks");
+  for (std::size_t k = 0, at = 0; k < n; at += counts[k], ++k) {
+    send_counts[k] = static_cast<int>(counts[k]);
+    send_at[k] = static_cast<int>(at);
+  }
+  MPI_Alltoall(send_counts.data(), 1, MPI_INT, recv_counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  std::size_t received = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (received > kMax) break;
+    recv_at[k] = static_cast<int>(received);
+    received += static_cast<std::size_t>(recv_counts[k]);
+  }
+  if (received > kMax) throw std::length_error("MPI exchange of more than 2 GiB to one rank: run on more ranks");
+  std::string recv(received, '\0');
+  MPI_Alltoallv(bytes.data(), send_counts.data(), send_at.data(), MPI_BYTE, recv.data(), recv_counts.data(),
+                recv_at.data(), MPI_BYTE, MPI_COMM_WORLD);
+  bytes_sent_ += static_cast<long>(bytes.size() + sizeof(int) * n);
+  return recv;
 }
 
 bool launched_by_mpirun() {

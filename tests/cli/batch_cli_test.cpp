@@ -13,6 +13,7 @@
 #include <sstream>
 #include <string>
 
+#include "testing/batch_outputs.hpp"
 #include "testing/cli_run.hpp"
 
 namespace {
@@ -24,30 +25,14 @@ using ssimarch::testing::CliRun;
 
 fs::path scratch() { return ssimarch::testing::cli_scratch_dir(); }
 
+using ssimarch::testing::read_json;
+using ssimarch::testing::without_times;
+
 std::string write_file(const std::string& name, const std::string& text) {
-  fs::path p = scratch() / name;
-  std::ofstream(p) << text;
-  return p.string();
+  return ssimarch::testing::write_scratch_file(name, text);
 }
 
-json without_times(json j) {
-  if (j.is_object()) {
-    j.erase("time_ms");
-    for (auto& [k, v] : j.items()) v = without_times(v);
-  } else if (j.is_array()) {
-    for (auto& v : j) v = without_times(v);
-  }
-  return j;
-}
-
-json read_json(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return json::parse(s.str());
-}
-
-const std::string kExamples = std::string(SSIMARCH_SOURCE_DIR) + "/examples/";
+const std::string& kExamples = ssimarch::testing::examples_dir();
 
 // Eight surfaces (28 pairs: closed-form quadric pairs, traced tori, empty pairs), two example
 // scenes, and a malformed job in the middle.

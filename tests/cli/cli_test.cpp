@@ -16,6 +16,7 @@
 #include <tuple>
 #include <unistd.h>
 
+#include "testing/batch_outputs.hpp"
 #include "testing/cli_run.hpp"
 
 namespace {
@@ -30,12 +31,10 @@ fs::path scratch() { return ssimarch::testing::cli_scratch_dir(); }
 CliRun run(const std::string& args) { return ssimarch::testing::run_cli(args); }
 
 std::string write_file(const std::string& name, const std::string& text) {
-  fs::path p = scratch() / name;
-  std::ofstream(p) << text;
-  return p.string();
+  return ssimarch::testing::write_scratch_file(name, text);
 }
 
-const std::string kExamples = std::string(SSIMARCH_SOURCE_DIR) + "/examples/";
+const std::string& kExamples = ssimarch::testing::examples_dir();
 
 TEST(Cli, TraceWritesJsonWithTheExactLength) {
   CliRun r = run("trace " + kExamples + "thesis_pair2_cylinder_sphere.json");

@@ -13,6 +13,7 @@
 #include "ssimarch/io/batch_file.hpp"
 #include "ssimarch/io/scene.hpp"
 #include "ssimarch/io/trace_writers.hpp"
+#include "testing/batch_outputs.hpp"
 
 namespace ssimarch {
 namespace {
@@ -20,18 +21,9 @@ namespace {
 using ::testing::HasSubstr;
 using nlohmann::json;
 
-// The output without its wall times (the only part that may differ between runs).
-json without_times(json j) {
-  if (j.is_object()) {
-    j.erase("time_ms");
-    for (auto& [k, v] : j.items()) v = without_times(v);
-  } else if (j.is_array()) {
-    for (auto& v : j) v = without_times(v);
-  }
-  return j;
-}
+using testing::without_times;
 
-const std::string kExamples = std::string(SSIMARCH_SOURCE_DIR) + "/examples/";
+const std::string& kExamples = testing::examples_dir();
 
 TEST(ParallelTrace, AScenesIntersectionsGiveTheSerialOutputOnAnyThreadCount) {
   // Four intersections of which the certified search and the tracer do real work.

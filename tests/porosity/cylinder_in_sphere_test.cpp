@@ -9,6 +9,7 @@
 #include <numbers>
 #include <random>
 #include <thread>
+#include <vector>
 
 #include "ssimarch/porosity/fixed_point_sum.hpp"
 #include "ssimarch/porosity/particle_integrals.hpp"
@@ -45,6 +46,54 @@ TEST(porosity_CylinderInSphere, MatchesAdaptiveQuadratureOverTheAngle) {
     ASSERT_NEAR(cf, q, 1e-12 * scale) << "rho=" << rho << " a=" << a << " r=" << r;
   }
   RecordProperty("worst_relative_difference", std::to_string(worst));
+}
+
+// The same area between the planes at `below` under and `above` over the centre, by adaptive
+// quadrature of the clipped chord, split where the half-chord h(t) crosses a plane (acos).
+double quadrature_area_slab(double rho, double a, double r, double below, double above) {
+  const double A = a * a - r * r - rho * rho, B = 2 * r * rho;
+  if (A + B <= 0) return 0;
+  const double t0 = A - B >= 0 ? kPi : std::acos(-A / B);
+  auto len = [&](double t) {
+    const double h = std::sqrt(std::max(0.0, A + B * std::cos(t)));
+    return std::max(0.0, std::min(h, above) + std::min(h, below));
+  };
+  std::vector<double> cuts{0.0, t0};
+  for (double v : {above, below, -above, -below})
+    if (v > 0 && (v * v - A) / B > -1 && (v * v - A) / B < 1 && std::acos((v * v - A) / B) < t0)
+      cuts.push_back(std::acos((v * v - A) / B));
+  std::sort(cuts.begin(), cuts.end());
+  double total = 0;
+  for (std::size_t k = 0; k + 1 < cuts.size(); ++k) total += integrate_sqrt_ends(len, cuts[k], cuts[k + 1], 1e-16).value;
+  return 2 * r * total;
+}
+
+TEST(porosity_CylinderInSphere, CutByTheHeightRangeMatchesAdaptiveQuadrature) {
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> U(0, 1);
+  double worst = 0;
+  for (int k = 0; k < 4000; ++k) {
+    const double a = 0.05 + U(rng), rho = 3 * U(rng) * (k % 7 == 0 ? 1e-3 : 1);
+    const double r = std::max(1e-9, rho - a + 2 * a * U(rng));
+    // One plane, both, the centre outside the slab, a slab inside the ball, a plane at the centre.
+    double below = a * (2.4 * U(rng) - 1.2), above = a * (2.4 * U(rng) - 1.2);
+    if (k % 5 == 0) below = 10 * a;
+    if (k % 11 == 0) above = 0;
+    if (below + above <= 0) above = -below + a * (1e-3 + 0.3 * U(rng));  // the slab's height is > 0
+    const double cf = cylinder_area_in_sphere_slab(rho, a, r, below, above);
+    const double q = quadrature_area_slab(rho, a, r, below, above);
+    const double scale = 4 * kPi * r * a;
+    worst = std::max(worst, std::abs(cf - q) / scale);
+    ASSERT_NEAR(cf, q, 1e-12 * scale) << "rho=" << rho << " a=" << a << " r=" << r << " below=" << below
+                                      << " above=" << above;
+  }
+  RecordProperty("worst_relative_difference", std::to_string(worst));
+  // A slab holding the whole ball is the uncut area; the two halves of a ball cut at its centre add
+  // up to it.
+  EXPECT_NEAR(cylinder_area_in_sphere_slab(1.2, 0.5, 1.0, 3, 3), cylinder_area_in_sphere(1.2, 0.5, 1.0), 1e-15);
+  EXPECT_NEAR(cylinder_area_in_sphere_slab(1.2, 0.5, 1.0, 3, 0) + cylinder_area_in_sphere_slab(1.2, 0.5, 1.0, 0, 3),
+              cylinder_area_in_sphere(1.2, 0.5, 1.0), 1e-14);
+  EXPECT_NEAR(cylinder_area_in_sphere_slab(0.0, 1.0, 0.6, 0.2, 0.3), 2 * kPi * 0.6 * 0.5, 1e-15);
 }
 
 TEST(porosity_CylinderInSphere, ElementaryLimits) {

@@ -3,7 +3,8 @@
 porosity` with 1, 2 and 3 ranks writes the same files, byte for byte, as the plain single-process
 run (CSV and LAMMPS inputs, spheres and spherocylinders, several profiles at once); a rank with no
 particles; an empty packing; a malformed row in the middle of a large dump (one clear error naming
-file:line, exit status 2, no output file).
+file:line, exit status 2, no output file); the overlap search (the summary's counts, the warning,
+--strict) is the same on every rank count.
 
     mpi_porosity_test.py SSIMARCH MPIRUN WORKDIR
 """
@@ -45,7 +46,7 @@ def profiles_equal(packing, radius, extra, tag):
         check(r.stderr.count("bulk porosity:") == 1, f"{tag}: {ranks} ranks: one report, from rank 0: {r.stderr}")
         files = {p.name: p.read_bytes() for p in sorted(d.iterdir()) if p.suffix == ".csv"}
         summary = json.loads((d / "s.json").read_text())
-        for k in ("timings_s", "overlaps", "outputs"):
+        for k in ("timings_s", "outputs"):
             summary.pop(k, None)
         outs[ranks] = (files, summary)
     base = outs[0]
@@ -54,6 +55,25 @@ def profiles_equal(packing, radius, extra, tag):
         for name, data in base[0].items():
             check(outs[ranks][0].get(name) == data, f"{tag}: {name} differs on {ranks} ranks")
         check(outs[ranks][1] == base[1], f"{tag}: summary differs on {ranks} ranks: {outs[ranks][1]} vs {base[1]}")
+
+
+def strict_equal(packing, radius):
+    """The overlap search on 0 (no mpirun), 1, 2, 3 ranks: the same warning (pair count, worst pair and
+    depth), said once; under --strict the same failure, exit status 1, no output."""
+    said = {}
+    for ranks in (0, 1, 2, 3):
+        out = WORK / f"strict_{ranks}.csv"
+        r = run(ranks, ["porosity", str(packing), "--container-radius", str(radius), "--radii", "10", "-q",
+                        "-o", str(out), "--threads", "2"])
+        warning = [l for l in r.stderr.splitlines() if "pairs of particles overlap" in l]
+        check(r.returncode == 0 and len(warning) == 1, f"overlaps on {ranks} ranks: {r.returncode} {r.stderr}")
+        out.unlink(missing_ok=True)
+        s = run(ranks, ["porosity", str(packing), "--container-radius", str(radius), "--radii", "10", "--strict",
+                        "-o", str(out)])
+        check(s.returncode == 1 and "--strict" in s.stderr and not out.exists(),
+              f"--strict on {ranks} ranks: {s.returncode} {s.stderr}")
+        said[ranks] = warning[0] if warning else None
+    check(len(set(said.values())) == 1 and said[0], f"overlap warnings differ: {said}")
 
 
 def spheres_csv(path, n, R, seed):
@@ -83,6 +103,7 @@ def main():
     bed = WORK / "bed.csv"
     spheres_csv(bed, 3000, 4.0, 1)
     profiles_equal(bed, 4.0, ["--radii", "60", "--axial", "25", "--map", "6,5"], "spheres")
+    strict_equal(bed, 4.0)
     rods = WORK / "rods.csv"
     rng = random.Random(2)
     with open(rods, "w") as f:

@@ -82,6 +82,28 @@ class ThreadGroup {
       return {};
     }
 
+    std::string exchange(std::string bytes, const std::vector<std::size_t>& counts) const override {
+      // Every member posts all its messages with their counts; member k keeps the k-th of each.
+      std::string packed;
+      for (std::size_t c : counts) {
+        const std::uint64_t n = c;
+        packed.append(reinterpret_cast<const char*>(&n), sizeof n);
+      }
+      packed += bytes;
+      std::string out;
+      for (const std::string& all : g_.gather(rank_, packed)) {
+        std::size_t at = sizeof(std::uint64_t) * static_cast<std::size_t>(g_.n_), from = at, mine = 0;
+        for (int k = 0; k < g_.n_; ++k) {
+          std::uint64_t n = 0;
+          std::memcpy(&n, all.data() + sizeof n * static_cast<std::size_t>(k), sizeof n);
+          if (k == rank_) from = at, mine = n;
+          at += n;
+        }
+        out.append(all, from, mine);
+      }
+      return out;
+    }
+
    private:
     template <class T>
     std::vector<std::vector<T>> gather_values(const std::vector<T>& mine) const {

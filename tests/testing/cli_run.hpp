@@ -35,6 +35,13 @@ inline std::filesystem::path cli_scratch_dir() {
   return dir;
 }
 
+/// Writes `text` to the file `name` in the scratch directory; returns its path.
+inline std::string write_scratch_file(const std::string& name, const std::string& text) {
+  const std::filesystem::path p = cli_scratch_dir() / name;
+  std::ofstream(p) << text;
+  return p.string();
+}
+
 /// Runs `ssimarch <args>` through the shell; stdout and stderr are captured separately.
 inline CliRun run_cli(const std::string& args) {
   const std::filesystem::path bin(SSIMARCH_CLI);

@@ -19,12 +19,15 @@ class FixedPointSum {
 
   FixedPointSum() = default;
   /// Quantum 2^(ilogb(scale) - kDigitsBelowScale); scale > 0 and finite.
-  explicit FixedPointSum(double scale) : exponent_(std::ilogb(scale) - kDigitsBelowScale) {}
+  explicit FixedPointSum(double scale)
+      : exponent_(std::ilogb(scale) - kDigitsBelowScale), factor_(std::ldexp(1.0, -exponent_)) {}
 
   void add(double v) {
-    // ldexp by a power of two is exact; nearbyint rounds once; |x| <= 2^126 converts exactly.
-    const double x = std::nearbyint(std::ldexp(v, -exponent_));
-    total_ += static_cast<Int>(x);
+    if (v == 0) return;
+    // Scaling by a power of two is exact (a product by factor_ when 2^-exponent is a normal double,
+    // else ldexp: both correctly rounded, so the same bits); nearbyint rounds once.
+    const double x = std::nearbyint(std::isnormal(factor_) ? v * factor_ : std::ldexp(v, -exponent_));
+    total_ += to_int(x);
   }
   FixedPointSum& operator+=(const FixedPointSum& o) {
     total_ += o.total_;
@@ -46,7 +49,19 @@ class FixedPointSum {
  private:
   __extension__ typedef __int128 Int;  // GCC/Clang: 128-bit two's complement; wrap-around via UInt
   __extension__ typedef unsigned __int128 UInt;
+  // An integral double |x| <= 2^126 as a 128-bit integer, exactly: through 64-bit conversions
+  // (one instruction each) instead of the library's double -> __int128 call. Below 2^63 directly;
+  // else x = hi 2^64 + mid 2^32 + lo with every part exact (multiples of ulp(x), under 2^53).
+  static Int to_int(double x) {
+    if (std::abs(x) < 0x1p63) return static_cast<Int>(static_cast<long long>(x));
+    const double hi = std::trunc(x * 0x1p-64), rest = x - hi * 0x1p64;
+    const double mid = std::trunc(rest * 0x1p-32), lo = rest - mid * 0x1p32;
+    return static_cast<Int>(static_cast<long long>(hi)) * (Int{1} << 64) +
+           static_cast<Int>(static_cast<long long>(mid)) * (Int{1} << 32) + static_cast<Int>(static_cast<long long>(lo));
+  }
+
   int exponent_ = 0;
+  double factor_ = 1.0;
   Int total_ = 0;
 };
 

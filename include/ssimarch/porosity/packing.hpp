@@ -27,15 +27,16 @@ struct Packing {
 /// Reads a CSV or a LAMMPS dump (recognised by a first line starting with "ITEM:"). A UTF-8 byte
 /// order mark before the first line is skipped. A file larger than limits.max_packing_bytes or a
 /// line longer than limits.max_line_bytes is an InputError (core/input_limits.hpp).
-Packing read_packing(const std::filesystem::path& path, const InputLimits& limits = {});
+Packing read_packing(const std::filesystem::path& path, const InputLimits& limits = {}, unsigned threads = 0);
 /// Streaming reader of a regular file (CSV or LAMMPS dump, the formats above): the file is read in
 /// 4 MiB blocks, never held. With a communicator, this process reads only its share: the lines
 /// whose first byte lies in the rank-th of size() equal byte ranges (of a LAMMPS dump, the rows of
 /// the last snapshot there), and every process gets the same InputError (the first share's) for a
 /// bad file; row errors name the file's line. Without one it reads the whole file. The shares'
-/// particles, concatenated in rank order, are the file's in order.
+/// particles, concatenated in rank order, are the file's in order. A share is read and parsed by
+/// `threads` workers (0: the library's thread count) in pieces of at least 4 MiB.
 Packing read_packing_share(const std::filesystem::path& path, const InputLimits& limits = {},
-                           const ProfileCommunicator* comm = nullptr);
+                           const ProfileCommunicator* comm = nullptr, unsigned threads = 0);
 Packing read_packing_csv(std::istream& in, const std::string& name, const InputLimits& limits = {});
 Packing read_lammps_dump(std::istream& in, const std::string& name, const InputLimits& limits = {});
 

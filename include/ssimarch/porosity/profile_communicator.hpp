@@ -2,7 +2,8 @@
 // docs/scaling.md). The porosity module holds no MPI code: a process computes the profiles of its
 // share of the particles with ProfileOptions::communicator set, and the profile functions call it
 // to add the particle counts (accuracy budget) and the partial sums over all processes. Sums are
-// FixedPointSum totals, so the result has the same bits for any number of processes.
+// FixedPointSum totals, so the result has the same bits for any number of processes. The overlap
+// search (overlaps.hpp) also exchanges particles between processes.
 #pragma once
 
 #include <span>
@@ -51,6 +52,11 @@ class ProfileCommunicator {
   /// The non-empty `message` of the lowest process that has one ("" when none has), on every
   /// process: an input error found by one process's share is reported by all of them.
   virtual std::string first_error(const std::string& message) const = 0;
+  /// All-to-all exchange of bytes: `bytes` holds the messages to processes 0, 1, ... one after the
+  /// other, `counts[k]` bytes for process k (counts.size() == size()); returns what the processes
+  /// sent to this one, concatenated in process order (taken by value: the caller's buffer is moved
+  /// in, not copied). The overlap search moves particles with it.
+  virtual std::string exchange(std::string bytes, const std::vector<std::size_t>& counts) const = 0;
 };
 
 }  // namespace ssimarch

@@ -20,6 +20,12 @@ double circle_sphere_arc(const Vec3& centre, double diameter, double z, double r
 /// few ulps relative to L. Model length^2.
 double cylinder_area_in_sphere(double rho, double a, double r);
 
+/// The same area between two horizontal planes, at heights `below` under and `above` over the
+/// ball's centre (negative when the centre lies outside the slab): the lateral area of a sphere
+/// the height range cuts. Closed form through Carlson's R_F and R_D at the angles where the
+/// chord reaches a plane (docs/math/cylinder_in_sphere.md §4). Model length^2.
+double cylinder_area_in_sphere_slab(double rho, double a, double r, double below, double above);
+
 /// Area of the intersection of two disks (radii r1, r2, centre distance d), the "lens" area.
 double disk_disk_area(double r1, double r2, double d);
 

@@ -28,6 +28,7 @@ class MpiCommunicator final : public ProfileCommunicator {
   long exclusive_prefix_sum(long value) const override;
   long max(long value) const override;
   std::string first_error(const std::string& message) const override;
+  std::string exchange(std::string bytes, const std::vector<std::size_t>& counts) const override;
   /// Bytes this rank has sent in reductions so far (the model of docs/scaling.md).
   long bytes_sent() const { return bytes_sent_; }
 

@@ -1,0 +1,35 @@
+// The overlap search of overlaps.hpp on one process's particles (internal to porosity): the
+// particles are numbered by `ids` (their indices in the whole packing), and only pairs tested
+// from the first `owned` of them are counted; the others are neighbours from other processes.
+#pragma once
+
+#include <cstddef>
+#include <span>
+
+#include "ssimarch/porosity/fixed_point_sum.hpp"
+#include "ssimarch/porosity/particle.hpp"
+
+namespace ssimarch::internal {
+
+/// Overlapping pairs found so far: count, doubled volume, and the deepest pair (ties: smallest ids).
+struct PairTally {
+  long pairs = 0;
+  FixedPointSum volume;
+  double depth = 0.0;
+  long first = -1, second = -1;
+
+  /// A pair of depth `d` between the particles numbered i and j, lens volume v.
+  void add(long i, long j, double d, double v);
+  void merge(const PairTally& o);
+};
+
+/// Grid level of a particle: the power of two above its reach (centre to farthest point).
+int overlap_level(const Particle& p);
+
+/// Pairs (a, b) with a among the first `owned` particles, (level, id) of a before that of b, and
+/// depth above relative_tolerance times the smaller diameter. `ids` empty: particle k is numbered k.
+/// The doubled volume is summed with the quantum of FixedPointSum(volume_scale).
+PairTally search_overlaps(std::span<const Particle> particles, std::span<const long> ids, std::size_t owned,
+                          double relative_tolerance, double volume_scale, unsigned threads);
+
+}  // namespace ssimarch::internal
