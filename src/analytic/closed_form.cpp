@@ -22,12 +22,6 @@ namespace ssimarch {
 
 namespace {
 
-// Gap (relative to the problem's scale) and sine of the angle between the normals below which a
-// double root of the discriminant is taken as the singular point it stands for; the tracer's
-// locate_singular_point converges to 1e-10 (LocateOptions::gap_tolerance) and 1e-6
-// (sine_tolerance), and a double root found by bisection is much closer. Dimensionless.
-constexpr double kCrossingTolerance = 1e-7;
-
 // The whole (unclipped) section, and which closed form gave it.
 std::optional<std::vector<Conic>> section(const Surface& a, const Surface& b, double scale, std::string* pair) {
   for (int order = 0; order < 2; ++order) {
@@ -90,7 +84,7 @@ double distance_to(const TracedCurve& c, const Vec3& p) {
 // with the curves through each. A root of multiplicity 2 is a node whose record the closed form
 // gives exactly (ruled_crossing.hpp); any other (a tacnode or higher contact: Delta'' = 0) is
 // classified as the tracer does it (topology/singular_registry.hpp: local curve, type,
-// half-branches). False when one is not a singular point to within kCrossingTolerance: the caller
+// half-branches). False when one is not a singular point to within kClosedFormCrossing: the caller
 // then traces.
 bool crossing_reports(const Problem& problem, const RuledCurves& curves, const RuledSection& section,
                       const std::vector<Slab>& region, ClosedFormResult* out) {
@@ -108,7 +102,7 @@ bool crossing_reports(const Problem& problem, const RuledCurves& curves, const R
     const Linearization L = problem.linearize(at.x);
     at.gap = L.distance;
     at.sine = L.normal_first.cross(L.normal_second).norm();
-    if (!(at.gap <= kCrossingTolerance * problem.scale() && at.sine <= kCrossingTolerance)) return false;
+    if (!(at.gap <= kClosedFormCrossing * problem.scale() && at.sine <= kClosedFormCrossing)) return false;
     at.status = LocateStatus::kConverged;
     if (std::any_of(reports.begin(), reports.end(), [&](const SingularPointReport& r) { return (r.p - p).norm() <= merge; }))
       continue;

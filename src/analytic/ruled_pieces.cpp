@@ -92,10 +92,13 @@ void add_crossings(std::vector<double>* params, const std::vector<double>& cross
 }
 
 std::optional<TracedCurve> make_curve(const RuledCurves& rc, const RuledLoop& loop, double lo, double hi, bool closed,
-                                      double deviation, double max_chord, const std::vector<double>& crossing) {
+                                      double deviation, double max_chord, const std::vector<double>& crossing,
+                                      std::optional<std::vector<double>> params = std::nullopt) {
   TracedCurve curve;
   curve.closed = closed;
-  auto params = internal::sample_chord_parameters([&](double t) { return at(rc, loop, t); }, lo, hi, deviation, max_chord, kStartPieces, kMaxSamples);
+  // The samples of [lo, hi] (given when the caller has them already: a whole loop).
+  if (!params)
+    params = internal::sample_chord_parameters([&](double t) { return at(rc, loop, t); }, lo, hi, deviation, max_chord, kStartPieces, kMaxSamples);
   if (!params) return std::nullopt;
   add_crossings(&*params, crossing, loop.period(), lo, hi);
   for (double phi : *params) {
@@ -149,6 +152,7 @@ std::optional<std::vector<TracedCurve>> ruled_curves_in(const RuledCurves& rc, c
     auto sampled = internal::sample_chord_parameters([&](double p) { return at(rc, loop, p); }, 0, L, deviation, max_chord,
                                                      kStartPieces, kMaxSamples);
     if (!sampled) return std::nullopt;
+    const std::vector<double> whole = *sampled;
     std::vector<double>& t = *sampled;
     t.pop_back();  // t = L is t = 0 again
     const std::size_t n = t.size();
@@ -159,7 +163,7 @@ std::optional<std::vector<TracedCurve>> ruled_curves_in(const RuledCurves& rc, c
       if (!in[i] && first_out == n) first_out = i;
     }
     if (first_out == n) {
-      if (!add(make_curve(rc, loop, 0, L, true, deviation, max_chord, crossing))) return std::nullopt;
+      if (!add(make_curve(rc, loop, 0, L, true, deviation, max_chord, crossing, whole))) return std::nullopt;
       continue;
     }
     // Walk once round from an outside sample: each entry to its exit is one open piece.

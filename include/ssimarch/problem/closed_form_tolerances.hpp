@@ -46,4 +46,11 @@ inline constexpr double kPencilFiniteVertex = 1e-9;
 /// answer is declined and the pair traced). Default 1e-12, the residual every closed form promises.
 inline constexpr double kPencilResidual = 1e-12;
 
+/// Gap (relative to the problem's scale) and sine of the angle between the normals at or below
+/// which a double root of the discriminant along the rulings is taken as the singular point it
+/// stands for (else the closed form declines and the pair is traced); the tracer's
+/// locate_singular_point converges to 1e-10 (LocateOptions::gap_tolerance) and 1e-6
+/// (sine_tolerance), and a double root found by bisection is much closer. Dimensionless; default 1e-7.
+inline constexpr double kClosedFormCrossing = 1e-7;
+
 }  // namespace ssimarch
