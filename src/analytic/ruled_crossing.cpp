@@ -7,7 +7,6 @@
 
 #include "ssimarch/core/jet.hpp"
 #include "ssimarch/problem/closed_form_tolerances.hpp"
-#include "ssimarch/singular/local_curve.hpp"
 
 namespace ssimarch {
 
@@ -39,6 +38,22 @@ Series substitute(const Series& f, const Series& s) {
   Series r(f[kOrder]);
   for (int k = kOrder - 1; k >= 0; --k) r = r * s + f[k];
   return r;
+}
+
+// The (s, t) axes of singular/local_curve.cpp's implicit chart at a point with unit normal n:
+// e1 the x axis projected onto the tangent plane (or, where n is along x, the unit axis least
+// aligned with n crossed with n), e2 = n x e1. The half-branches' order and the sign of a line's
+// canonical direction are taken in this frame, as the general classifier takes them.
+void chart_axes(const Vec3& n, Vec3* e1, Vec3* e2) {
+  const Vec3 hint = Vec3::UnitX();
+  Vec3 a = hint - hint.dot(n) * n;
+  if (a.norm() <= 1e-8) {
+    int k = 0;
+    n.cwiseAbs().minCoeff(&k);
+    a = Vec3::Unit(k).cross(n);
+  }
+  *e1 = a.normalized();
+  *e2 = n.cross(*e1);
 }
 
 // s(X) for the series X(s) = x1 s + x2 s^2 + ... (x1 != 0): the fixed point of
@@ -125,7 +140,7 @@ std::optional<SingularPointReport> ruled_node(const Problem& problem, const Rule
   const auto n = unit_normal(problem.first(), r.p);
   if (!n) return std::nullopt;
   Vec3 e1, e2;
-  frame_from_normal(*n, Vec3::UnitX(), &e1, &e2);
+  chart_axes(*n, &e1, &e2);
   // Half-branches in the general code's order (increasing angle in the (e1, e2) frame from e1),
   // each continued straight across the node by the other half of its branch.
   struct Entry {

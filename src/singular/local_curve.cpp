@@ -26,8 +26,7 @@ Vec3 implicit_gradient(const Surface& s, const Vec3& p, double* value) {
   return {f.d(0), f.d(1), f.d(2)};
 }
 
-}  // namespace
-
+// Orthonormal tangent frame (e1, e2) with e1 x e2 = n, e1 along `hint` where it is not parallel to n.
 void frame_from_normal(const Vec3& n, const Vec3& hint, Vec3* e1, Vec3* e2) {
   Vec3 a = hint - hint.dot(n) * n;
   if (a.norm() <= 1e-8 * hint.norm() || hint.norm() == 0) {
@@ -38,8 +37,6 @@ void frame_from_normal(const Vec3& n, const Vec3& hint, Vec3* e1, Vec3* e2) {
   *e1 = a.normalized();
   *e2 = n.cross(*e1);
 }
-
-namespace {
 
 bool finite(const LocalCurve& c) {
   if (!is_finite(c.h)) return false;

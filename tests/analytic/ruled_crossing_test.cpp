@@ -72,7 +72,9 @@ void expect_nodes_as_classified(const Problem& P, std::size_t nodes) {
       }
       // The leading term: the general code measures it at 1e-2 from the point (O(1e-2) relative).
       EXPECT_EQ(a.exponent, b.exponent);
-      if (a.exponent > 0) EXPECT_NEAR(a.coefficient, b.coefficient, 0.05 * std::fabs(b.coefficient));
+      if (a.exponent > 0) {
+        EXPECT_NEAR(a.coefficient, b.coefficient, 0.05 * std::fabs(b.coefficient));
+      }
     }
   }
 }

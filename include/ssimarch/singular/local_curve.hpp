@@ -51,11 +51,6 @@ struct LocalCurve {
   Vec3 direction_3d(const Vec2& st) const { return st[0] * e1 + st[1] * e2; }
 };
 
-/// The orthonormal tangent frame (e1, e2) of the unit normal n with e1 x e2 = n, e1 along `hint`
-/// where it is not parallel to n: the (s, t) axes of a local curve (implicit charts take hint =
-/// the x axis). Exposed so that closed forms can report half-branches in the same frame.
-void frame_from_normal(const Vec3& n, const Vec3& hint, Vec3* e1, Vec3* e2);
-
 /// The local curve of `problem` at the unknowns `x`. For parametric-parametric pairs (p, q) of x
 /// are first moved (Newton) so that G(p,q) - F(u,v) is normal to F; for implicit-implicit pairs
 /// x is first moved onto f = 0 along grad f. Never throws for numeric trouble: see status.
