@@ -11,19 +11,16 @@
 #include "ssimarch/analytic/conic_pieces.hpp"
 #include "ssimarch/analytic/plane_section.hpp"
 #include "ssimarch/analytic/quadric_form.hpp"
+#include "ssimarch/analytic/quadric_pencil.hpp"
+#include "ssimarch/analytic/ruled_crossing.hpp"
 #include "ssimarch/analytic/ruled_section.hpp"
+#include "ssimarch/problem/closed_form_tolerances.hpp"
 #include "ssimarch/singular/locate.hpp"
 #include "ssimarch/topology/singular_registry.hpp"
 
 namespace ssimarch {
 
 namespace {
-
-// Gap (relative to the problem's scale) and sine of the angle between the normals below which a
-// double root of the discriminant is taken as the singular point it stands for; the tracer's
-// locate_singular_point converges to 1e-10 (LocateOptions::gap_tolerance) and 1e-6
-// (sine_tolerance), and a double root found by bisection is much closer. Dimensionless.
-constexpr double kCrossingTolerance = 1e-7;
 
 // The whole (unclipped) section, and which closed form gave it.
 std::optional<std::vector<Conic>> section(const Surface& a, const Surface& b, double scale, std::string* pair) {
@@ -84,39 +81,87 @@ double distance_to(const TracedCurve& c, const Vec3& p) {
 }
 
 // The singular points where branches of the section meet (the double roots of the discriminant),
+// with the curves through each. A root of multiplicity 2 is a node whose record the closed form
+// gives exactly (ruled_crossing.hpp); any other (a tacnode or higher contact: Delta'' = 0) is
 // classified as the tracer does it (topology/singular_registry.hpp: local curve, type,
-// half-branches), with the curves through each. False when one is not a singular point to within
-// kCrossingTolerance: the caller then traces.
-bool crossing_reports(const Problem& problem, const RuledCurves& curves, const std::vector<double>& crossings,
+// half-branches). False when one is not a singular point to within kClosedFormCrossing: the caller
+// then traces.
+bool crossing_reports(const Problem& problem, const RuledCurves& curves, const RuledSection& section,
                       const std::vector<Slab>& region, ClosedFormResult* out) {
-  SingularRegistry registry(problem, 1e-6 * problem.scale());
-  for (double theta : crossings) {
+  const double merge = 1e-6 * problem.scale();
+  SingularRegistry registry(problem, merge);
+  std::vector<SingularPointReport>& reports = out->result.singular_points;
+  for (double theta : section.crossings) {
     const Vec3 p = curves.double_root_point(theta);
     if (!inside_region(p, region)) continue;
     // The double root is the singular point itself (exact up to rounding): no search; checked to
-    // be one (the surfaces meet there with parallel normals) before it is classified.
+    // be one (the surfaces meet there with parallel normals) before it is reported.
     SingularLocation at;
     at.x = VecX(p);
     at.point = p;
     const Linearization L = problem.linearize(at.x);
     at.gap = L.distance;
     at.sine = L.normal_first.cross(L.normal_second).norm();
-    if (!(at.gap <= kCrossingTolerance * problem.scale() && at.sine <= kCrossingTolerance)) return false;
+    if (!(at.gap <= kClosedFormCrossing * problem.scale() && at.sine <= kClosedFormCrossing)) return false;
     at.status = LocateStatus::kConverged;
-    SingularNode& node = registry.node(registry.add(at));
+    if (std::any_of(reports.begin(), reports.end(), [&](const SingularPointReport& r) { return (r.p - p).norm() <= merge; }))
+      continue;
+    std::optional<SingularPointReport> report = ruled_node(problem, curves, theta, section.scale);
+    if (!report) {
+      const SingularNode& node = registry.node(registry.add(at));
+      report = make_report(node.location, node.kind, node.branches);
+    }
     const auto& c = out->result.curves;
     for (std::size_t i = 0; i < c.size(); ++i)
-      if (distance_to(c[i], at.point) <= 1e-6 * problem.scale()) node.curves.push_back(static_cast<int>(i));
-    std::sort(node.curves.begin(), node.curves.end());
-    node.curves.erase(std::unique(node.curves.begin(), node.curves.end()), node.curves.end());
+      if (distance_to(c[i], report->p) <= merge) report->curves.push_back(static_cast<int>(i));
+    reports.push_back(std::move(*report));
   }
-  out->result.singular_points = registry.reports();
   return true;
 }
 
+// Largest first-order distance of the curves' points from the quadric Q (|X^T Q X| / |grad|).
+double quadric_residual(const std::vector<TracedCurve>& curves, const Eigen::Matrix4d& Q) {
+  double worst = 0;
+  for (const TracedCurve& c : curves)
+    for (const CurvePoint& p : c.points) {
+      const Eigen::Vector4d X(p.p.x(), p.p.y(), p.p.z(), 1);
+      const Eigen::Vector4d QX = Q * X;
+      worst = std::max(worst, std::fabs(X.dot(QX)) / (2 * QX.head<3>().norm()));
+    }
+  return worst;
+}
 
-// The section along the rulings of a cylinder or cone of the pair (ruled_section.hpp) in `out`;
-// false where it does not apply or a crossing point of its branches could not be located.
+enum class Along { kAnswered, kNotApplicable, kGiveUp };
+
+// The section of Q along `rulings` in `out`: kNotApplicable where the method does not apply to
+// them (ruled_section.hpp), kGiveUp where it applies but a loop cannot be clipped or a crossing
+// is not a singular point (the caller traces). `check`: a quadric the points must also lie on
+// (to kPencilResidual), or null.
+Along section_along(const Problem& problem, const Rulings& rulings, const Eigen::Matrix4d& Q, const Eigen::Matrix4d* check,
+                    const std::vector<Slab>& region, double deviation, double max_chord, ClosedFormResult* out) {
+  const RuledCurves curves(rulings, Q);
+  const auto section = curves.section();
+  if (!section) return Along::kNotApplicable;
+  auto pieces = ruled_curves_in(curves, *section, region, deviation, max_chord);
+  if (!pieces) return Along::kGiveUp;
+  if (check && !(quadric_residual(*pieces, *check) <= kPencilResidual * std::max(1.0, problem.scale())))
+    return Along::kNotApplicable;
+  ClosedFormResult r;
+  r.result.curves = std::move(*pieces);
+  for (double theta : section->isolated) {
+    const Vec3 p = curves.double_root_point(theta);
+    if (inside_region(p, region)) r.result.isolated_points.push_back(contact_point(p));
+  }
+  if (!crossing_reports(problem, curves, *section, region, &r)) return Along::kGiveUp;
+  out->result.curves = std::move(r.result.curves);
+  out->result.isolated_points = std::move(r.result.isolated_points);
+  out->result.singular_points = std::move(r.result.singular_points);
+  return Along::kAnswered;
+}
+
+// The section along the rulings of a cylinder or cone of the pair (ruled_section.hpp) in `out`,
+// or else along those of a real cone or cylinder of the pair's pencil (quadric_pencil.hpp); false
+// where neither applies or a crossing point of its branches could not be located.
 bool ruled_answer(const Problem& problem, const std::vector<Slab>& region, double deviation, double max_chord,
                   ClosedFormResult* out) {
   // Which surface's rulings: a cylinder's before a cone's (they never pass through an apex), and
@@ -137,19 +182,26 @@ bool ruled_answer(const Problem& problem, const std::vector<Slab>& region, doubl
     const auto rulings = rulings_of(*ruled);
     const auto Q = quadric_matrix(*other);
     if (!rulings || !Q) continue;
-    const RuledCurves curves(*rulings, *Q);
-    const auto section = curves.section();
-    if (!section) continue;
-    auto pieces = ruled_curves_in(curves, *section, region, deviation, max_chord);
-    if (!pieces) return false;
-    out->result.curves = std::move(*pieces);
-    for (double theta : section->isolated) {
-      const Vec3 p = curves.double_root_point(theta);
-      if (inside_region(p, region)) out->result.isolated_points.push_back(contact_point(p));
+    const Along a = section_along(problem, *rulings, *Q, nullptr, region, deviation, max_chord, out);
+    if (a == Along::kGiveUp) return false;
+    if (a == Along::kAnswered) {
+      out->pair = "ruled-quadric";
+      return true;
     }
-    if (!crossing_reports(problem, curves, section->crossings, region, out)) return false;
-    out->pair = "ruled-quadric";
-    return true;
+  }
+  // The pencil (Levin): a cone or cylinder through the curve, whose rulings meet the first
+  // quadric in it; the points are checked on the second.
+  const auto A = quadric_matrix(problem.first()), B = quadric_matrix(problem.second());
+  if (!A || !B) return false;
+  const auto& box = problem.bounds();
+  const Vec3 centre(0.5 * (box[0].lo + box[0].hi), 0.5 * (box[1].lo + box[1].hi), 0.5 * (box[2].lo + box[2].hi));
+  for (const PencilMember& m : ruled_members(*A, *B, centre, problem.scale())) {
+    const Along a = section_along(problem, m.rulings, *A, &*B, region, deviation, max_chord, out);
+    if (a == Along::kGiveUp) return false;
+    if (a == Along::kAnswered) {
+      out->pair = m.cylinder ? "pencil-cylinder" : "pencil-cone";
+      return true;
+    }
   }
   return false;
 }

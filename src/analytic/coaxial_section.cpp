@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "ssimarch/analytic/closed_form_tolerances.hpp"
+#include "ssimarch/problem/closed_form_tolerances.hpp"
 
 namespace ssimarch {
 

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "ssimarch/analytic/closed_form_tolerances.hpp"
+#include "ssimarch/problem/closed_form_tolerances.hpp"
 
 namespace ssimarch {
 

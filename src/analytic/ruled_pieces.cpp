@@ -1,5 +1,6 @@
 // The curves of a ruled section inside a region: docs/math/closed_form_quadrics.md, "Along the
 // rulings" (clipping and sampling as for conics, "Clipping and sampling").
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <optional>
@@ -55,12 +56,51 @@ double arc_length(const RuledCurves& rc, const RuledLoop& loop, double lo, doubl
   return prev;
 }
 
+// The parameters in [0, period) where `loop` passes a crossing point (theta = tau, a double root
+// of Delta, where both sheets meet): an arc passes theta twice (cos phi = (mid - tau) / half), a
+// circle once per turn.
+std::vector<double> crossing_parameters(const RuledLoop& loop, const std::vector<double>& crossings) {
+  std::vector<double> out;
+  const double two_pi = 2 * M_PI;
+  for (double tau : crossings) {
+    if (loop.arc) {
+      const double u = tau < loop.lo ? tau + two_pi : tau;
+      if (!(u > loop.lo && u < loop.hi)) continue;
+      const double phi = std::acos(std::clamp((0.5 * (loop.lo + loop.hi) - u) / (0.5 * (loop.hi - loop.lo)), -1.0, 1.0));
+      out.push_back(phi);
+      out.push_back(two_pi - phi);
+    } else {
+      const double phi = tau - loop.lo - two_pi * std::floor((tau - loop.lo) / two_pi);
+      for (int k = 0; k < loop.turns; ++k) out.push_back(phi + two_pi * k);
+    }
+  }
+  return out;
+}
+
+// Adds the crossing parameters (taken modulo the period) inside (lo, hi) to the sorted samples,
+// so that the crossing points are output points of the curve, as the tracer's are.
+void add_crossings(std::vector<double>* params, const std::vector<double>& crossing, double period, double lo, double hi) {
+  const double tiny = 1e-12 * period;
+  for (double c : crossing)
+    for (int k = -1; k <= 2; ++k) {
+      const double phi = c + k * period;
+      if (!(phi > lo + tiny && phi < hi - tiny)) continue;
+      const auto it = std::lower_bound(params->begin(), params->end(), phi);
+      if ((it != params->end() && *it - phi <= tiny) || (it != params->begin() && phi - *(it - 1) <= tiny)) continue;
+      params->insert(it, phi);
+    }
+}
+
 std::optional<TracedCurve> make_curve(const RuledCurves& rc, const RuledLoop& loop, double lo, double hi, bool closed,
-                                      double deviation, double max_chord) {
+                                      double deviation, double max_chord, const std::vector<double>& crossing,
+                                      std::optional<std::vector<double>> params = std::nullopt) {
   TracedCurve curve;
   curve.closed = closed;
-  const auto params = internal::sample_chord_parameters([&](double t) { return at(rc, loop, t); }, lo, hi, deviation, max_chord, kStartPieces, kMaxSamples);
+  // The samples of [lo, hi] (given when the caller has them already: a whole loop).
+  if (!params)
+    params = internal::sample_chord_parameters([&](double t) { return at(rc, loop, t); }, lo, hi, deviation, max_chord, kStartPieces, kMaxSamples);
   if (!params) return std::nullopt;
+  add_crossings(&*params, crossing, loop.period(), lo, hi);
   for (double phi : *params) {
     CurvePoint p;
     p.p = at(rc, loop, phi);
@@ -98,6 +138,7 @@ std::optional<std::vector<TracedCurve>> ruled_curves_in(const RuledCurves& rc, c
   };
   for (const RuledLoop& loop : section.loops) {
     const double L = loop.period();
+    const std::vector<double> crossing = crossing_parameters(loop, section.crossings);
     // A coarse polyline first: a loop that runs far outside the region needs more samples than
     // the cap, which it need not spend to find out.
     double coarse = 0;
@@ -111,6 +152,7 @@ std::optional<std::vector<TracedCurve>> ruled_curves_in(const RuledCurves& rc, c
     auto sampled = internal::sample_chord_parameters([&](double p) { return at(rc, loop, p); }, 0, L, deviation, max_chord,
                                                      kStartPieces, kMaxSamples);
     if (!sampled) return std::nullopt;
+    const std::vector<double> whole = *sampled;
     std::vector<double>& t = *sampled;
     t.pop_back();  // t = L is t = 0 again
     const std::size_t n = t.size();
@@ -121,7 +163,7 @@ std::optional<std::vector<TracedCurve>> ruled_curves_in(const RuledCurves& rc, c
       if (!in[i] && first_out == n) first_out = i;
     }
     if (first_out == n) {
-      if (!add(make_curve(rc, loop, 0, L, true, deviation, max_chord))) return std::nullopt;
+      if (!add(make_curve(rc, loop, 0, L, true, deviation, max_chord, crossing, whole))) return std::nullopt;
       continue;
     }
     // Walk once round from an outside sample: each entry to its exit is one open piece.
@@ -133,7 +175,7 @@ std::optional<std::vector<TracedCurve>> ruled_curves_in(const RuledCurves& rc, c
       if (!in[i] && in[j]) enter = boundary(rc, loop, region, tj, ti);
       if (in[i] && !in[j]) {
         const double leave = boundary(rc, loop, region, ti, tj);
-        if (leave > enter && !add(make_curve(rc, loop, enter, leave, false, deviation, max_chord))) return std::nullopt;
+        if (leave > enter && !add(make_curve(rc, loop, enter, leave, false, deviation, max_chord, crossing))) return std::nullopt;
       }
     }
   }

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-#include "ssimarch/analytic/closed_form_tolerances.hpp"
+#include "ssimarch/problem/closed_form_tolerances.hpp"
 
 namespace ssimarch {
 
@@ -86,9 +86,8 @@ double RuledLoop::period() const { return arc ? kTwoPi : kTwoPi * turns; }
 Vec3 RuledCurves::double_root_point(double theta) const {
   const auto [a, b, c] = quadratic(theta);
   const double t = std::fabs(a) >= std::fabs(b) ? -b / (2 * a) : -2 * c / b;
-  const double cs = std::cos(theta), sn = std::sin(theta);
-  const Eigen::Vector4d X = r_.a[0] + cs * r_.a[1] + sn * r_.a[2] + t * (r_.d[0] + cs * r_.d[1] + sn * r_.d[2]);
-  return X.head<3>();
+  const Vec3T<double> p = on_ruling(theta, t);
+  return {p.x, p.y, p.z};
 }
 
 Vec3 RuledCurves::derivative(const RuledLoop& loop, double phi) const {
@@ -154,6 +153,8 @@ std::optional<RuledSection> RuledCurves::section() const {
   if (crit.size() > 1 && crit.back() - crit.front() > kTwoPi - 1e-13) crit.pop_back();  // one point, both ends
 
   RuledSection out;
+  out.scale = scale;
+  out.zero = zero;
   std::vector<double> simple;
   double max_value = -std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < crit.size(); ++i) {

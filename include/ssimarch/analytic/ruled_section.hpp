@@ -38,6 +38,7 @@ namespace ssimarch {
 struct Rulings {
   std::array<Eigen::Vector4d, 3> a, d;
   bool cone = false;
+  bool homogeneous = false;  // w of A + t D is not 1: the 3D point is (A + t D).xyz / w
 };
 /// The rulings of a cylinder or cone; nullopt for every other surface.
 std::optional<Rulings> rulings_of(const Surface& surface);
@@ -57,6 +58,8 @@ struct RuledSection {
   std::vector<RuledLoop> loops;
   std::vector<double> crossings;  // theta of the double roots of Delta inside the curve (singular points)
   std::vector<double> isolated;   // theta of the isolated real points (double roots of Delta at a maximum)
+  double scale = 0;               // of Delta: max over theta of b^2 + 4 |a c|
+  double zero = 0;                // |Delta| at or below this is zero (kClosedFormDegeneracy x scale)
 };
 
 class RuledCurves {
@@ -80,6 +83,11 @@ class RuledCurves {
   /// a, b, c of the quadratic on the ruling at theta.
   template <class T>
   std::array<T, 3> quadratic(const T& theta) const;
+  /// The point at parameter t on the ruling at theta: A(theta) + t D(theta), divided by its w
+  /// (1 for a cylinder's or cone's own rulings; the rulings of a cone of a pencil through a
+  /// homogeneous apex, quadric_pencil.hpp, have w = 1 + t D_w).
+  template <class T>
+  Vec3T<T> on_ruling(const T& theta, const T& t) const;
 
  private:
   const Rulings r_;
@@ -137,13 +145,21 @@ Vec3T<T> RuledCurves::point(const RuledLoop& loop, const T& phi) const {
   const T root = primal(disc) > 0 ? T(sign * sqrt(disc)) : T(0.0);
   // The root (-b + S) / 2a without cancellation: 2c / (-b - S) where b and S have one sign.
   const T t = primal(b) * sign > 0 ? T(2.0 * c / (-b - root)) : T((-b + root) / (2.0 * a));
+  return on_ruling(theta, t);
+}
+
+template <class T>
+Vec3T<T> RuledCurves::on_ruling(const T& theta, const T& t) const {
+  using std::cos;
+  using std::sin;
   const T cs = cos(theta), sn = sin(theta);
-  std::array<T, 3> x;
-  for (int i = 0; i < 3; ++i) {
+  std::array<T, 4> x;
+  for (int i = 0; i < 4; ++i) {
     const T A = r_.a[0][i] + cs * r_.a[1][i] + sn * r_.a[2][i];
     const T D = r_.d[0][i] + cs * r_.d[1][i] + sn * r_.d[2][i];
     x[static_cast<std::size_t>(i)] = A + t * D;
   }
+  if (r_.homogeneous) return Vec3T<T>(x[0] / x[3], x[1] / x[3], x[2] / x[3]);
   return Vec3T<T>(x[0], x[1], x[2]);
 }
 

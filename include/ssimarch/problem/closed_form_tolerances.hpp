@@ -1,0 +1,56 @@
+// Every tolerance of the closed-form sections (module analytic/, docs/math/closed_form_quadrics.md),
+// in one place beside problem/singular_tolerances.hpp, each with its unit and why it has its
+// value. Like those, they decide "tangential" (a double root, a touching point) and "degenerate"
+// (a member of a pencil of rank < 3); all are relative, so scale-free.
+#pragma once
+
+namespace ssimarch {
+
+/// Relative size (of the largest coefficient of a plane conic, of the axial polynomial of two
+/// coaxial surfaces, or of the terms of the discriminant Delta along the rulings) at or below
+/// which a closed-form section counts a discriminant, a quadratic term or a squared radius as
+/// zero: the surfaces touch (a double line, a double circle, a single point, a double root of
+/// Delta) rather than cross or miss. The coefficients come from a few products of the inputs, so
+/// they carry ~1e-15 relative rounding; 1e-10 leaves five orders of margin and is the order at
+/// which kCurveJetRankTolerance stops trusting the jets of a near-tangency. Dimensionless;
+/// default 1e-10. (Was in analytic/.)
+inline constexpr double kClosedFormDegeneracy = 1e-10;
+
+/// Delta''/2 at a double root of the discriminant along the rulings, relative to Delta's scale,
+/// above which the closed form reports the root as an ordinary node itself (analytic/
+/// ruled_crossing.hpp: the branches' slopes differ by sqrt(Delta''/2) / |a|); at or below it the
+/// point (a tacnode or higher contact, or a node too flat to tell from one) goes to the general
+/// classifier. A root of multiplicity 4 is found by bisection of Delta' ~ u^3 only to
+/// u ~ (1e-16)^(1/3) ~ 5e-6, where Delta''/2 ~ 6 u^2 ~ 1e-10 of the scale; 1e-6 leaves four
+/// orders. Dimensionless; default 1e-6.
+inline constexpr double kRuledNodeSeparation = 1e-6;
+
+/// Magnitude of the next-smallest eigenvalue of a singular member of a quadric pencil (scaled to
+/// unit largest entry), and of the semi-axes' eigenvalues of its section ellipse relative to the
+/// conic's largest entry, above which the member counts as of rank exactly 3 (a cone or cylinder,
+/// analytic/quadric_pencil.hpp) and its ellipse as proper; at or below it the member is taken as
+/// a plane pair or too close to one to parametrise, and the next member (or the tracer) answers.
+/// Dimensionless; default 1e-6 (five orders above kClosedFormDegeneracy, which the smallest one
+/// must meet).
+inline constexpr double kPencilRankGap = 1e-6;
+
+/// |w| of a pencil member's unit vertex (homogeneous) relative to |xyz| at or below which the
+/// vertex is at infinity for choosing the axis (a cylinder; its axis is then the vertex's
+/// direction) — the rulings keep the vertex as it is, so the choice costs no accuracy.
+/// Dimensionless; default 1e-9.
+inline constexpr double kPencilFiniteVertex = 1e-9;
+
+/// Largest first-order distance (model units, times max(1, scale)) of a point of a pencil
+/// section from the second quadric: the points are computed on the first quadric and a cone or
+/// cylinder of the pencil, so this checks that the member was found to rounding (otherwise the
+/// answer is declined and the pair traced). Default 1e-12, the residual every closed form promises.
+inline constexpr double kPencilResidual = 1e-12;
+
+/// Gap (relative to the problem's scale) and sine of the angle between the normals at or below
+/// which a double root of the discriminant along the rulings is taken as the singular point it
+/// stands for (else the closed form declines and the pair is traced); the tracer's
+/// locate_singular_point converges to 1e-10 (LocateOptions::gap_tolerance) and 1e-6
+/// (sine_tolerance), and a double root found by bisection is much closer. Dimensionless; default 1e-7.
+inline constexpr double kClosedFormCrossing = 1e-7;
+
+}  // namespace ssimarch
