@@ -115,8 +115,11 @@ TraceRequest request_of(const py::object& only, const py::kwargs& overrides) {
     const TraceOptionSpec* spec = find_trace_option(key);
     if (!spec) throw InputError(key, "unknown option (known options: " + trace_option_keys() + ")");
     OptionValue value;
-    if (py::isinstance<py::bool_>(v)) throw InputError(key, "expects " + spec->rule + " (got a bool)");
-    if (py::isinstance<py::str>(v)) value = v.cast<std::string>();
+    // A bool is a yes/no option's value (as JSON true/false in a scene), never a number.
+    const bool yes_no = spec->choices == std::vector<std::string>{"true", "false"};
+    if (py::isinstance<py::bool_>(v) && yes_no) value = std::string(v.cast<bool>() ? "true" : "false");
+    else if (py::isinstance<py::bool_>(v)) throw InputError(key, "expects " + spec->rule + " (got a bool)");
+    else if (py::isinstance<py::str>(v)) value = v.cast<std::string>();
     else if (py::isinstance<py::int_>(v) || py::isinstance<py::float_>(v)) value = v.cast<double>();
     else throw InputError(key, "expects a number or a name (" + spec->rule + ")");
     request.overrides.push_back({spec, std::move(value), key});

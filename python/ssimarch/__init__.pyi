@@ -133,7 +133,7 @@ def trace(
     other: Optional[Surface] = ...,
     *,
     only: Union[str, Sequence[str], None] = ...,
-    **kwargs: Union[float, int, str],
+    **kwargs: Union[bool, float, int, str],
 ) -> Trace: ...
 def trace_options() -> list[str]: ...
 def curve_geometry(

@@ -12,11 +12,14 @@ using nlohmann::json;
 
 namespace {
 json vec(const Vec3& v) { return json::array({v.x(), v.y(), v.z()}); }
-json vec(const VecX& v) {
+template <class Vector>
+json entries(const Vector& v) {
   json a = json::array();
-  for (int i = 0; i < v.size(); ++i) a.push_back(v[i]);
+  for (Eigen::Index i = 0; i < v.size(); ++i) a.push_back(v[i]);
   return a;
 }
+json vec(const VecX& v) { return entries(v); }
+json vec(const UnknownVec& v) { return entries(v); }
 json end_json(Termination t, const std::string& message) {
   return json{{"reason", std::string(to_string(t))}, {"message", message}};
 }

@@ -127,9 +127,9 @@ VecX regular_start(const Tracer& tracer, const VecX& x, std::vector<std::string>
   const Problem& P = tracer.problem();
   const CorrectorOptions co{tracer.options().tolerance, tracer.options().max_corrector_iterations};
   // A boundary root beyond a trim stands for the curve's crossing of the trim's face.
-  const std::optional<VecX> trimmed = onto_trims(P, x, co);
+  const std::optional<UnknownVec> trimmed = onto_trims(P, x, co);
   if (!trimmed) return x;
-  if (*trimmed != x) return *trimmed;
+  if (*trimmed != x) return VecX(*trimmed);
   // A start on a degenerate edge (a pole) has no tangent in its parameters: start from the
   // curve point next to it in the pole's chart (march/pole_passage.hpp).
   const std::vector<Pole> poles = problem_poles(P);

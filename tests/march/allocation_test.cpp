@@ -65,10 +65,14 @@ double march_allocations_per_point(const Problem& P) {
     }
     return a;
   };
-  auto growth = [](int n) {
+  auto growth = [&P](int n) {
     return allocations_of([&] {
+      CurvePoint point;
+      point.x = UnknownVec::Zero(P.dim());
+      point.p.setZero();
+      point.t.setZero();
       std::vector<CurvePoint> v;
-      for (int i = 0; i < n; ++i) v.push_back(CurvePoint{});
+      for (int i = 0; i < n; ++i) v.push_back(point);
     });
   };
   const long a200 = run(200), a400 = run(400);

@@ -106,9 +106,30 @@ def test_geometry_option_gives_curvature_columns(viviani):
     assert ssimarch.trace(viviani, only="viviani")["viviani"].curves[0].geometry is None
 
 
-def test_every_option_key_is_accepted_by_name():
-    keys = ssimarch.trace_options()
-    assert "step_length" in keys and "predictor" in keys
+# A valid value other than the default for every trace option. The key set must equal
+# ssimarch.trace_options(), so an option added to the table fails here until it is listed.
+NON_DEFAULT_OPTION_VALUES = {
+    "predictor": "parabola", "corrector": "projection", "step": "angular", "step_length": 0.1,
+    "min_step_length": 1e-4, "deviation": 1e-3, "turn_angle": 0.2, "min_step": 1e-8, "taylor_order": 3,
+    "tolerance": 1e-11, "max_corrector_iterations": 20, "max_turn_angle": 0.5, "max_correction_ratio": 0.6,
+    "max_points": 100000, "max_length": 100.0, "start_samples": 12, "certified_start_points": False,
+    "start_box_budget": 20000, "closed_form": False, "hunt_isolated_points": False, "geometry": "estimate",
+    "bspline": True, "bspline_tolerance": 1e-8,
+}
+
+
+def test_every_option_list_is_the_table():
+    assert set(ssimarch.trace_options()) == set(NON_DEFAULT_OPTION_VALUES)
+
+
+@pytest.mark.parametrize("key", sorted(NON_DEFAULT_OPTION_VALUES))
+def test_every_option_key_is_accepted_by_name(viviani, key):
+    # Each option alone (on the marcher: closed_form off), by keyword: the trace still gives
+    # Viviani's one closed curve of the closed-form length, so none of them is ignored into an error.
+    options = {"closed_form": False, key: NON_DEFAULT_OPTION_VALUES[key]}
+    run = ssimarch.trace(viviani, only="viviani", **options)["viviani"]
+    assert [c.closed for c in run.curves] == [True]
+    assert run.curves[0].length == pytest.approx(viviani_length(1.0), abs=1e-5)
 
 
 def test_unknown_option_is_an_input_error_naming_the_key(viviani):

@@ -145,7 +145,7 @@ TEST(Puiseux, HalfBranchesOfTouchingBranchesAreDistinctAndPairedByBranch) {
     const LocalCurve c = local_curve(P, x);
     ASSERT_EQ(c.status, LocalCurveStatus::kOk);
     const Classification kind = classify(c.h);
-    EXPECT_EQ(kind.ak, "A" + std::to_string(2 * k - 1)) << k;
+    EXPECT_EQ(kind.ak, std::string("A").append(std::to_string(2 * k - 1))) << k;
     EXPECT_EQ(kind.real_branches, 2) << k;
     const auto hb = half_branches(P, c, kind);
     ASSERT_EQ(hb.size(), 4u) << k;
