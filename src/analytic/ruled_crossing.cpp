@@ -94,10 +94,9 @@ bool branch_jets(const RuledCurves& rc, double tau, double scale, std::array<Ser
 Vec3 coefficient(const SeriesPoint& p, int k) { return {p[0][k], p[1][k], p[2][k]}; }
 
 // The half-branch leaving along u = dir * s, s >= 0, in the report's form: unit tangent T, the
-// expansion W(X) of the offset along n x T (X along T), its leading term with the sign of the
-// tangent line's canonical direction `line` (singular/half_branches.cpp: w = c X^gamma along
-// rot90(line)).
-SingularPointReport::HalfBranch half_branch(const SeriesPoint& p, double dir, const Vec3& n, const Vec3& line) {
+// expansion W(X) of the offset along n x T (X along T), its leading term in the same frame, the
+// half-branch's own (singular/half_branches.cpp: w = c X^gamma along rot90(tangent)).
+SingularPointReport::HalfBranch half_branch(const SeriesPoint& p, double dir, const Vec3& n) {
   SingularPointReport::HalfBranch h;
   Series X, W;
   const Vec3 v = dir * coefficient(p, 1);
@@ -112,12 +111,11 @@ SingularPointReport::HalfBranch half_branch(const SeriesPoint& p, double dir, co
   const Series w = substitute(W, revert(X));
   for (int j = 2; j <= kExpansionOrder; ++j)
     if (std::fabs(w[j]) > kZeroCoefficient * std::max(1.0, std::fabs(w[2]))) h.expansion.push_back({double(j), w[j]});
-  const double side = h.tangent.dot(line) > 0 ? 1.0 : -1.0;
   if (!h.expansion.empty()) {
     h.exponent = h.expansion.front().exponent;
-    h.coefficient = side * h.expansion.front().coefficient;
+    h.coefficient = h.expansion.front().coefficient;
   } else {
-    h.coefficient = side * w[2];  // straight to rounding: exponent 0, as the general code
+    h.coefficient = w[2];  // straight to rounding: exponent 0, as the general code
   }
   h.param_tangent = VecX(h.tangent);
   return h;
@@ -152,10 +150,8 @@ std::optional<SingularPointReport> ruled_node(const Problem& problem, const Rule
   for (int b = 0; b < 2; ++b) {
     const Vec3 v = coefficient(branches[static_cast<std::size_t>(b)], 1);
     if (!(v.norm() > 0)) return std::nullopt;
-    // The line's canonical direction: angle in [0, pi) in (e1, e2) (singular/local_jet.hpp FormRoot).
-    const Vec3 line = std::atan2(v.dot(e2), v.dot(e1)) >= 0 ? v : Vec3(-v);
     for (double dir : {1.0, -1.0}) {
-      Entry e{0, b, half_branch(branches[static_cast<std::size_t>(b)], dir, *n, line)};
+      Entry e{0, b, half_branch(branches[static_cast<std::size_t>(b)], dir, *n)};
       e.angle = std::atan2(e.half.tangent.dot(e2), e.half.tangent.dot(e1));
       if (e.angle < 0) e.angle += 2 * M_PI;
       entries.push_back(std::move(e));

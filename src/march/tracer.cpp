@@ -8,6 +8,7 @@
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/march/corrector.hpp"
 #include "ssimarch/march/model_size.hpp"
+#include "ssimarch/march/option_ranges.hpp"
 #include "ssimarch/march/pole_passage.hpp"
 #include "ssimarch/march/predictor.hpp"
 #include "ssimarch/march/step_control.hpp"
@@ -64,9 +65,19 @@ bool near_traced_curve(const Vec3& p, const std::vector<TracedCurve>& curves, do
   return false;
 }
 
+namespace {
+// The key an invalid option's error names: the first field out of its range (a subnormal
+// step_length names step_length), else "options" for a rule between fields.
+std::string_view invalid_option_key(const TraceOptions& o) {
+  for (const TraceOptionRange& r : trace_option_ranges())
+    if (!r.range.check(r.get(o), r.integer).empty()) return r.key;
+  return "options";
+}
+}  // namespace
+
 Tracer::Tracer(const Problem& problem, TraceOptions options) : problem_(problem), options_(options) {
   std::string error;
-  if (!options_.is_valid(&error)) throw InputError("options", error);
+  if (!options_.is_valid(&error)) throw InputError(std::string(invalid_option_key(options_)), error);
   std::string key;
   if (!fits_model(options_, problem_.scale(), &key, &error)) throw InputError(key, error);
   const bool adaptive = options_.step != StepRule::kConstant;
