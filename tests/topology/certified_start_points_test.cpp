@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "testing/surface_pairs.hpp"
+#include "testing/simpson.hpp"
 #include "ssimarch/topology/trace_all.hpp"
 
 namespace ssimarch {
@@ -215,13 +216,7 @@ TEST(CertifiedStartPoints, RootsOnTheTrimFaces) {
   EXPECT_TRUE(trim_face_roots(P, 1, false, o).roots.empty());  // no second trim
 }
 
-template <class F>
-double simpson(F f, double a, double b, int n = 2000) {
-  const double h = (b - a) / n;
-  double sum = f(a) + f(b);
-  for (int i = 1; i < n; ++i) sum += (i % 2 ? 4 : 2) * f(a + i * h);
-  return sum * h / 3;
-}
+using testing::simpson;
 
 TEST(CertifiedStartPoints, ArcBoundedOnlyByATrimFace) {
   const Problem P = plane_trimmed_cylinder();

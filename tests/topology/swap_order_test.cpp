@@ -15,6 +15,8 @@
 #include "ssimarch/io/scene.hpp"
 #include "ssimarch/pipeline/trace_job.hpp"
 
+#include "testing/simpson.hpp"
+
 namespace ssimarch {
 namespace {
 
@@ -137,13 +139,7 @@ INSTANTIATE_TEST_SUITE_P(Examples, SwapOrder, ::testing::ValuesIn(scene_files("e
 // The benchmark pairs (docs/benchmarks.md, peers section: the cases of the peer comparison).
 INSTANTIATE_TEST_SUITE_P(BenchmarkPairs, SwapOrder, ::testing::ValuesIn(scene_files("bench/peers/scenes")), test_name);
 
-template <class F>
-double simpson(F f, double a, double b, int n = 2000) {
-  const double h = (b - a) / n;
-  double sum = f(a) + f(b);
-  for (int i = 1; i < n; ++i) sum += (i % 2 ? 4 : 2) * f(a + i * h);
-  return sum * h / 3;
-}
+using testing::simpson;
 
 // Issue 13's case: the rational two-cylinder example (seed 000 Ex. 5) gave 2 curves of total
 // length 3.63 in one order and 4 curves of 14.9 in the other. Both orders now give the four
