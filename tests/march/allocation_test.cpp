@@ -17,6 +17,7 @@
 #include "ssimarch/problem/curve_jet.hpp"
 #include "ssimarch/problem/gauss_newton.hpp"
 #include "testing/allocation_counter.hpp"
+#include "testing/viviani_forms.hpp"
 #include "testing/surface_pairs.hpp"
 
 namespace ssimarch {
@@ -27,20 +28,8 @@ using testing::allocations_of;
 #define SSIMARCH_SKIP_WITHOUT_COUNTER() \
   if (!testing::counting_allocations()) GTEST_SKIP() << "allocations are not counted under AddressSanitizer"
 
-// The three forms of Viviani's curve (thesis pair 2): parametric cylinder and sphere, the
-// parametric cylinder and the implicit sphere, both implicit.
-std::vector<Problem> viviani_problems() {
-  return {Problem(testing::cylinder_f2(), testing::sphere_g2_parametric(), PairKind::kParametricParametric),
-          Problem(testing::cylinder_f2(), testing::sphere_g2_implicit(), PairKind::kParametricImplicit),
-          Problem(testing::sphere_g2_implicit(), testing::cylinder_f2_implicit(), PairKind::kImplicitImplicit)};
-}
-UnknownVec start_on_viviani(const Problem& P) {
-  const std::optional<VecX> x = unknowns_near(P, testing::viviani(1.0));
-  if (!x) throw std::runtime_error("no unknowns near the start");
-  const CorrectorResult r = gauss_newton(P, *x, CorrectorOptions{});
-  if (r.status != CorrectorStatus::kConverged) throw std::runtime_error("the start is not on the curve");
-  return r.x;
-}
+using testing::start_on_viviani;
+using testing::viviani_problems;
 
 // Allocations per accepted point of Tracer::march_until_event: the difference between a march of
 // 400 points and one of 200, less the growth of a std::vector<CurvePoint> from 200 to 400 points

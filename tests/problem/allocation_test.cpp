@@ -23,6 +23,7 @@
 #include "ssimarch/surface/sphere.hpp"
 #include "ssimarch/surface/torus.hpp"
 #include "testing/allocation_counter.hpp"
+#include "testing/viviani_forms.hpp"
 #include "testing/surface_pairs.hpp"
 
 namespace ssimarch {
@@ -180,20 +181,8 @@ TEST(Allocation, LinearizeAllocatesNothingForEveryPairKind) {
   }
 }
 
-// The three forms of Viviani's curve (thesis pair 2): parametric cylinder and sphere, the
-// parametric cylinder and the implicit sphere, both implicit.
-std::vector<Problem> viviani_problems() {
-  return {Problem(testing::cylinder_f2(), testing::sphere_g2_parametric(), PairKind::kParametricParametric),
-          Problem(testing::cylinder_f2(), testing::sphere_g2_implicit(), PairKind::kParametricImplicit),
-          Problem(testing::sphere_g2_implicit(), testing::cylinder_f2_implicit(), PairKind::kImplicitImplicit)};
-}
-UnknownVec start_on_viviani(const Problem& P) {
-  const std::optional<VecX> x = unknowns_near(P, testing::viviani(1.0));
-  if (!x) throw std::runtime_error("no unknowns near the start");
-  const CorrectorResult r = gauss_newton(P, *x, CorrectorOptions{});
-  if (r.status != CorrectorStatus::kConverged) throw std::runtime_error("the start is not on the curve");
-  return r.x;
-}
+using testing::start_on_viviani;
+using testing::viviani_problems;
 
 TEST(Allocation, CurveJetAllocatesNothing) {
   SSIMARCH_SKIP_WITHOUT_COUNTER();
