@@ -60,8 +60,9 @@ bench: deps
 bench-peers:
 	./scripts/install-deps --peers
 	cmake -S . -B build-peers -G Ninja -DCMAKE_BUILD_TYPE=Release -DSSIMARCH_BUILD_TESTS=OFF -DSSIMARCH_BENCH_PEERS=ON
-	cmake --build build-peers -j $(JOBS) --target peer_bench
-	build-peers/bench/peers/peer_bench --reps 7
+	cmake --build build-peers -j $(JOBS) --target peer_bench ssimarch
+	build-peers/bin/peer_bench --reps 7
+	bench/peers/process_times --ssimarch build-peers/bin/ssimarch
 
 clean:
 	rm -rf build build-asan build-asan-fast build-fuzz build-bench build-peers out

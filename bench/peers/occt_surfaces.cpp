@@ -1,5 +1,5 @@
 // Frames and trims follow shared/peers/cases.jsonl and, for the occt_* cases, the DRAW scripts of
-// OpenCASCADE's tests/lowalgos/intss (bug21494_2, bug24694_7, bug33244).
+// OpenCASCADE's tests/lowalgos/intss (bug21494_2, bug24694_7, bug28222_2, bug33244).
 #include "occt_surfaces.hpp"
 
 #include <cmath>
@@ -103,6 +103,14 @@ const std::map<std::string, std::function<OcctPair()>>& analytic_cases() {
        }},
       // bug24694_7: cylinder cc 10; trimv tcc cc -20 20; sphere ss 10; convert s2 ss.
       {"occt_bug24694_7", [] { return OcctPair{cylinder(ax3(0, 0, 0, 0, 0, 1), 10, -20, 20), bspline(sphere(0, 0, 0, 10))}; }},
+      // bug28222_2: cylinder s1 -35 13.37.. 30.58.. 0 -0.2588.. -0.9659.. 0 0.9659.. -0.2588.. 11 and
+      // cylinder s2 0 0 0 1 0 0 0 0 -1 16.5 (location, axis, x direction, radius), trimmed here.
+      {"occt_bug28222_2", [] {
+         const gp_Ax3 f1(gp_Pnt(-35, 13.3706576198285, 30.5814570420266), gp_Dir(0, -0.258819045102521, -0.965925826289068),
+                         gp_Dir(0, 0.965925826289068, -0.258819045102521));
+         const gp_Ax3 f2(gp_Pnt(0, 0, 0), gp_Dir(1, 0, 0), gp_Dir(0, 0, -1));
+         return OcctPair{cylinder(f1, 11, 10, 56), cylinder(f2, 16.5, -50, -20)};
+       }},
       // bug33244: the script's two cones (location, axis, x direction, semi-angle, radius), trimmed here.
       {"occt_bug33244", [] {
          const gp_Ax3 f1(gp_Pnt(-1.11630646267172, -4.54487349779333, 13.2493435203532),

@@ -1,9 +1,18 @@
 #!/usr/bin/env python3
-"""Reference length of the peers case occt_bug33244 (two cones of OpenCASCADE's
-tests/lowalgos/intss/bug33244, each trimmed to |h| <= 3 from its apex), independent of ssimarch:
-cone 1 is parameterised by (theta, h); for each theta the cone-2 equation is a quadratic in h whose
-real roots are the curve's points; the length is the polyline length on 2^18 angles per root branch,
-each cut exactly (bisection) where it leaves a trim. Also writes the scene's apex coordinates.
+"""Reference lengths of two peers cases, independent of ssimarch.
+
+occt_bug33244 (two cones of OpenCASCADE's tests/lowalgos/intss/bug33244, each trimmed to |h| <= 3
+from its apex): cone 1 is parameterised by (theta, h); for each theta the cone-2 equation is a
+quadratic in h whose real roots are the curve's points; the length is the polyline length on 2^18
+angles per root branch, each cut exactly (bisection) where it leaves a trim. Also writes the
+scene's apex coordinates.
+
+occt_bug28222_2 (tests/lowalgos/intss/bug28222_2, two cylinders with perpendicular axes at distance
+d = 5): in the thin cylinder's frame (angle t, position s along its axis) the thick cylinder is
+(d + r sin t)^2 + (s - s0)^2 = R^2, so the two loops are s = s0 +- sqrt(R^2 - (d + r sin t)^2) and
+each has length int_0^2pi sqrt(r^2 + s'(t)^2) dt, integrated by mpmath (30 digits) when it is
+installed (python3-mpmath), else by the trapezoidal rule on 2^14 angles (periodic and analytic:
+it converges geometrically).
 Usage: bench/peers/reference_lengths.py
 """
 import math
@@ -79,7 +88,29 @@ def branch_length(k, n=1 << 18):
         prev = cur
     return total
 
+def bug28222_2_loop_length():
+    """One loop's length (both are equal: the two signs of the square root mirror each other)."""
+    p = V((-35.0, 13.3706576198285, 30.5814570420266))
+    a = V((0.0, -0.258819045102521, -0.965925826289068))
+    a = a / a.norm()
+    b = V((1.0, 0, 0)).cross(a)  # across both axes: the thin axis lies at distance p.b from the thick one
+    d, r, big_r = p.dot(b), 11.0, 16.5
+    try:
+        import mpmath as mp
+        mp.mp.dps = 30
+        d = mp.mpf(d)
+        speed = lambda t: mp.sqrt(r ** 2 + ((d + r * mp.sin(t)) * r * mp.cos(t)) ** 2 / (big_r ** 2 - (d + r * mp.sin(t)) ** 2))
+        return float(mp.quad(speed, mp.linspace(0, 2 * mp.pi, 9)))
+    except ImportError:
+        n = 1 << 14
+        def speed(t):
+            w = d + r * math.sin(t)
+            return math.sqrt(r * r + (w * r * math.cos(t)) ** 2 / (big_r * big_r - w * w))
+        return 2 * math.pi / n * sum(speed(2 * math.pi * i / n) for i in range(n))
+
 if __name__ == "__main__":
+    loop = bug28222_2_loop_length()
+    print("occt_bug28222_2: loop %.13f, total %.13f" % (loop, 2 * loop))
     print("apex 1", repr(tuple(C1[0])), "axis", repr(tuple(C1[1])))
     print("apex 2", repr(tuple(C2[0])), "axis", repr(tuple(C2[1])))
     L = [branch_length(k) for k in (0, 1)]
