@@ -23,7 +23,7 @@ namespace ssimarch {
 namespace {
 
 // The whole (unclipped) section, and which closed form gave it; `gap`: the tangency gap tolerance
-// (model units, closed_form_gap_tolerance).
+// (model units, contact_gap_tolerance).
 std::optional<std::vector<Conic>> section(const Surface& a, const Surface& b, double scale, double gap, std::string* pair) {
   for (int order = 0; order < 2; ++order) {
     const Surface& p = order == 0 ? a : b;
@@ -220,7 +220,7 @@ std::optional<ClosedFormResult> closed_form_intersection(const Problem& problem,
   add_trims(problem.second(), &region);
   const double deviation = options.deviation > 0 ? options.deviation : 1e-4 * scale;
   const double max_chord = options.step_length > 0 ? options.step_length : scale / 10;
-  const double gap = closed_form_gap_tolerance(options.tolerance, scale);
+  const double gap = contact_gap_tolerance(options.tolerance, scale);
   if (const auto whole = section(problem.first(), problem.second(), scale, gap, &out.pair)) {
     for (const Conic& conic : *whole) {
       for (const Conic& piece : clip_to_slabs(conic, region)) {

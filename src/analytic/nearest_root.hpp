@@ -1,5 +1,5 @@
 // The root nearest 0 of a quadratic k0 + 2 k1 h + k2 h^2, internal to analytic/: the gap (model
-// units) that plane sections and coaxial surfaces compare with closed_form_gap_tolerance
+// units) that plane sections and coaxial surfaces compare with contact_gap_tolerance
 // (docs/math/closed_form_quadrics.md, "Tangency by the gap").
 #pragma once
 

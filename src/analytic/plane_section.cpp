@@ -24,7 +24,7 @@ struct PlaneConic {
   double scale = 1;
   Eigen::Vector2d b1;
   double c1 = 0, c2 = 0;
-  double gap_tolerance = 0;  // model units (closed_form_gap_tolerance)
+  double gap_tolerance = 0;  // model units (contact_gap_tolerance)
 
   Vec3 world(const Eigen::Vector2d& st) const { return origin + scale * (st.x() * u + st.y() * v); }
   Vec3 direction(const Eigen::Vector2d& d) const { return (d.x() * u + d.y() * v).normalized(); }

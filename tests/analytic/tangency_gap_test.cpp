@@ -1,6 +1,6 @@
 // Tangency by the gap (docs/math/closed_form_quadrics.md, "Tangency by the gap"): a plane section
 // or a coaxial pair is a tangential contact when the surfaces' gap, in model units, is within
-// closed_form_gap_tolerance (the corrector tolerance, 1e-12 by default), and otherwise the exact
+// contact_gap_tolerance (the corrector tolerance, 1e-12 by default), and otherwise the exact
 // circle however small. References: the circle of a sphere of radius R cut at depth g has radius
 // sqrt(g (2R - g)); two spheres of radii R1, R2 whose centres are R1 + R2 - g apart meet in the
 // radical plane in a circle of radius sqrt(R1^2 - x^2), x = (d^2 + R1^2 - R2^2) / (2d).

@@ -14,7 +14,7 @@ namespace ssimarch {
 /// terms of the discriminant Delta along the rulings, for a double root of Delta) at or below
 /// which a closed-form section counts it as zero. Plane sections and coaxial surfaces do not
 /// decide tangency by it (a gap of 1e-10 of the model size is far above double precision): they
-/// measure the gap in model units and compare it with closed_form_gap_tolerance below. The coefficients come from a few products of the inputs, so
+/// measure the gap in model units and compare it with contact_gap_tolerance below. The coefficients come from a few products of the inputs, so
 /// they carry ~1e-15 relative rounding; 1e-10 leaves five orders of margin and is the order at
 /// which kCurveJetRankTolerance stops trusting the jets of a near-tangency. Dimensionless;
 /// default 1e-10. (Was in analytic/.)
@@ -32,7 +32,7 @@ inline constexpr double kClosedFormGapRounding = 64;
 /// a double circle): the corrector tolerance (TraceOptions::tolerance, model units, default 1e-12:
 /// a point within it of both surfaces is on the curve, so a contact within it is a contact), but
 /// never below the rounding of the gap, kClosedFormGapRounding eps scale.
-inline double closed_form_gap_tolerance(double tolerance, double scale) {
+inline double contact_gap_tolerance(double tolerance, double scale) {
   return std::max(tolerance, kClosedFormGapRounding * std::numeric_limits<double>::epsilon() * scale);
 }
 
