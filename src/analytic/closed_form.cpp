@@ -22,8 +22,9 @@ namespace ssimarch {
 
 namespace {
 
-// The whole (unclipped) section, and which closed form gave it.
-std::optional<std::vector<Conic>> section(const Surface& a, const Surface& b, double scale, std::string* pair) {
+// The whole (unclipped) section, and which closed form gave it; `gap`: the tangency gap tolerance
+// (model units, contact_gap_tolerance).
+std::optional<std::vector<Conic>> section(const Surface& a, const Surface& b, double scale, double gap, std::string* pair) {
   for (int order = 0; order < 2; ++order) {
     const Surface& p = order == 0 ? a : b;
     const Surface& q = order == 0 ? b : a;
@@ -31,13 +32,13 @@ std::optional<std::vector<Conic>> section(const Surface& a, const Surface& b, do
     const auto Q = plane ? quadric_matrix(q) : std::nullopt;
     if (plane && Q) {
       *pair = "plane-quadric";
-      return plane_section(plane->frame(), *Q, scale);
+      return plane_section(plane->frame(), *Q, scale, gap);
     }
   }
   const auto ra = revolution_form(a), rb = revolution_form(b);
   if (!ra || !rb) return std::nullopt;
   *pair = "coaxial";
-  return coaxial_section(*ra, *rb, scale);
+  return coaxial_section(*ra, *rb, scale, gap);
 }
 
 // The trims of a primitive as slabs: a plane's or paraboloid's parameter rectangle, a cylinder's
@@ -219,7 +220,8 @@ std::optional<ClosedFormResult> closed_form_intersection(const Problem& problem,
   add_trims(problem.second(), &region);
   const double deviation = options.deviation > 0 ? options.deviation : 1e-4 * scale;
   const double max_chord = options.step_length > 0 ? options.step_length : scale / 10;
-  if (const auto whole = section(problem.first(), problem.second(), scale, &out.pair)) {
+  const double gap = contact_gap_tolerance(options.tolerance, scale);
+  if (const auto whole = section(problem.first(), problem.second(), scale, gap, &out.pair)) {
     for (const Conic& conic : *whole) {
       for (const Conic& piece : clip_to_slabs(conic, region)) {
         if (piece.type == ConicType::kPoint) {

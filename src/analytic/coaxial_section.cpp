@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
+#include "nearest_root.hpp"
 #include "ssimarch/problem/closed_form_tolerances.hpp"
 
 namespace ssimarch {
@@ -34,29 +36,51 @@ bool common_axis(RevolutionForm* a, RevolutionForm* b, double scale) {
   return a->axis.cross(b->axis).norm() <= kEps && distance_from_axis(b->origin, *a) <= kEps * scale;
 }
 
-// Real roots of q0 + q1 x + q2 x^2 (normalised coefficients), with whether each is double.
-std::vector<std::pair<double, bool>> quadratic_roots(double q0, double q1, double q2) {
+// A meridian r^2 = g(h) = c0 + c1 h + c2 h^2 on the common axis (h in model units from a.origin).
+struct Meridian {
+  double c0 = 0, c1 = 0, c2 = 0;
+  double at(double h) const { return c0 + (c1 + c2 * h) * h; }
+  double slope(double h) const { return c1 + 2 * c2 * h; }
+  // Signed axial distance from h to the nearest pole (r = 0: a sphere's pole, a cone's apex);
+  // +infinity when there is none (a cylinder).
+  double to_pole(double h) const { return internal::nearest_root(at(h), slope(h) / 2, c2); }
+};
+
+// A root of g_a - g_b: where (model units) and whether the meridians touch there (a double root).
+struct AxialRoot {
+  double h = 0;
+  bool twice = false;
+};
+
+// The roots of g_a - g_b = q0 + q1 eta + q2 eta^2 (eta = h / scale, normalised coefficients; the
+// shape tests are relative). Two simple roots merge into one double root (the surfaces touch along
+// a circle) when at the extremum h* of g_a - g_b the distance of b's circle from a, |g_a - g_b| /
+// |grad (r^2 - g_a)|, is within the gap tolerance.
+std::vector<AxialRoot> axial_roots(double q0, double q1, double q2, double scale, const Meridian& a, const Meridian& b,
+                                   double gap_tolerance) {
   if (std::fabs(q2) <= kEps) {
     if (std::fabs(q1) <= kEps) return {};
-    return {{-q0 / q1, false}};
+    return {{-q0 / q1 * scale, false}};
   }
+  const double hstar = -q1 / (2 * q2) * scale, f = a.at(hstar) - b.at(hstar);
+  const double grad = std::hypot(a.slope(hstar), 2 * std::sqrt(std::max(b.at(hstar), 0.0)));
+  const double gap = grad > 0 ? std::fabs(f) / grad : (f == 0 ? 0.0 : std::numeric_limits<double>::infinity());
+  if (gap <= gap_tolerance) return {{hstar, true}};
   const double disc = q1 * q1 - 4 * q2 * q0;
-  if (std::fabs(disc) <= kEps) return {{-q1 / (2 * q2), true}};
   if (disc < 0) return {};
   const double s = -0.5 * (q1 + std::copysign(std::sqrt(disc), q1));  // no cancellation
-  return {{s / q2, false}, {q0 / s, false}};
+  return {{s / q2 * scale, false}, {q0 / s * scale, false}};
 }
 
 }  // namespace
 
-std::optional<std::vector<Conic>> coaxial_section(RevolutionForm a, RevolutionForm b, double scale) {
+std::optional<std::vector<Conic>> coaxial_section(RevolutionForm a, RevolutionForm b, double scale, double gap_tolerance) {
   if (!common_axis(&a, &b, scale)) return std::nullopt;
   // b's axial coordinate in terms of a's h: h_b = sigma (h - d).
   const double sigma = a.axis.dot(b.axis) > 0 ? 1.0 : -1.0, d = (b.origin - a.origin).dot(a.axis);
+  const Meridian ma{a.c0, a.c1, a.c2}, mb{b.c0 - b.c1 * sigma * d + b.c2 * d * d, b.c1 * sigma - 2 * b.c2 * d, b.c2};
   // g_a(h) - g_b(h) = q0 + q1 h + q2 h^2, written in eta = h / scale and normalised.
-  double q0 = a.c0 - (b.c0 - b.c1 * sigma * d + b.c2 * d * d);
-  double q1 = (a.c1 - (b.c1 * sigma - 2 * b.c2 * d)) * scale;
-  double q2 = (a.c2 - b.c2) * scale * scale;
+  double q0 = ma.c0 - mb.c0, q1 = (ma.c1 - mb.c1) * scale, q2 = (ma.c2 - mb.c2) * scale * scale;
   const double m = std::max({std::fabs(q0), std::fabs(q1), std::fabs(q2)});
   if (m <= kEps * std::max({std::fabs(a.c0), std::fabs(a.c1) * scale, std::fabs(a.c2) * scale * scale, 1e-300}))
     return std::nullopt;  // the same surface
@@ -65,17 +89,21 @@ std::optional<std::vector<Conic>> coaxial_section(RevolutionForm a, RevolutionFo
   q2 /= m;
   std::vector<Conic> out;
   const Frame f = Frame::from_axis(a.origin, a.axis);
-  for (const auto& [eta, twice] : quadratic_roots(q0, q1, q2)) {
-    const double h = eta * scale, r2 = a.c0 + a.c1 * h + a.c2 * h * h;
+  for (const auto& [h, twice] : axial_roots(q0, q1, q2, scale, ma, mb, gap_tolerance)) {
     Conic c;
-    c.center = a.origin + h * a.axis;
     c.e0 = f.e0;
     c.e1 = f.e1;
     c.contact = twice ? Contact::kTangential : Contact::kTransversal;
-    if (std::fabs(r2) <= kEps * scale * scale) {
+    // The surfaces meet at a pole of both (spheres touching, a sphere on a cone's apex) when the
+    // poles nearest the root are within the gap tolerance of it and of each other.
+    const double pa = ma.to_pole(h), pb = mb.to_pole(h);
+    const double r2 = ma.at(h);
+    if (std::max({std::fabs(pa), std::fabs(pb), std::fabs(pa - pb)}) <= gap_tolerance) {
       c.type = ConicType::kPoint;
+      c.center = a.origin + (h + 0.5 * (pa + pb)) * a.axis;
     } else if (r2 > 0) {
       c.type = ConicType::kCircle;
+      c.center = a.origin + h * a.axis;
       c.a = c.b = std::sqrt(r2);
     } else {
       continue;

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "nearest_root.hpp"
 #include "ssimarch/problem/closed_form_tolerances.hpp"
 
 namespace ssimarch {
@@ -12,13 +13,18 @@ namespace {
 
 constexpr double kEps = kClosedFormDegeneracy;
 
-// The plane's data in scaled coordinates (s, t) = (world offset along e0, e1) / scale.
+// The plane's data in scaled coordinates (s, t) = (world offset along e0, e1) / scale, and how b
+// and c change when the plane moves by h (model units) along its normal: b + h b1, c + 2 h c1 +
+// h^2 c2 (A does not change).
 struct PlaneConic {
   Eigen::Matrix2d A;
   Eigen::Vector2d b;
   double c = 0;
   Vec3 origin, u, v;  // world: point = origin + scale (s u + t v)
   double scale = 1;
+  Eigen::Vector2d b1;
+  double c1 = 0, c2 = 0;
+  double gap_tolerance = 0;  // model units (contact_gap_tolerance)
 
   Vec3 world(const Eigen::Vector2d& st) const { return origin + scale * (st.x() * u + st.y() * v); }
   Vec3 direction(const Eigen::Vector2d& d) const { return (d.x() * u + d.y() * v).normalized(); }
@@ -36,13 +42,22 @@ Conic make(ConicType type, const Vec3& c, const Vec3& e0, const Vec3& e1, double
   return k;
 }
 
+// The plane touches the quadric: the distance it must move along its normal to become tangent
+// (the constant k = c - b^T A+ b of the centred conic, a quadratic in that distance, vanishes) is
+// within the gap tolerance. `Ainv`: A's inverse, or its pseudo-inverse on the non-zero eigenvalue.
+bool touches(const PlaneConic& pc, const Eigen::Matrix2d& Ainv) {
+  const double k0 = pc.c - pc.b.dot(Ainv * pc.b), k1 = pc.c1 - pc.b1.dot(Ainv * pc.b), k2 = pc.c2 - pc.b1.dot(Ainv * pc.b1);
+  return std::fabs(internal::nearest_root(k0, k1, k2)) <= pc.gap_tolerance;
+}
+
 // Both eigenvalues non-zero: a central conic about x0 (ellipse, hyperbola, point, crossing lines).
 std::vector<Conic> central(const PlaneConic& pc, const Eigen::Vector2d& lam, const Eigen::Matrix2d& R) {
   const Eigen::Vector2d x0 = -pc.A.ldlt().solve(pc.b);
   const double k = pc.c + pc.b.dot(x0);  // lam0 X^2 + lam1 Y^2 + k = 0 in the eigenbasis
   const Vec3 c = pc.world(x0), w0 = pc.direction(R.col(0)), w1 = pc.direction(R.col(1));
+  const bool touching = touches(pc, R * lam.cwiseInverse().asDiagonal() * R.transpose());
   if (lam[0] * lam[1] > 0) {
-    if (std::fabs(k) <= kEps) return {make(ConicType::kPoint, c, w0, w1, 0, 0, Contact::kTangential)};
+    if (touching) return {make(ConicType::kPoint, c, w0, w1, 0, 0, Contact::kTangential)};
     if (k / lam[0] > 0) return {};
     // |lam0| >= |lam1|: the semi-axis along w1 is the major one.
     const double major = pc.scale * std::sqrt(-k / lam[1]), minor = pc.scale * std::sqrt(-k / lam[0]);
@@ -50,7 +65,7 @@ std::vector<Conic> central(const PlaneConic& pc, const Eigen::Vector2d& lam, con
     return {make(circle ? ConicType::kCircle : ConicType::kEllipse, c, w1, w0, major, circle ? major : minor,
                  Contact::kTransversal)};
   }
-  if (std::fabs(k) <= kEps) {  // two lines crossing at x0 (a plane through a cone's apex)
+  if (touching) {  // two lines crossing at x0 (a plane through a cone's apex, tangent to a hyperboloid)
     const double m = std::sqrt(-lam[0] / lam[1]);
     return {make(ConicType::kLine, c, pc.direction(R.col(0) + m * R.col(1)), w1, 0, 0, Contact::kTransversal),
             make(ConicType::kLine, c, pc.direction(R.col(0) - m * R.col(1)), w1, 0, 0, Contact::kTransversal)};
@@ -75,7 +90,7 @@ std::vector<Conic> parabolic(const PlaneConic& pc, double lam, const Eigen::Matr
     return {make(ConicType::kParabola, pc.world(R * Eigen::Vector2d(X0, Y0)), opens * w1, w0, focal, 0,
                  Contact::kTransversal)};
   }
-  if (std::fabs(k) <= kEps)
+  if (touches(pc, R.col(0) * R.col(0).transpose() / lam))
     return {make(ConicType::kLine, pc.world(R * Eigen::Vector2d(X0, 0)), w1, w0, 0, 0, Contact::kTangential)};
   if (k / lam > 0) return {};
   const double d = std::sqrt(-k / lam);
@@ -85,7 +100,8 @@ std::vector<Conic> parabolic(const PlaneConic& pc, double lam, const Eigen::Matr
 
 }  // namespace
 
-std::optional<std::vector<Conic>> plane_section(const Frame& plane, const Eigen::Matrix4d& Q, double scale) {
+std::optional<std::vector<Conic>> plane_section(const Frame& plane, const Eigen::Matrix4d& Q, double scale,
+                                                double gap_tolerance) {
   // Homogeneous world point of (s, t): M (s, t, 1) with the coordinates scaled by `scale`.
   Eigen::Matrix<double, 4, 3> M = Eigen::Matrix<double, 4, 3>::Zero();
   M.block<3, 1>(0, 0) = scale * plane.e0;
@@ -96,7 +112,12 @@ std::optional<std::vector<Conic>> plane_section(const Frame& plane, const Eigen:
   const double m = C.cwiseAbs().maxCoeff();
   if (!(m > 0) || !std::isfinite(m)) return std::nullopt;
   C /= m;
-  PlaneConic pc{C.topLeftCorner<2, 2>(), C.topRightCorner<2, 1>(), C(2, 2), plane.origin, plane.e0, plane.e1, scale};
+  // The plane moved by h along its normal n: M's last column gains h (n, 0).
+  const Vec3 n = plane.e0.cross(plane.e1).normalized();
+  const Eigen::Vector4d N(n.x(), n.y(), n.z(), 0);
+  const Eigen::Vector3d moved = M.transpose() * Q * N / m;  // (b1, c1)
+  PlaneConic pc{C.topLeftCorner<2, 2>(), C.topRightCorner<2, 1>(), C(2, 2), plane.origin, plane.e0, plane.e1, scale,
+                moved.head<2>(), moved[2], N.dot(Q * N) / m, gap_tolerance};
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(pc.A);
   Eigen::Vector2d lam = eig.eigenvalues();
   Eigen::Matrix2d R = eig.eigenvectors();

@@ -16,6 +16,9 @@ constexpr double kTwoPi = 2 * M_PI;
 constexpr int kGrid = 96;          // samples of Delta' per turn: Delta has degree 2, Delta' at most 4 roots
 constexpr double kGridStart = 0.0123456789;  // first sample: off 0 and the multiples of pi / 2
 constexpr int kBisections = 200;
+// |theta - tau| (radians) within which a point is at the crossing tau: the crossing's own sample
+// (ruled_pieces.cpp, add_crossings) maps to tau up to rounding.
+constexpr double kCrossingParameter = 1e-12;
 constexpr double kJetDiscriminant = 1e-8;  // |Delta| relative to its terms above which its jet is trusted   // enough to reach adjacent doubles from a grid cell
 
 Eigen::Vector4d point4(const Vec3& p, double w) { return {p.x(), p.y(), p.z(), w}; }
@@ -90,7 +93,46 @@ Vec3 RuledCurves::double_root_point(double theta) const {
   return {p.x, p.y, p.z};
 }
 
+double RuledCurves::root_sign(const RuledLoop& loop, double phi) const {
+  double sign = loop.arc ? (std::sin(phi) >= 0 ? 1.0 : -1.0) : loop.sign;
+  const double th = loop.arc ? 0.5 * (loop.lo + loop.hi) - 0.5 * (loop.hi - loop.lo) * std::cos(phi) : loop.lo + phi;
+  for (double tau : loop.switches)
+    sign *= loop.arc ? (th >= tau ? 1.0 : -1.0) : (std::sin(0.5 * (th - tau)) >= 0 ? 1.0 : -1.0);
+  return sign;
+}
+
+namespace {
+
+// d point / d phi at a crossing tau where `loop` changes sheet (Delta(tau) = 0 < Delta''(tau)):
+// the signed root S = sign sqrt(Delta) is smooth there with dS/dtheta = s sqrt(Delta''/2), s its
+// sign just past tau, so t = (-b + S) / 2a has an exact jet. A difference of sqrt(Delta) across
+// tau does not: at a step h, Delta ~ Delta'' h^2 / 2 may round to 0 on both sides, which puts both
+// points between the two sheets and gives the bisector of the two branches (edges of the Levin
+// pencil's ellipses 1.1e-3 too long, issue 13). None when phi is not at such a crossing.
+std::optional<Vec3> crossing_derivative(const RuledCurves& rc, const RuledLoop& loop, double phi) {
+  const Taylor<1> theta = loop.arc ? 0.5 * (loop.lo + loop.hi) - 0.5 * (loop.hi - loop.lo) * cos(Taylor<1>::variable(0, phi))
+                                   : loop.lo + Taylor<1>::variable(0, phi);
+  for (double tau : loop.switches) {
+    if (!(std::fabs(std::remainder(theta[0] - tau, kTwoPi)) <= kCrossingParameter)) continue;
+    const auto [a2, b2, c2] = rc.quadratic(Taylor<2>::variable(0, tau));
+    const double second = 2 * (b2 * b2 - 4.0 * a2 * c2)[2];  // Delta''(tau)
+    if (!(second > 0) || theta[1] == 0) return std::nullopt;
+    // The sign just past tau (theta > tau): a step along phi in the direction theta increases.
+    const double s = rc.root_sign(loop, phi + (theta[1] > 0 ? 1 : -1) * 1e3 * kCrossingParameter / std::fabs(theta[1]));
+    const Taylor<1> S = s * std::sqrt(0.5 * second) * (theta - tau);
+    const auto [a, b, c] = rc.quadratic(theta);
+    const Taylor<1> t = b[0] * s > 0 ? Taylor<1>(2.0 * c / (-b - S)) : Taylor<1>((-b + S) / (2.0 * a));
+    const Vec3T<Taylor<1>> p = rc.on_ruling(theta, t);
+    const Vec3 d(p.x[1], p.y[1], p.z[1]);
+    if (d.allFinite()) return d;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 Vec3 RuledCurves::derivative(const RuledLoop& loop, double phi) const {
+  if (const auto d = crossing_derivative(*this, loop, phi)) return *d;
   // Jets in phi are exact where Delta is well away from 0; at and next to its roots (the turning
   // points, the crossings) sqrt(Delta)'s jet is 0/0 and rounding decides it, so there a central
   // difference of the (analytic) loop: its error is O(h^2) ~ 1e-10 relative.

@@ -2,6 +2,7 @@
 // field it sets. Meanings and defaults: docs/marching.md (the strategies), docs/geometry.md.
 #include "ssimarch/pipeline/option_table.hpp"
 
+#include <charconv>
 #include <functional>
 
 #include "ssimarch/core/error.hpp"
@@ -196,9 +197,17 @@ const Row& row_of(const TraceOptionSpec& spec) {
   throw std::logic_error("trace option \"" + std::string(spec.key) + "\" is not in the table");
 }
 
+// A number given as text (a CLI flag, a scene's constant expression). A plain number, including
+// "nan" and "inf" (which the expression language does not know), is read as one, so that the
+// range check names the rule ("must be a finite number ...") rather than the expression compiler
+// an unknown name.
 double number_of(const OptionValue& value, const Constants& constants, const std::string& where) {
   if (const double* x = std::get_if<double>(&value)) return *x;
-  return evaluate_constant(std::get<std::string>(value), constants, where);
+  const std::string& text = std::get<std::string>(value);
+  double x = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), x);
+  if (ec == std::errc() && end == text.data() + text.size()) return x;
+  return evaluate_constant(text, constants, where);
 }
 
 void check_number(const Row& row, double x, const std::string& where) {

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <optional>
 
+#include "ssimarch/problem/closed_form_tolerances.hpp"
+
 namespace ssimarch {
 
 namespace {
@@ -25,7 +27,10 @@ void trim_beyond(const Vec3& s, std::size_t begin, BranchMarch* out) {
 }
 
 // The located singular point near the end of a march stopped by kSingularSuspected, if any:
-// located from the middle of the reversed step (a crossing) or from the last point (stuck).
+// located from the middle of the reversed step (a crossing) or from the last point (stuck). A
+// singular point of the curve is a point of it, so the surfaces meet there to the tracer's
+// tolerance (contact_gap_tolerance, as the closed forms decide contact); a critical point of the
+// gap beyond it is a near miss (a sphere 1e-10 above a plane: the tiny circle goes round it).
 bool locate_near(const Tracer& tracer, const CurvePoint& last, const Event& event, SingularLocation* loc) {
   const Problem& P = tracer.problem();
   const bool crossing = event.beyond.size() > 0;
@@ -33,7 +38,8 @@ bool locate_near(const Tracer& tracer, const CurvePoint& last, const Event& even
   *loc = locate_singular_point(P, guess);
   const double chord = crossing ? (P.point(event.beyond) - last.p).norm() : 0.0;
   const double reach = std::max(2 * chord, tracer.options().step_length);
-  return loc->status == LocateStatus::kConverged && P.inside(loc->x, 1e-9) && (loc->point - last.p).norm() <= reach;
+  return loc->status == LocateStatus::kConverged && loc->gap <= contact_gap_tolerance(tracer.options().tolerance, P.scale()) &&
+         P.inside(loc->x, 1e-9) && (loc->point - last.p).norm() <= reach;
 }
 
 // Whether the curve's start lies on the stretch from the last accepted point to the singular point

@@ -328,6 +328,48 @@ void add_or_join(TracedCurve c, const std::vector<LooseEnd>& ends, std::vector<T
 // get past it: OCCT bug32850): a curve shorter than the resolution radius, through no singular
 // point, with every point within that radius of a longer curve is that curve's duplicate and goes
 // (each branch once, issue 11 item 2); the registry's curve indices follow.
+// Removes curve i; the registry's curve indices follow.
+void erase_curve(std::size_t i, std::vector<TracedCurve>* curves, SingularRegistry* registry) {
+  curves->erase(curves->begin() + static_cast<std::ptrdiff_t>(i));
+  for (std::size_t n = 0; registry && n < registry->nodes().size(); ++n) {
+    std::vector<int>& on = registry->node(static_cast<int>(n)).curves;
+    on.erase(std::remove(on.begin(), on.end(), static_cast<int>(i)), on.end());
+    for (int& k : on)
+      if (k > static_cast<int>(i)) --k;
+  }
+}
+
+// An isolated point (a contact with no real branch) that a curve shorter than the resolution
+// radius leaves and returns to: no branch arrives at an isolated point, so the curve is a loop
+// around the contact within the tracer's resolution. The surfaces meet there to the tolerance
+// (through_singular.cpp, locate_near) with parallel normals, and a loop's points are known only
+// to tolerance / sin(angle between the normals), its own size (a sphere 1e-12 above a plane: a
+// circle of radius 1.4e-6, points known to 7e-7): the contact point is the answer, as the closed
+// form gives it for a gap within the tolerance (analytic/, contact_gap_tolerance). The curve goes
+// and the point becomes an isolated point (out of the singular points); returns those points.
+std::vector<Vec3> absorb_contact_loops(std::vector<TracedCurve>* curves, SingularRegistry* registry, double radius,
+                                       double tol, std::vector<SingularPointReport>* isolated) {
+  std::vector<Vec3> absorbed;
+  for (std::size_t n = 0; n < registry->nodes().size(); ++n) {
+    const SingularNode& node = registry->nodes()[n];
+    if (node.kind.type != SingularType::kIsolated) continue;
+    const Vec3 p = node.location.point;
+    for (std::size_t i = curves->size(); i-- > 0;) {
+      const TracedCurve& c = (*curves)[i];
+      const bool on = std::find(node.curves.begin(), node.curves.end(), static_cast<int>(i)) != node.curves.end();
+      if (!on || c.closed || c.length > radius || c.points.empty() || (c.points.front().p - p).norm() > tol ||
+          (c.points.back().p - p).norm() > tol)
+        continue;
+      erase_curve(i, curves, registry);
+      if (std::find(absorbed.begin(), absorbed.end(), p) == absorbed.end()) {
+        absorbed.push_back(p);
+        isolated->push_back(make_report(node.location, node.kind, {}));
+      }
+    }
+  }
+  return absorbed;
+}
+
 void drop_stubs(std::vector<TracedCurve>* curves, SingularRegistry* registry, double radius) {
   for (std::size_t i = curves->size(); i-- > 0;) {
     const TracedCurve& c = (*curves)[i];
@@ -344,13 +386,7 @@ void drop_stubs(std::vector<TracedCurve>* curves, SingularRegistry* registry, do
     const bool covered = std::all_of(c.points.begin(), c.points.end(),
                                      [&](const CurvePoint& p) { return near_traced_curve(p.p, others, radius); });
     if (!covered || others.empty()) continue;
-    curves->erase(curves->begin() + static_cast<std::ptrdiff_t>(i));
-    for (std::size_t n = 0; registry && n < registry->nodes().size(); ++n) {
-      std::vector<int>& on = registry->node(static_cast<int>(n)).curves;
-      on.erase(std::remove(on.begin(), on.end(), static_cast<int>(i)), on.end());
-      for (int& k : on)
-        if (k > static_cast<int>(i)) --k;
-    }
+    erase_curve(i, curves, registry);
   }
 }
 
@@ -443,8 +479,13 @@ TraceResult trace_all(const Tracer& unbounded, const std::vector<Vec3>& starts, 
       result.curves.push_back(std::move(c));
     }
   drop_stubs(&result.curves, reg, radius);
+  const std::vector<Vec3> contacts =
+      reg ? absorb_contact_loops(&result.curves, reg, radius, registry_tol, &result.isolated_points) : std::vector<Vec3>{};
   for (TracedCurve& c : result.curves) explain_bound(bound, &c);
   if (reg) result.singular_points = registry.reports();
+  std::erase_if(result.singular_points, [&](const SingularPointReport& r) {
+    return std::find(contacts.begin(), contacts.end(), r.p) != contacts.end();
+  });
   result.stats.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return result;
 }

@@ -3,6 +3,7 @@
 // against the closed form of the peers case and against the tracer (closed_form off).
 #include "ssimarch/analytic/quadric_pencil.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -74,6 +75,32 @@ TEST(QuadricPencil, PeersEllipsoidsAreTwoEllipsesThroughTwoNodes) {
     EXPECT_EQ(s.type, "node");
     EXPECT_NEAR((s.p.cwiseAbs() - Vec3(0, 1.6, 0)).norm(), 0, 1e-12);
     EXPECT_EQ(s.curves.size(), 2u);
+  }
+}
+
+// Every tangent, the nodes' included, lies in its own ellipse's plane z = +-k x, in both orders of
+// the pair: at a node the loop changes sheet of the rulings' quadratic, and a difference of its
+// square root there gave the bisector of the two ellipses (edges 1.1e-3 too long, order dependent).
+TEST(QuadricPencil, TangentsAtTheNodesFollowTheirOwnEllipse) {
+  const Ellipsoid e1(Vec3::Zero(), {1.2, 1.6, 2}), e2(Vec3::Zero(), {0.9, 1.6, 2.5});
+  const double k = std::sqrt((1 / 0.81 - 1 / 1.44) / (1 / 4.0 - 1 / 6.25));
+  for (const Problem& P : {Problem(e1, e2, PairKind::kImplicitImplicit), Problem(e2, e1, PairKind::kImplicitImplicit)}) {
+    const ClosedFormResult r = solve(P);
+    ASSERT_EQ(r.result.curves.size(), 2u);
+    for (const TracedCurve& c : r.result.curves) {
+      // The curve's plane from its point farthest from the y axis.
+      const auto far = std::max_element(c.points.begin(), c.points.end(), [](const CurvePoint& p, const CurvePoint& q) {
+        return std::hypot(p.p.x(), p.p.z()) < std::hypot(q.p.x(), q.p.z());
+      });
+      const Vec3 normal = Vec3(far->p.z() / far->p.x() > 0 ? k : -k, 0, -1).normalized();
+      int at_nodes = 0;
+      for (const CurvePoint& p : c.points) {
+        EXPECT_NEAR(p.t.norm(), 1, 1e-12);
+        EXPECT_NEAR(p.t.dot(normal), 0, 1e-9) << "at " << p.p.transpose();
+        at_nodes += (p.p.cwiseAbs() - Vec3(0, 1.6, 0)).norm() <= 1e-12;
+      }
+      EXPECT_GE(at_nodes, 2);  // both nodes are points of the curve
+    }
   }
 }
 

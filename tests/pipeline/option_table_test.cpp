@@ -134,9 +134,12 @@ TEST(OptionTable, CommandLineTextIsParsedByTheSameRules) {
     return std::string("(no error)");
   };
   EXPECT_EQ(error("step_length", "-1"), "--step-length: must be a finite number >= 0 (0 = automatic), got -1");
-  EXPECT_THAT(error("step_length", "nan"), HasSubstr("--step-length: "));
+  // Non-finite spellings are numbers to the range check, not unknown names to the expression compiler.
+  EXPECT_EQ(error("step_length", "nan"), "--step-length: must be a finite number >= 0 (0 = automatic), got a value that is not finite");
+  EXPECT_THAT(error("step_length", "-inf"), HasSubstr("--step-length: must be a finite number >= 0"));
   EXPECT_THAT(error("tolerance", "-1"), HasSubstr("--tolerance: must be a finite number >= 1e-15"));
-  EXPECT_THAT(error("deviation", "nan"), HasSubstr("--deviation: "));
+  EXPECT_THAT(error("deviation", "nan"), HasSubstr("--deviation: must be a finite number"));
+  EXPECT_THAT(error("tolerance", "nan"), HasSubstr("--tolerance: must be a finite number >= 1e-15"));
   EXPECT_THAT(error("taylor_order", "4294967297"), HasSubstr("--taylor-order: must be an integer in [1, 8]"));
   EXPECT_THAT(error("predictor", "nonsense"), HasSubstr("--predictor: unknown predictor \"nonsense\""));
   EXPECT_EQ(error("max_points", "1e3"), "(no error)");
@@ -145,7 +148,7 @@ TEST(OptionTable, CommandLineTextIsParsedByTheSameRules) {
                InputError);
   EXPECT_THROW(apply_trace_option(*find_trace_option("step_length"), std::numeric_limits<double>::infinity(), c, "x", &o),
                InputError);
-  // max_length's default, +inf, means unbounded (no file or flag can write it).
+  // max_length's default, +inf, means unbounded (a flag may write it as "inf"; JSON cannot).
   EXPECT_NO_THROW(apply_trace_option(*find_trace_option("max_length"), std::numeric_limits<double>::infinity(), c, "x", &o));
   EXPECT_THROW(apply_trace_option(*find_trace_option("max_length"), -std::numeric_limits<double>::infinity(), c, "x", &o),
                InputError);

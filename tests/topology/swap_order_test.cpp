@@ -104,9 +104,6 @@ void expect_same_network(const CurveNetwork& a, const CurveNetwork& b) {
 class SwapOrder : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(SwapOrder, SameNetwork) {
-  if (GetParam().find("ellipsoid_ellipsoid") != std::string::npos)
-    GTEST_SKIP() << "open (integration of 2026-12-02): the pencil closed form's network edges differ by "
-                    "1.1e-3 between the two orders (the curves' lengths agree)";
   const std::filesystem::path file = std::filesystem::path(SSIMARCH_SOURCE_DIR) / GetParam();
   const Scene given = load_scene(file);
   const Scene swapped = parse_scene(swapped_text(file), file.string() + " (surfaces swapped)");

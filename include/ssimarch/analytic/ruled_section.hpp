@@ -77,8 +77,11 @@ class RuledCurves {
   Vec3T<T> point(const RuledLoop& loop, const T& phi) const;
   /// The point on the ruling at theta where the two roots meet (a crossing or isolated point).
   Vec3 double_root_point(double theta) const;
-  /// d point / d phi (exact; a central difference at the roots of Delta, where the jet is not finite).
+  /// d point / d phi (exact; at a crossing where the loop changes sheet, from the slope of the
+  /// signed root there; a central difference at the other roots of Delta, where the jet is not finite).
   Vec3 derivative(const RuledLoop& loop, double phi) const;
+  /// The sign of the root sqrt(Delta) that `loop` takes at phi (ruled_section.hpp, top).
+  double root_sign(const RuledLoop& loop, double phi) const;
 
   /// a, b, c of the quadratic on the ruling at theta.
   template <class T>
@@ -128,18 +131,8 @@ Vec3T<T> RuledCurves::point(const RuledLoop& loop, const T& phi) const {
   using std::cos;
   using std::sin;
   using std::sqrt;
-  T theta;
-  double sign;
-  if (loop.arc) {
-    theta = 0.5 * (loop.lo + loop.hi) - 0.5 * (loop.hi - loop.lo) * cos(phi);
-    sign = std::sin(primal(phi)) >= 0 ? 1.0 : -1.0;
-  } else {
-    theta = loop.lo + phi;
-    sign = loop.sign;
-  }
-  const double th = primal(theta);
-  for (double tau : loop.switches)
-    sign *= loop.arc ? (th >= tau ? 1.0 : -1.0) : (std::sin(0.5 * (th - tau)) >= 0 ? 1.0 : -1.0);
+  const T theta = loop.arc ? T(0.5 * (loop.lo + loop.hi) - 0.5 * (loop.hi - loop.lo) * cos(phi)) : T(loop.lo + phi);
+  const double sign = root_sign(loop, primal(phi));
   const auto [a, b, c] = quadratic(theta);
   const T disc = b * b - 4.0 * a * c;
   const T root = primal(disc) > 0 ? T(sign * sqrt(disc)) : T(0.0);

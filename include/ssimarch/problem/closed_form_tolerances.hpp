@@ -4,17 +4,43 @@
 // (a member of a pencil of rank < 3); all are relative, so scale-free.
 #pragma once
 
+#include <algorithm>
+#include <limits>
+
 namespace ssimarch {
 
-/// Relative size (of the largest coefficient of a plane conic, of the axial polynomial of two
-/// coaxial surfaces, or of the terms of the discriminant Delta along the rulings) at or below
-/// which a closed-form section counts a discriminant, a quadratic term or a squared radius as
-/// zero: the surfaces touch (a double line, a double circle, a single point, a double root of
-/// Delta) rather than cross or miss. The coefficients come from a few products of the inputs, so
+/// Relative size (of the largest coefficient of a plane conic or of the axial polynomial of two
+/// coaxial surfaces, for their shape: a vanishing eigenvalue or leading term, a circle; of the
+/// terms of the discriminant Delta along the rulings, for a double root of Delta) at or below
+/// which a closed-form section counts it as zero. Plane sections and coaxial surfaces do not
+/// decide tangency by it (a gap of 1e-10 of the model size is far above double precision): they
+/// measure the gap in model units and compare it with contact_gap_tolerance below. The coefficients come from a few products of the inputs, so
 /// they carry ~1e-15 relative rounding; 1e-10 leaves five orders of margin and is the order at
 /// which kCurveJetRankTolerance stops trusting the jets of a near-tangency. Dimensionless;
 /// default 1e-10. (Was in analytic/.)
 inline constexpr double kClosedFormDegeneracy = 1e-10;
+
+/// Rounding of a closed form's gap (units of DBL_EPSILON x the model size): the coefficients of a
+/// section are products of a few inputs of size ~scale, so a gap computed from them carries a few
+/// eps x scale; 64 is the margin of march/model_size.hpp's step floor (64 eps scale).
+/// Dimensionless; default 64.
+inline constexpr double kClosedFormGapRounding = 64;
+
+/// Gap (model units) at or below which two surfaces of a closed form touch rather than cross or
+/// miss (plane sections: the distance the plane must move along its normal to become tangent to
+/// the quadric; coaxial surfaces: the distance between them along the axis at a pole, or across
+/// a double circle): the corrector tolerance (TraceOptions::tolerance, model units, default 1e-12:
+/// a point within it of both surfaces is on the curve, so a contact within it is a contact), but
+/// never below the rounding of the gap, kClosedFormGapRounding eps scale.
+inline double contact_gap_tolerance(double tolerance, double scale) {
+  return std::max(tolerance, kClosedFormGapRounding * std::numeric_limits<double>::epsilon() * scale);
+}
+
+/// Relative rounding of a discriminant b^2 - ac formed from coefficients that carry ~1e-15
+/// relative error each: a negative discriminant within kDiscriminantRounding (b^2 + |ac|) is a
+/// double root (a plane through a cone's apex: the gap is exactly 0, its discriminant rounds to
+/// either sign). Not a tolerance of the geometry. Dimensionless; default 1e-12.
+inline constexpr double kDiscriminantRounding = 1e-12;
 
 /// Delta''/2 at a double root of the discriminant along the rulings, relative to Delta's scale,
 /// above which the closed form reports the root as an ordinary node itself (analytic/
