@@ -7,6 +7,8 @@
 
 #include "ssimarch/analytic/ruled_section.hpp"
 
+#include "ssimarch/problem/closed_form_tolerances.hpp"
+
 #include "chord_sampling.hpp"
 
 namespace ssimarch {
@@ -19,6 +21,10 @@ constexpr int kStartPieces = 16, kBoundaryBisections = 80;
 // need ~extent / max_chord samples to clip.
 constexpr std::size_t kMaxSamples = 100000;
 constexpr int kCoarseSamples = 256;
+// The coarse samples sit at phi = period (k + kNodeOffset) / kCoarseSamples: off phi = 0 and pi
+// (an arc's turning points, where the derivative is a difference quotient) at every level of
+// halving (0.3 times a power of 2 is never an integer).
+constexpr double kNodeOffset = 0.3;
 
 bool inside(const Vec3& p, const std::vector<Slab>& region) {
   if (!p.allFinite()) return false;
@@ -33,7 +39,7 @@ Vec3 at(const RuledCurves& rc, const RuledLoop& loop, double phi) {
 }
 
 // Arc length over [lo, hi]: 8-point Gauss-Legendre on n equal pieces, n doubled until two agree
-// to 1e-14 (the integrand is analytic in phi: a few doublings).
+// to kClosedFormLengthTolerance (the integrand is analytic in phi: a few doublings).
 double arc_length(const RuledCurves& rc, const RuledLoop& loop, double lo, double hi) {
   static constexpr double x[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
   static constexpr double w[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
@@ -50,10 +56,28 @@ double arc_length(const RuledCurves& rc, const RuledLoop& loop, double lo, doubl
   double prev = rule(4);
   for (int n = 8; n <= 1024; n *= 2) {
     const double next = rule(n);
-    if (std::fabs(next - prev) <= 1e-14 * std::fabs(next)) return next;
+    if (std::fabs(next - prev) <= kClosedFormLengthTolerance * std::fabs(next)) return next;
     prev = next;
   }
   return prev;
+}
+
+// The length of a whole loop from |d point / d phi| at kCoarseSamples uniform nodes: the
+// trapezoidal rule, exact to within 4 pi M / (exp(alpha N) - 1) for a periodic integrand analytic
+// and bounded by M in the strip |Im phi| < alpha (Trefethen & Weideman, "The exponentially
+// convergent trapezoidal rule", SIAM Review 56(3), 2014, Thm 3.2; rescaled to the period). The
+// rule on every second node (N / 2) has the square root of that bound, so their difference
+// measures the coarser one's error; the finer is taken when that difference is within
+// kClosedFormLengthTolerance (its own error is smaller still by exp(-alpha N / 2)). None when it
+// is not (a loop whose integrand has a singularity close to the real axis: Gauss-Legendre then).
+std::optional<double> periodic_length(const std::vector<double>& speed, double period) {
+  double all = 0, even = 0;
+  for (std::size_t k = 0; k < speed.size(); ++k) (k % 2 == 0 ? even : all) += speed[k];
+  all += even;
+  const double fine = all * period / static_cast<double>(speed.size());
+  const double coarse = even * period / static_cast<double>(speed.size() / 2);
+  if (!std::isfinite(fine) || !(std::fabs(fine - coarse) <= kClosedFormLengthTolerance * fine)) return std::nullopt;
+  return fine;
 }
 
 // The parameters in [0, period) where `loop` passes a crossing point (theta = tau, a double root
@@ -91,26 +115,29 @@ void add_crossings(std::vector<double>* params, const std::vector<double>& cross
     }
 }
 
+// The curve through the samples of [lo, hi] (given when the caller has them already: a whole
+// loop) and the crossing points in it; `length`: its length when the caller has it.
 std::optional<TracedCurve> make_curve(const RuledCurves& rc, const RuledLoop& loop, double lo, double hi, bool closed,
                                       double deviation, double max_chord, const std::vector<double>& crossing,
-                                      std::optional<std::vector<double>> params = std::nullopt) {
+                                      std::optional<std::vector<double>> params = std::nullopt,
+                                      std::optional<double> length = std::nullopt) {
   TracedCurve curve;
   curve.closed = closed;
-  // The samples of [lo, hi] (given when the caller has them already: a whole loop).
   if (!params)
     params = internal::sample_chord_parameters([&](double t) { return at(rc, loop, t); }, lo, hi, deviation, max_chord, kStartPieces, kMaxSamples);
   if (!params) return std::nullopt;
   add_crossings(&*params, crossing, loop.period(), lo, hi);
+  curve.points.reserve(params->size());
   for (double phi : *params) {
     CurvePoint p;
-    p.p = at(rc, loop, phi);
+    const auto [point, d] = rc.point_and_derivative(loop, phi);
+    p.p = point;
     p.x = p.p;
-    const Vec3 d = rc.derivative(loop, phi);
     p.t = d.norm() > 0 ? Vec3(d.normalized()) : Vec3::Zero();
     curve.points.push_back(std::move(p));
   }
   if (closed) curve.points.back() = curve.points.front();
-  curve.length = arc_length(rc, loop, lo, hi);
+  curve.length = length ? *length : arc_length(rc, loop, lo, hi);
   curve.start_end = curve.end_end = closed ? Termination::kClosedLoop : Termination::kLeftDomain;
   if (!closed) curve.start_message = curve.end_message = "closed form: the curve leaves the region (box or trim)";
   return curve;
@@ -140,30 +167,35 @@ std::optional<std::vector<TracedCurve>> ruled_curves_in(const RuledCurves& rc, c
     const double L = loop.period();
     const std::vector<double> crossing = crossing_parameters(loop, section.crossings);
     // A coarse polyline first: a loop that runs far outside the region needs more samples than
-    // the cap, which it need not spend to find out.
+    // the cap, which it need not spend to find out. Its uniform nodes, with the derivative, also
+    // give a whole loop's length (periodic_length).
     double coarse = 0;
-    Vec3 last = at(rc, loop, 0);
-    for (int k = 1; k <= kCoarseSamples; ++k) {
-      const Vec3 next = at(rc, loop, L * k / kCoarseSamples);
-      coarse += (next - last).norm();
-      last = next;
+    std::vector<double> speed(kCoarseSamples);
+    Vec3 first = Vec3::Zero(), last = Vec3::Zero();
+    for (int k = 0; k < kCoarseSamples; ++k) {
+      const auto [p, d] = rc.point_and_derivative(loop, L * (k + kNodeOffset) / kCoarseSamples);
+      speed[static_cast<std::size_t>(k)] = d.norm();
+      if (k == 0) first = p;
+      else coarse += (p - last).norm();
+      last = p;
     }
+    coarse += (first - last).norm();
     if (!(coarse / max_chord < static_cast<double>(kMaxSamples))) return std::nullopt;
-    auto sampled = internal::sample_chord_parameters([&](double p) { return at(rc, loop, p); }, 0, L, deviation, max_chord,
-                                                     kStartPieces, kMaxSamples);
+    auto sampled = internal::sample_chords([&](double p) { return at(rc, loop, p); }, 0, L, deviation, max_chord, kStartPieces,
+                                           kMaxSamples);
     if (!sampled) return std::nullopt;
-    const std::vector<double> whole = *sampled;
-    std::vector<double>& t = *sampled;
+    const std::vector<double> whole = sampled->t;
+    std::vector<double>& t = sampled->t;
     t.pop_back();  // t = L is t = 0 again
     const std::size_t n = t.size();
     std::vector<bool> in(n);
     std::size_t first_out = n;
     for (std::size_t i = 0; i < n; ++i) {
-      in[i] = inside(at(rc, loop, t[i]), region);
+      in[i] = inside(sampled->p[i], region);
       if (!in[i] && first_out == n) first_out = i;
     }
     if (first_out == n) {
-      if (!add(make_curve(rc, loop, 0, L, true, deviation, max_chord, crossing, whole))) return std::nullopt;
+      if (!add(make_curve(rc, loop, 0, L, true, deviation, max_chord, crossing, whole, periodic_length(speed, L)))) return std::nullopt;
       continue;
     }
     // Walk once round from an outside sample: each entry to its exit is one open piece.

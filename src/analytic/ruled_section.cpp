@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "ssimarch/analytic/trig_polynomial.hpp"
 #include "ssimarch/problem/closed_form_tolerances.hpp"
 
 namespace ssimarch {
@@ -13,20 +14,15 @@ namespace ssimarch {
 namespace {
 
 constexpr double kTwoPi = 2 * M_PI;
-constexpr int kGrid = 96;          // samples of Delta' per turn: Delta has degree 2, Delta' at most 4 roots
-constexpr double kGridStart = 0.0123456789;  // first sample: off 0 and the multiples of pi / 2
-constexpr int kBisections = 200;
+constexpr int kGrid = 96;  // samples per turn for the scales of Delta and a (degree 2: smooth on this grid)
 // |theta - tau| (radians) within which a point is at the crossing tau: the crossing's own sample
 // (ruled_pieces.cpp, add_crossings) maps to tau up to rounding.
 constexpr double kCrossingParameter = 1e-12;
-constexpr double kJetDiscriminant = 1e-8;  // |Delta| relative to its terms above which its jet is trusted   // enough to reach adjacent doubles from a grid cell
+constexpr double kJetDiscriminant = 1e-8;  // |Delta| relative to its terms above which its jet is trusted
 
 Eigen::Vector4d point4(const Vec3& p, double w) { return {p.x(), p.y(), p.z(), w}; }
 
-// Delta and its first two derivatives at theta.
-struct DiscriminantJet {
-  double value, first, second;
-};
+constexpr int kBisections = 200;  // enough to reach adjacent doubles from any bracket in [0, 4 pi]
 
 // A root of a function on [lo, hi] where it changes sign (bisection to adjacent doubles).
 template <class F>
@@ -45,6 +41,11 @@ double bisect(const F& f, double lo, double hi) {
   }
   return 0.5 * (lo + hi);
 }
+
+// Delta and its first two derivatives at theta.
+struct DiscriminantJet {
+  double value, first, second;
+};
 
 double wrap_angle(double theta) { return theta - kTwoPi * std::floor(theta / kTwoPi); }
 
@@ -131,8 +132,13 @@ std::optional<Vec3> crossing_derivative(const RuledCurves& rc, const RuledLoop& 
 
 }  // namespace
 
-Vec3 RuledCurves::derivative(const RuledLoop& loop, double phi) const {
-  if (const auto d = crossing_derivative(*this, loop, phi)) return *d;
+Vec3 RuledCurves::derivative(const RuledLoop& loop, double phi) const { return point_and_derivative(loop, phi).second; }
+
+std::pair<Vec3, Vec3> RuledCurves::point_and_derivative(const RuledLoop& loop, double phi) const {
+  if (const auto d = crossing_derivative(*this, loop, phi)) {
+    const Vec3T<double> p = point(loop, phi);
+    return {Vec3(p.x, p.y, p.z), *d};
+  }
   // Jets in phi are exact where Delta is well away from 0; at and next to its roots (the turning
   // points, the crossings) sqrt(Delta)'s jet is 0/0 and rounding decides it, so there a central
   // difference of the (analytic) loop: its error is O(h^2) ~ 1e-10 relative.
@@ -141,56 +147,49 @@ Vec3 RuledCurves::derivative(const RuledLoop& loop, double phi) const {
   if (std::fabs(b * b - 4 * a * c) > kJetDiscriminant * (b * b + 4 * std::fabs(a * c))) {
     const Vec3T<Taylor<1>> p = point(loop, Taylor<1>::variable(0, phi));
     const Vec3 d(p.x[1], p.y[1], p.z[1]);
-    if (d.allFinite()) return d;
+    if (d.allFinite()) return {Vec3(p.x[0], p.y[0], p.z[0]), d};
   }
   const double h = 1e-5;
-  const Vec3T<double> ahead = point(loop, phi + h), behind = point(loop, phi - h);
-  return Vec3(ahead.x - behind.x, ahead.y - behind.y, ahead.z - behind.z) / (2 * h);
+  const Vec3T<double> here = point(loop, phi), ahead = point(loop, phi + h), behind = point(loop, phi - h);
+  return {Vec3(here.x, here.y, here.z), Vec3(ahead.x - behind.x, ahead.y - behind.y, ahead.z - behind.z) / (2 * h)};
 }
 
 std::optional<RuledSection> RuledCurves::section() const {
-  auto disc = [&](double th) {
+  // a, b, c and Delta = b^2 - 4 a c as trigonometric polynomials in theta (a, c: quadratic forms
+  // of the rulings' A and D, degree 2; b: a bilinear one): exact coefficients, so the roots and
+  // critical points of Delta are those of a polynomial of degree <= 4 in e^{i theta}.
+  const TrigPolynomial qa = bilinear_form(r_.d, q_, r_.d), qb = 2.0 * bilinear_form(r_.d, q_, r_.a),
+                       qc = bilinear_form(r_.a, q_, r_.a);
+  const TrigPolynomial delta = qb * qb - 4.0 * (qa * qc), delta1 = delta.derivative(), delta2 = delta1.derivative();
+  auto disc = [&](double th) { return delta(th); };
+  auto direct = [&](double th) {
     const auto [a, b, c] = quadratic(th);
     return b * b - 4 * a * c;
   };
-  auto disc_jet = [&](double th) {
-    const auto [a, b, c] = quadratic(Taylor<2>::variable(0, th));
-    const Taylor<2> d = b * b - 4.0 * a * c;
-    return DiscriminantJet{d[0], d[1], 2 * d[2]};
-  };
+  auto disc_jet = [&](double th) { return DiscriminantJet{delta(th), delta1(th), delta2(th)}; };
   // Scales: of Delta's terms, and of a (for "a ruling meets Q once": a = 0 somewhere).
   double scale = 0, a_min = std::numeric_limits<double>::infinity(), a_max = 0, c_max = 0;
   for (int k = 0; k < kGrid; ++k) {
-    const auto [a, b, c] = quadratic(kTwoPi * k / kGrid);
+    const double th = kTwoPi * k / kGrid;
+    const double a = qa(th), b = qb(th), c = qc(th);
     scale = std::max(scale, b * b + 4 * std::fabs(a * c));
     a_min = std::min(a_min, std::fabs(a));
     a_max = std::max(a_max, std::fabs(a));
     c_max = std::max(c_max, std::fabs(c));
   }
   if (!(scale > 0) || !std::isfinite(scale)) return std::nullopt;  // Q vanishes on the surface
+  // a keeps one sign (of degree 2 on a cone, it may cross 0 between the grid's samples), and its
+  // smallest |a| includes its critical points, where a touching zero hides between samples.
+  if (!trig_sign_changes(qa).empty()) return std::nullopt;
+  for (double th : trig_sign_changes(qa.derivative())) a_min = std::min(a_min, std::fabs(qa(th)));
   if (!(a_min > kClosedFormDegeneracy * a_max) || a_max == 0) return std::nullopt;
-  // a keeps one sign (of degree 2 on a cone, it may cross 0 between the grid's samples).
-  {
-    const double a0 = quadratic(0.0)[0];
-    for (int k = 1; k <= 4 * kGrid; ++k)
-      if ((quadratic(kTwoPi * k / (4 * kGrid))[0] > 0) != (a0 > 0)) return std::nullopt;
-  }
   // c is constant on a cone (A^T Q A at the apex): zero when the apex lies on Q, where every
   // ruling has the root t = 0 and the curve passes through the apex.
   if (r_.cone && 4 * a_max * c_max <= kClosedFormDegeneracy * scale) return std::nullopt;
   const double zero = kClosedFormDegeneracy * scale;
 
-  // Critical points of Delta: sign changes of Delta' on the grid, refined.
-  // The grid starts off the axes' angles, where symmetric placements put critical points exactly.
-  std::vector<double> crit;
-  double prev = disc_jet(kGridStart).first;
-  for (int k = 1; k <= kGrid; ++k) {
-    const double lo = kGridStart + kTwoPi * (k - 1) / kGrid, hi = kGridStart + kTwoPi * k / kGrid;
-    const double cur = disc_jet(hi).first;
-    if ((prev < 0) != (cur < 0) || cur == 0) crit.push_back(wrap_angle(bisect([&](double t) { return disc_jet(t).first; }, lo, hi)));
-    prev = cur;
-  }
-  std::sort(crit.begin(), crit.end());
+  // Critical points of Delta: the sign changes of Delta' (trig_polynomial.hpp).
+  std::vector<double> crit = trig_sign_changes(delta1);
   crit.erase(std::unique(crit.begin(), crit.end(), [](double x, double y) { return y - x < 1e-13; }), crit.end());
   if (crit.size() > 1 && crit.back() - crit.front() > kTwoPi - 1e-13) crit.pop_back();  // one point, both ends
 
@@ -210,7 +209,11 @@ std::optional<RuledSection> RuledCurves::section() const {
     // A simple root between this critical point and the next (Delta is monotone there).
     const double a = crit[i], b = i + 1 < crit.size() ? crit[i + 1] : crit[0] + kTwoPi;
     const double da = j.value, db = disc(b);
-    if ((da > zero && db < -zero) || (da < -zero && db > zero)) simple.push_back(wrap_angle(bisect(disc, a, b)));
+    // The ends of a loop are where the points' own Delta (b^2 - 4ac of quadratic(), which
+    // point() evaluates) vanishes: bisected on it, not on the coefficient form, whose rounding
+    // differs by ~eps times Delta's terms — a shift the square root turns into a gap of
+    // sqrt(shift) between a loop's two halves at its ends (OCCT bug28222_3: 1e-7).
+    if ((da > zero && db < -zero) || (da < -zero && db > zero)) simple.push_back(wrap_angle(bisect(direct, a, b)));
   }
   if (crit.empty()) max_value = disc(0.0);
   if (!(max_value > zero)) {

@@ -20,6 +20,7 @@
 
 #include <array>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -82,6 +83,8 @@ class RuledCurves {
   Vec3 derivative(const RuledLoop& loop, double phi) const;
   /// The sign of the root sqrt(Delta) that `loop` takes at phi (ruled_section.hpp, top).
   double root_sign(const RuledLoop& loop, double phi) const;
+  /// The point at phi and d point / d phi from one evaluation (as point and derivative).
+  std::pair<Vec3, Vec3> point_and_derivative(const RuledLoop& loop, double phi) const;
 
   /// a, b, c of the quadratic on the ruling at theta.
   template <class T>
@@ -135,8 +138,11 @@ Vec3T<T> RuledCurves::point(const RuledLoop& loop, const T& phi) const {
   const double sign = root_sign(loop, primal(phi));
   const auto [a, b, c] = quadratic(theta);
   const T disc = b * b - 4.0 * a * c;
-  const T root = primal(disc) > 0 ? T(sign * sqrt(disc)) : T(0.0);
-  // The root (-b + S) / 2a without cancellation: 2c / (-b - S) where b and S have one sign.
+  // The root (-b + S) / 2a without cancellation: 2c / (-b - S) where b and S have one sign. At a
+  // double root (Delta <= 0 to rounding: S = 0) the root is -b / 2a itself; 2c / -b would be two
+  // rounding errors' ratio where the double root lies at t = 0 (b = c = 0).
+  if (!(primal(disc) > 0)) return on_ruling(theta, T(-b / (2.0 * a)));
+  const T root = sign * sqrt(disc);
   const T t = primal(b) * sign > 0 ? T(2.0 * c / (-b - root)) : T((-b + root) / (2.0 * a));
   return on_ruling(theta, t);
 }
@@ -163,8 +169,10 @@ namespace ssimarch {
 /// The section's curves inside the region (every slab), as traced curves (x = the 3D point):
 /// a loop wholly inside comes back closed (its last point repeats the first), the parts of the
 /// others inside as open curves ending on the region's faces (kLeftDomain, ends found by
-/// bisection). Chords within `deviation` of the curve and at most `max_chord` long; lengths by
-/// Gauss-Legendre quadrature of |d point / d phi| (analytic in phi). nullopt when a loop would need
+/// bisection). Chords within `deviation` of the curve and at most `max_chord` long; lengths of
+/// |d point / d phi| (analytic in phi) by the trapezoidal rule on the loop's uniform coarse samples
+/// (a closed loop: geometric convergence, checked by halving) or Gauss-Legendre quadrature (an open
+/// piece, or a loop where the trapezoidal rule has not converged). nullopt when a loop would need
 /// more than 100000 samples (it runs far outside the region): the caller traces instead.
 std::optional<std::vector<TracedCurve>> ruled_curves_in(const RuledCurves& curves, const RuledSection& section,
                                                         const std::vector<Slab>& region, double deviation,

@@ -79,4 +79,24 @@ inline constexpr double kPencilResidual = 1e-12;
 /// (sine_tolerance), and a double root found by bisection is much closer. Dimensionless; default 1e-7.
 inline constexpr double kClosedFormCrossing = 1e-7;
 
+/// Relative difference between two quadratures of a closed-form curve's length (Gauss-Legendre on
+/// n and 2n pieces; the trapezoidal rule on N / 2 and N nodes of a whole loop) at or below which
+/// the finer one is taken: lengths are promised to 1e-12 relative, and both rules converge
+/// geometrically on these analytic integrands, so the finer one's error is far below the
+/// difference. Not smaller: within ~1e-2 of a loop's turning points |dX/dphi| carries rounding
+/// noise of ~1e-13 relative (sqrt of a Delta formed with cancellation), so finer rules, which put
+/// nodes there, stop agreeing below that (the old 1e-14 doubled Gauss-Legendre into the noise:
+/// 1e-11 errors on narrow loops). Dimensionless; default 5e-13 (was 1e-14).
+inline constexpr double kClosedFormLengthTolerance = 5e-13;
+
+/// Gap (radians) below which the eigenvalue angles of a trigonometric polynomial's companion
+/// matrix (analytic/trig_polynomial.hpp) count as one cluster of roots: a real root of
+/// multiplicity m moves by ~(eps kappa)^(1/m) under the eigensolver's backward error (kappa: the
+/// coefficients' spread), ~1e-8 for m = 2 and ~6e-6 for m = 3 (the most the derivative of a
+/// degree-2 discriminant can have: a 4-fold root of its derivative would give it a nonzero mean),
+/// so 1e-4 keeps a cluster whole with an order to spare; two distinct sign changes closer than
+/// this are seen as their cluster's net change (the 96-point grid this replaced saw 0.065).
+/// Radians; default 1e-4.
+inline constexpr double kTrigRootCluster = 1e-4;
+
 }  // namespace ssimarch
