@@ -6,6 +6,7 @@
 
 #include "march_steps.hpp"
 #include "ssimarch/core/error.hpp"
+#include "ssimarch/march/closure_turning.hpp"
 #include "ssimarch/march/corrector.hpp"
 #include "ssimarch/march/model_size.hpp"
 #include "ssimarch/march/option_ranges.hpp"
@@ -115,6 +116,7 @@ struct Marcher {
   CorrectorOptions co{o.tolerance, o.max_corrector_iterations};
   MarchState state;
   CurvePoint cur;
+  ClosureTurning turning;  // the index condition of loop closure (march/closure_turning.hpp)
 
   // The outcome of one try: a corrected point that passed every guard and the rule's own test,
   // or a rejection (with the rule's measurements when it got that far).
@@ -172,6 +174,11 @@ struct Marcher {
     stats->record_iterations(a.corrected.iterations);
     ++stats->points;
     r->length += arc_length_estimate(cur.p, cur.t, a.p1, a.next.tangent());
+    // An unwatched step across a crossing of branches (the orientation reverses) leaves the
+    // arc simple no more, and its index unknown.
+    if (a.next.orientation != state.here.orientation) turning.lose();
+    const UnknownVec d = P.difference(cur.x, a.corrected.x);
+    turning.step(Vec2(a.next.x[1][0], a.next.x[1][1]), Vec2(d[0], d[1]));
     state.has_previous = true;
     state.previous_x = cur.x;
     state.previous_p = cur.p;
@@ -188,6 +195,7 @@ struct Marcher {
   // Continues from p, a point just past a pole, in the new chart: no previous point carries
   // over (its parameters belong to the other side of the pole).
   bool restart(const CurvePoint& p) {
+    turning.lose();  // the turning in one chart says nothing in the other
     DynamicCurveJet j = jet_at(p.x, &p.t);
     if (j.status != CurveJetStatus::kOk) return false;
     state = MarchState{};
@@ -308,6 +316,11 @@ MarchResult Tracer::march_until_event(const CurvePoint& start_point, Direction d
   const CurvePoint& target = limits.close_at ? *limits.close_at : start;
   // A target other than the start may lie on the very first chord (just past a singular point).
   const std::size_t first_closing = (target.p - start.p).norm() > 0 ? 1 : 3;
+  // The index condition applies to a loop this march traces whole, in a parameter plane.
+  if (problem_.kind() != PairKind::kImplicitImplicit && (target.p - start.p).norm() == 0 && target.t.dot(start.t) > 0) {
+    const auto& T = problem_.periods();
+    m.turning = ClosureTurning(Vec2(m.state.here.x[1][0], m.state.here.x[1][1]), Vec2(T[0], T[1]));
+  }
   bool watch = limits.watch_crossings && !limits.skip_first_watch;
   double previous_rank = 0;  // rank ratio at the point before m.cur (0: none, no minimum at the start)
   const std::vector<Pole> poles = problem_poles(problem_);
@@ -332,6 +345,7 @@ MarchResult Tracer::march_until_event(const CurvePoint& start_point, Direction d
       }
     }
     if (pole) {
+      m.turning.lose();
       if (pass_pole_step(problem_, *pole, h, target, sagitta_slack, may_close(), &m, &r, stats)) return r;
       continue;
     }
@@ -352,8 +366,10 @@ MarchResult Tracer::march_until_event(const CurvePoint& start_point, Direction d
         return r;
       }
     }
-    if (may_close() &&
-        internal::closes_loop(target, m.cur, a.p1, a.next.tangent(), sagitta_slack)) {
+    // Proximity and first order (closes_loop), then the index condition (closure_turning.hpp):
+    // a strand passing by the start after a partial turn is not the loop closing.
+    if (may_close() && internal::closes_loop(target, m.cur, a.p1, a.next.tangent(), sagitta_slack) &&
+        m.turning.admits_closure()) {
       r.length += arc_length_estimate(m.cur.p, m.cur.t, target.p, target.t);
       r.points.push_back(target);
       r.event = Event{EventKind::kClosed, BudgetBound::kNone, "closed loop", UnknownVec{}};

@@ -101,6 +101,26 @@ TEST(RotationIndex, ThesisChapter6Examples) {
   }
 }
 
+// Ex. 36 at the printed level 0.917: a near miss of the double eight, one smooth closed curve
+// whose two waists (width 0.037 at u = +-1) bring it back within a few steps of itself after half
+// a turn. It closes once, at its start, with the turning of a simple loop (the index condition
+// of the closure, march/closure_turning.hpp): one closed branch of |index| 1 and the oracle's
+// length (s003.ch6.Ex36_0.917, an independent planar trace), no vertex.
+TEST(RotationIndex, NearMissDoubleEightClosesOnce) {
+  const Scene scene = load_scene(std::string(SSIMARCH_SOURCE_DIR) + "/tests/topology/data/thesis_ex36_near_miss.json");
+  const IntersectionRun run = run_intersection(scene, scene.intersections[0]);
+  const CurveNetwork& net = run.network;
+  ASSERT_EQ(net.branches.size(), 1u);
+  EXPECT_TRUE(net.branches[0].closed);
+  ASSERT_TRUE(net.branches[0].rotation.index.has_value()) << net.branches[0].rotation.note;
+  EXPECT_EQ(std::abs(*net.branches[0].rotation.index), oracle_index("s003.ch6.Ex36_0.917.rotation_index"));
+  // Relative 1e-4: the chords' arc-length estimate at the default step against the oracle's trace.
+  const double length = oracle_value("s003.ch6.Ex36_0.917.rotation_index")["length"].get<double>();
+  EXPECT_NEAR(net.branches[0].length, length, 1e-4 * length);
+  EXPECT_TRUE(net.vertices.empty());
+  EXPECT_TRUE(net.complete());
+}
+
 double edge_sum(const CurveNetwork& net, const NetworkBranch& b) {
   double L = 0;
   for (int e : b.edges) L += net.edges[static_cast<std::size_t>(e)].length;

@@ -14,18 +14,9 @@
 
 #include "ssimarch/march/result.hpp"
 #include "ssimarch/problem/problem.hpp"
+#include "ssimarch/march/closure_turning.hpp"  // kRotationMaxChordTurn, kRotationIndexSigma
 
 namespace ssimarch {
-
-/// Largest exterior angle (radians) allowed between successive chords of a regular stretch;
-/// a larger one means the projection folds there (the tangent in the plane vanishes, e.g. at a
-/// pole of the parametrisation) and the index is not defined. Cusps at singular points (angle
-/// near pi) are corners of a piecewise regular curve (Def. 2) and are allowed there.
-inline constexpr double kRotationMaxChordTurn = 2.0;  // rad (about 115 degrees)
-
-/// The index condition of thesis ch. 6 (sec. 6.3, sigma): the accumulated turning must be
-/// within this of 2 pi times an integer (rad). The thesis' runs use 0.5.
-inline constexpr double kRotationIndexSigma = 0.5;
 
 struct RotationIndex {
   std::optional<int> index;  // turns of the tangent along the curve's direction of travel
