@@ -69,7 +69,7 @@ SquareSystem face_system(const Problem& P, int i, double at) {
   SquareSystem e;
   e.dimension = P.dim() - 1;
   e.value = [&P, i, at](const IntervalNumber* y, IntervalNumber* g) { boundary_residual(P, i, at, y, g); };
-  e.gradient = [&P, i, at](const IntervalGradient* y, IntervalGradient* g) { boundary_residual(P, i, at, y, g); };
+  set_gradients(&e, [&P, i, at](const auto* y, auto* g) { boundary_residual(P, i, at, y, g); });
   return e;
 }
 
@@ -130,9 +130,7 @@ std::vector<System> trim_face_systems(const Problem& P) {
       s.name = name;
       s.equations.dimension = P.dim();
       s.equations.value = [&P, n, at](const IntervalNumber* x, IntervalNumber* g) { trim_face_residual(P, n, at, x, g); };
-      s.equations.gradient = [&P, n, at](const IntervalGradient* x, IntervalGradient* g) {
-        trim_face_residual(P, n, at, x, g);
-      };
+      set_gradients(&s.equations, [&P, n, at](const auto* x, auto* g) { trim_face_residual(P, n, at, x, g); });
       for (const Interval& b : P.bounds()) s.box.emplace_back(b.lo, b.hi);
       out.push_back(std::move(s));
     }
@@ -144,7 +142,7 @@ System turning_system(const Problem& P, int k) {
   s.name = "turning d" + P.unknown_names()[static_cast<std::size_t>(k)] + " = 0";
   s.equations.dimension = P.dim();
   s.equations.value = [&P, k](const IntervalNumber* x, IntervalNumber* g) { turning_residual(P, k, x, g); };
-  s.equations.gradient = [&P, k](const IntervalGradient* x, IntervalGradient* g) { turning_residual(P, k, x, g); };
+  set_gradients(&s.equations, [&P, k](const auto* x, auto* g) { turning_residual(P, k, x, g); });
   for (const Interval& b : P.bounds()) s.box.emplace_back(b.lo, b.hi);
   return s;
 }

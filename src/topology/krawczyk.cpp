@@ -156,15 +156,26 @@ struct Step {
   double slope[kMaxSystemDimension] = {};  // max_i |dg_i/dx_j| over xe (bisect's smear)
 };
 
+// g's interval Jacobian on xe into jac[i][j] (= dg_i/dx_j), by the gradient with N slots.
+template <int N, class G>
+void jacobian_on(const G& gradient, int n, const IntervalBox& xe, IntervalNumber (*jac)[kMaxSystemDimension]) {
+  Gradient<IntervalNumber, N> xv[kMaxSystemDimension], gv[kMaxSystemDimension];
+  for (int i = 0; i < n; ++i) xv[i] = Gradient<IntervalNumber, N>(xe[static_cast<std::size_t>(i)], i);
+  gradient(xv, gv);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) jac[i][j] = gv[i].d[static_cast<std::size_t>(j)];
+}
+
 Step krawczyk_step(const SquareSystem& s, const IntervalBox& xe, const IntervalBox* x) {
   const int n = s.dimension;
   Step out;
-  IntervalGradient xv[kMaxSystemDimension], gv[kMaxSystemDimension];
-  for (int i = 0; i < n; ++i) xv[i] = IntervalGradient(xe[static_cast<std::size_t>(i)], i);
-  s.gradient(xv, gv);
+  IntervalNumber jac[kMaxSystemDimension][kMaxSystemDimension];
+  if (n == 2 && s.gradient2) jacobian_on<2>(s.gradient2, n, xe, jac);
+  else if (n == 3 && s.gradient3) jacobian_on<3>(s.gradient3, n, xe, jac);
+  else jacobian_on<kMaxSystemDimension>(s.gradient, n, xe, jac);
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
-      const double mag = gv[i].d[static_cast<std::size_t>(j)].magnitude();
+      const double mag = jac[i][j].magnitude();
       out.slope[j] = std::isnan(mag) ? std::numeric_limits<double>::infinity() : std::max(out.slope[j], mag);
     }
   IntervalNumber m[kMaxSystemDimension], gm[kMaxSystemDimension];
@@ -173,12 +184,12 @@ Step krawczyk_step(const SquareSystem& s, const IntervalBox& xe, const IntervalB
   if (x)
     for (int i = 0; i < n && !out.excluded; ++i) {
       IntervalNumber gi = gm[i];
-      for (int j = 0; j < n; ++j) gi = gi + gv[i].d[static_cast<std::size_t>(j)] * ((*x)[static_cast<std::size_t>(j)] - m[j]);
+      for (int j = 0; j < n; ++j) gi = gi + jac[i][j] * ((*x)[static_cast<std::size_t>(j)] - m[j]);
       out.excluded = !gi.contains_zero();
     }
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxSystemDimension, kMaxSystemDimension> jm(n, n);
   for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) jm(i, j) = gv[i].d[static_cast<std::size_t>(j)].mid();
+    for (int j = 0; j < n; ++j) jm(i, j) = jac[i][j].mid();
   if (!jm.allFinite()) return out;
   Eigen::FullPivLU<decltype(jm)> lu(jm);
   out.ok = lu.isInvertible() && lu.rcond() > kMinReciprocalCondition;
@@ -190,7 +201,7 @@ Step krawczyk_step(const SquareSystem& s, const IntervalBox& xe, const IntervalB
     for (int j = 0; j < n; ++j) ki = ki - y(i, j) * gm[j];
     for (int j = 0; j < n; ++j) {
       IntervalNumber c = IntervalNumber(i == j ? 1.0 : 0.0);  // (I - Y J(X))_ij
-      for (int l = 0; l < n; ++l) c = c - y(i, l) * gv[l].d[static_cast<std::size_t>(j)];
+      for (int l = 0; l < n; ++l) c = c - y(i, l) * jac[l][j];
       ki = ki + c * (xe[static_cast<std::size_t>(j)] - m[j]);
     }
     out.k[static_cast<std::size_t>(i)] = ki;

@@ -161,5 +161,33 @@ TEST(Krawczyk, BoxesLeftWhenTheBudgetIsSpentAreReported) {
   for (const UndecidedBox& u : r.undecided) EXPECT_TRUE(u.budget);
 }
 
+TEST(Krawczyk, SizedGradientsGiveTheSameSearch) {
+  // The circle x^2 + y^2 = 1 against the cubic y = x^3 - x / 2 (two roots), and a 3-unknown
+  // system: the search with the n-slot gradients (set_gradients) examines the same boxes and
+  // finds the same roots as with the 4-slot one alone (the extra slots only hold zeros).
+  auto f2 = [](const auto* x, auto* g) {
+    g[0] = x[0] * x[0] + x[1] * x[1] - 1.0;
+    g[1] = x[1] - x[0] * x[0] * x[0] + 0.5 * x[0];
+  };
+  auto f3 = [](const auto* x, auto* g) {
+    g[0] = x[0] * x[0] + x[1] * x[1] + x[2] * x[2] - 1.0;
+    g[1] = x[0] - x[1] * x[2];
+    g[2] = x[2] - 0.3;
+  };
+  for (int n : {2, 3}) {
+    SquareSystem plain = n == 2 ? make_system(2, f2) : make_system(3, f3);
+    SquareSystem sized = plain;
+    if (n == 2) set_gradients(&sized, f2);
+    else set_gradients(&sized, f3);
+    ASSERT_TRUE(n == 2 ? bool(sized.gradient2) : bool(sized.gradient3));
+    const IntervalBox start = n == 2 ? box({{-2, 2}, {-2, 2}}) : box({{-2, 2}, {-2, 2}, {-2, 2}});
+    const RootSearchResult a = find_all_roots(plain, start, {}), b = find_all_roots(sized, start, {});
+    EXPECT_EQ(a.boxes, b.boxes);
+    ASSERT_EQ(a.roots.size(), b.roots.size());
+    ASSERT_EQ(a.roots.size(), 2u);
+    for (std::size_t i = 0; i < a.roots.size(); ++i) EXPECT_EQ((a.roots[i].x - b.roots[i].x).norm(), 0.0);
+  }
+}
+
 }  // namespace
 }  // namespace ssimarch
