@@ -248,9 +248,11 @@ Event watch_event(const CurvePoint& cur, double previous_rank, const DynamicCurv
 
 // The march passes `pole` (march/pole_passage.hpp): appends the pole point where the curve goes
 // through it and the first point beyond, and restarts there. True when the march ends here: it
-// closed (on either chord) or no continuation past the pole exists (the curve ends at it).
+// closed (on either chord) or no continuation past the pole exists (the curve ends at it);
+// *no_passage when the curve neither passes through the pole nor has a point beyond it (the
+// caller may retry a shorter step on this side).
 bool pass_pole_step(const Problem& P, const Pole& pole, double h, const CurvePoint& target, double slack,
-                    bool may_close, Marcher* m, MarchResult* r, TraceStats* stats) {
+                    bool may_close, Marcher* m, MarchResult* r, TraceStats* stats, bool* no_passage) {
   const double distance = std::max((pole.point - m->cur.p).norm(), 0.25 * h);
   const PolePassage pp = pass_pole(P, pole, m->cur, distance, m->co);
   auto end = [&](EventKind kind, const std::string& message) {
@@ -271,6 +273,7 @@ bool pass_pole_step(const Problem& P, const Pole& pole, double h, const CurvePoi
     ++stats->points;
     if (!pp.ok) return end(EventKind::kDomainEdge, "reached the pole " + describe_point(pole.point) + ", where the curve ends: " + pp.message);
   } else if (!pp.ok) {
+    *no_passage = true;
     return end(EventKind::kStepUnderflow, "passing near the pole: " + pp.message);
   }
   if (close_on(from, pp.beyond.p, pp.beyond.t)) return true;
@@ -337,6 +340,7 @@ MarchResult Tracer::march_until_event(const CurvePoint& start_point, Direction d
     Marcher::Attempt a = m.step();
     const double h = std::visit([](const auto& s) { return s.step(); }, m.rule);
     const Pole* pole = pole_ahead(problem_, poles, m.cur, &a, 0);
+    const bool step_crossed_pole = pole != nullptr;
     if (!pole && !a.ok && !m.reject(a)) {
       pole = pole_ahead(problem_, poles, m.cur, nullptr, 2 * options_.step_length);
       if (!pole) {
@@ -345,8 +349,13 @@ MarchResult Tracer::march_until_event(const CurvePoint& start_point, Direction d
       }
     }
     if (pole) {
-      m.turning.lose();
-      if (pass_pole_step(problem_, *pole, h, target, sagitta_slack, may_close(), &m, &r, stats)) return r;
+      bool no_passage = false;
+      if (!pass_pole_step(problem_, *pole, h, target, sagitta_slack, may_close(), &m, &r, stats, &no_passage)) continue;
+      // No curve point beyond the pole from here: a loop round the pole smaller than the step
+      // (stress seed 12 pair 2649) is followed by shorter steps on this side of it, until the
+      // step rule gives up.
+      if (!(no_passage && step_crossed_pole && m.reject(a))) return r;
+      r.event = Event{};
       continue;
     }
     if (!a.ok) continue;

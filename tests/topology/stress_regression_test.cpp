@@ -8,7 +8,11 @@
 //    one closed curve of the closed-form length;
 //  * 74 paraboloid x blob parametric-implicit, whose curve leaves the domain edge u = lo for a
 //    short excursion that one step from a start on that edge jumped over (a closed loop came
-//    back): open curves ending on the edge where h(lo, v) changes sign (dense sampling).
+//    back): open curves ending on the edge where h(lo, v) changes sign (dense sampling);
+//  * seed 12 pair 2649 sphere x ellipsoid parametric-implicit, a loop round the sphere's pole
+//    whose first step from its start crossed the pole row, where the pole passage found no curve
+//    point beyond the pole and the curve stopped at one point: the loop the other formulation
+//    (sphere implicit, ellipsoid parametric: no pole near the curve) traces.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -97,6 +101,19 @@ TEST(StressRegression, SphereSphereCircleTracedOnceAndClosed) {
   ASSERT_EQ(got.curves.size(), 1u);
   EXPECT_TRUE(got.curves[0].closed);
   EXPECT_NEAR(got.curves[0].length, length, kRelativeLength * length);
+}
+
+TEST(StressRegression, LoopRoundAPoleIsFollowedWithShorterSteps) {
+  const nlohmann::json scene = read("stress_seed12_2649.json");
+  nlohmann::json swapped = scene;
+  swapped["intersections"][0]["as"] = {"implicit", "parametric"};
+  const auto g = summary(trace(scene, "stress_seed12_2649.json"));
+  const auto e = summary(trace(swapped, "stress_seed12_2649.json (swapped forms)"));
+  ASSERT_EQ(e.size(), 1u);
+  ASSERT_EQ(g.size(), 1u);
+  EXPECT_TRUE(g[0].first);
+  EXPECT_TRUE(e[0].first);
+  EXPECT_NEAR(g[0].second, e[0].second, kRelativeLength * e[0].second);
 }
 
 TEST(StressRegression, ExcursionOutsideTheDomainIsNotJumped) {
