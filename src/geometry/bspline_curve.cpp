@@ -57,7 +57,7 @@ void push_knot(std::vector<double>* knots, double t, int multiplicity) {
   for (int i = 0; i < multiplicity; ++i) knots->push_back(t);
 }
 
-BSplineCurve clamped(const std::vector<QuinticPiece>& pieces, const std::vector<bool>& smooth) {
+BSplineCurve clamped(const std::vector<QuinticPiece>& pieces, const std::vector<int>& continuity) {
   BSplineCurve c;
   const std::size_t n = pieces.size();
   double t = 0;
@@ -68,9 +68,15 @@ BSplineCurve clamped(const std::vector<QuinticPiece>& pieces, const std::vector<
     c.control_points.push_back(pieces[i].bezier[3]);
     t += pieces[i].h;
     if (i + 1 == n) break;
-    if (smooth[i]) {
+    if (continuity[i] >= 2) {
       c.control_points.push_back(shared_point(pieces[i], pieces[i + 1]));
       push_knot(&c.knots, t, 3);
+    } else if (continuity[i] == 1) {
+      // C1: the common point f(b, b, b, b, b) is the affine combination of its neighbours
+      // f(a, b, b, b, b) = B4 (left) and f(b, b, b, b, c) = B1 (right), so it is removed.
+      c.control_points.push_back(pieces[i].bezier[4]);
+      c.control_points.push_back(pieces[i + 1].bezier[1]);
+      push_knot(&c.knots, t, 4);
     } else {
       c.control_points.push_back(pieces[i].bezier[4]);
       c.control_points.push_back(pieces[i].bezier[5]);
@@ -114,10 +120,10 @@ BSplineCurve periodic_form(const std::vector<QuinticPiece>& pieces) {
 
 }  // namespace
 
-BSplineCurve bspline_from_pieces(const std::vector<QuinticPiece>& pieces, const std::vector<bool>& smooth, bool periodic) {
+BSplineCurve bspline_from_pieces(const std::vector<QuinticPiece>& pieces, const std::vector<int>& continuity, bool periodic) {
   if (pieces.empty()) throw std::invalid_argument("bspline_from_pieces: no pieces");
-  if (!periodic) return clamped(pieces, smooth);
-  if (std::find(smooth.begin(), smooth.end(), false) != smooth.end())
+  if (!periodic) return clamped(pieces, continuity);
+  if (std::any_of(continuity.begin(), continuity.end(), [](int c) { return c < 2; }))
     throw std::invalid_argument("bspline_from_pieces: a periodic spline needs C2 joins everywhere");
   return periodic_form(pieces);
 }

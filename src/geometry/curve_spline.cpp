@@ -47,8 +47,29 @@ VecX parameter_direction(const Problem& problem, const VecX& x, const Vec3& d) {
   return A.colPivHouseholderQr().solve(rhs);
 }
 
-Node make_node(const Problem& problem, const VecX& x, const Vec3& hint) {
+// A traced point is on both surfaces to the tracer's tolerance in 3D; where the surfaces meet at
+// a small angle (near a singular point, where they touch) that leaves it farther from the curve,
+// by the tolerance over the angle (1e-9 off for a residual of 1e-14 next to ex22's cusp). Newton
+// steps of least norm on H alone, x -= J^T (J J^T)^-1 H, put it on the curve to rounding before
+// its jet is taken: quadratic convergence from the tracer's tolerance takes two or three; they
+// stop when a step no longer moves the 3D point beyond rounding. A point where J J^T is singular
+// (the singular point itself) is kept as traced.
+VecX onto_curve(const Problem& problem, VecX x) {
+  const double rounding = 1e-15 * problem.scale();
+  for (int it = 0; it < 8; ++it) {
+    const Linearization L = problem.linearize(x);
+    const MatX J = L.jacobian;
+    const VecX dx = -J.transpose() * (J * J.transpose()).ldlt().solve(VecX(L.h));
+    if (!dx.allFinite()) break;
+    x = problem.wrap(x + dx);
+    if ((L.point_jacobian * dx).norm() <= rounding) break;
+  }
+  return x;
+}
+
+Node make_node(const Problem& problem, const VecX& traced, const Vec3& hint) {
   Node node;
+  const VecX x = onto_curve(problem, traced);
   node.x = x;
   const int n = problem.dim();
   const CurveJet<2> jet = curve_jet<2>(problem, x, &hint);
@@ -119,13 +140,40 @@ std::optional<VecX> project_in_normal_plane(const Problem& problem, VecX x, cons
   return x;
 }
 
+// A candidate piece with what its check measured: the largest distance at u = 1/4, 1/2, 3/4 and
+// the curve point found for u = 1/2 (unwrapped unknowns; empty when the projection failed).
+struct Checked {
+  QuinticPiece q;
+  double measured = 0;
+  VecX mid;
+  int start_continuity = 2;  // the highest continuity the piece allows at its ends (§2)
+  int end_continuity = 2;
+};
+
+// The piece whose 3D part has arc length h, built by build(h): a fixed point of
+// h -> length(build(h)), reached in a few iterations from the chord (docs/math/curve_spline.md §1).
+template <class Build>
+QuinticPiece at_own_length(double chord, const Build& build) {
+  double h = chord;
+  QuinticPiece q = build(h);
+  for (int it = 0; it < 12; ++it) {
+    const double length = piece_length_3d(q);
+    const bool done = std::fabs(length - h) <= 1e-14 * h;
+    h = length;
+    q = build(h);
+    if (done) break;
+  }
+  return q;
+}
+
 struct Fit {
   const Problem& problem;
   CurveSplineOptions options;
   double tolerance;
   int n;
   std::vector<QuinticPiece> pieces;
-  std::vector<bool> smooth;  // per join
+  std::vector<int> joins;  // per join between consecutive pieces: 2 at a regular point, 0 at a singular one
+  std::vector<int> start_continuity, end_continuity;  // per piece
   double max_deviation = 0;
   int inserted = 0;
 
@@ -154,43 +202,75 @@ struct Fit {
     return d;
   }
 
-  QuinticPiece piece(const HermiteEnd& a, const HermiteEnd& b) const {
-    // The piece's length h is the arc length of its own 3D part: a fixed point of
-    // h -> length(piece(h)), reached in a few iterations from the chord (docs/math/curve_spline.md §1).
-    double h = (b.value.head<3>() - a.value.head<3>()).norm();
-    QuinticPiece q = quintic_hermite(a, b, h);
-    for (int it = 0; it < 12; ++it) {
-      const double length = piece_length_3d(q);
-      const bool done = std::fabs(length - h) <= 1e-14 * h;
-      h = length;
-      q = quintic_hermite(a, b, h);
-      if (done) break;
+  Checked check(const QuinticPiece& q) const {
+    Checked c{q, 0, VecX()};
+    for (double u : {0.25, 0.5, 0.75}) {
+      VecX on_curve;
+      c.measured = std::max(c.measured, deviation(q, u, &on_curve));
+      if (u == 0.5) c.mid = on_curve;
     }
-    return q;
+    return c;
+  }
+
+  // The piece in arc length s (§1).
+  static QuinticPiece arc_length_piece(const HermiteEnd& a, const HermiteEnd& b) {
+    return at_own_length((b.value.head<3>() - a.value.head<3>()).norm(),
+                         [&](double h) { return quintic_hermite(a, b, h); });
+  }
+
+  // The piece from a singular point (its half-branch tangent known) to a regular point in the
+  // parameter u in [0, 2h] with arc length s = u^2 / (4h) from the singular end (mirrored when it
+  // is b). At a cusp the half-branch is analytic in sqrt(s), not in s (s^(3/2) terms), so the
+  // quintic in u converges as h^3, where one in s converges as h^(3/2); in u the singular end has
+  // dy/du = 0 and d2y/du2 = y_s / (2h), the regular end dy/du = y_s and d2y/du2 = y_ss ± y_s / (2h)
+  // (docs/math/curve_spline.md §1). The join at the regular end is C1 (y_uu != y_ss there).
+  static QuinticPiece root_piece(const HermiteEnd& a, const HermiteEnd& b, bool singular_at_a) {
+    const double sign = singular_at_a ? 1.0 : -1.0;  // ds/du's sign for s measured along the piece
+    return at_own_length((b.value.head<3>() - a.value.head<3>()).norm(), [&](double h) {
+      HermiteEnd singular = singular_at_a ? a : b, regular = singular_at_a ? b : a;
+      singular.second = sign * singular.first / (2 * h);
+      singular.first.setZero();
+      singular.order = 2;
+      regular.second += sign * regular.first / (2 * h);
+      return singular_at_a ? quintic_hermite(singular, regular, 2 * h) : quintic_hermite(regular, singular, 2 * h);
+    });
   }
 
   void between(const Node& a, const Node& b, int depth) {
-    const QuinticPiece q = piece(side(a, b.end.value.head<3>(), true), side(b, a.end.value.head<3>(), false));
-    double measured = 0;
-    VecX mid;
-    for (double u : {0.25, 0.5, 0.75}) {
-      VecX on_curve;
-      measured = std::max(measured, deviation(q, u, &on_curve));
-      if (u == 0.5) mid = on_curve;
+    const HermiteEnd ea = side(a, b.end.value.head<3>(), true), eb = side(b, a.end.value.head<3>(), false);
+    Checked best = check(arc_length_piece(ea, eb));
+    // At a singular end with a one-sided tangent (the other end regular) the piece in sqrt(s) is
+    // tried too and the one measured closer kept: a cusp needs it, a node's or tacnode's smooth
+    // half-branch is interpolated better in s.
+    const bool singular_a = ea.order == 1 && eb.order == 2, singular_b = eb.order == 1 && ea.order == 2;
+    if ((singular_a || singular_b)) {
+      Checked root = check(root_piece(ea, eb, singular_a));
+      (singular_a ? root.end_continuity : root.start_continuity) = 1;
+      if (root.measured < best.measured) best = root;
     }
-    const double bound = kSplineDeviationSafety * measured;
-    if (bound <= tolerance || depth >= options.max_halvings || mid.size() == 0) {
-      pieces.push_back(q);
+    const double bound = kSplineDeviationSafety * best.measured;
+    if (bound <= tolerance || depth >= options.max_halvings || best.mid.size() == 0) {
+      pieces.push_back(best.q);
+      start_continuity.push_back(best.start_continuity);
+      end_continuity.push_back(best.end_continuity);
       max_deviation = std::max(max_deviation, bound);
       return;
     }
     // Halve: the true curve point found for u = 1/2 becomes an exact point of the spline.
-    Node m = make_node(problem, problem.wrap(mid), q.derivative(0.5).head<3>());
+    const VecX mid = best.mid;
+    Node m = make_node(problem, problem.wrap(mid), best.q.derivative(0.5).head<3>());
     m.end.value.tail(n) = mid;
     ++inserted;
     between(a, m, depth + 1);
-    smooth.push_back(m.regular);
+    joins.push_back(m.regular ? 2 : 0);
     between(m, b, depth + 1);
+  }
+
+  // The continuity of each join: the point's, lowered where a piece in sqrt(s) meets it.
+  std::vector<int> continuity() const {
+    std::vector<int> c(joins);
+    for (std::size_t j = 0; j < c.size(); ++j) c[j] = std::min({c[j], end_continuity[j], start_continuity[j + 1]});
+    return c;
   }
 };
 
@@ -231,9 +311,9 @@ CurveSpline fit_curve_spline(const Problem& problem, const std::vector<VecX>& po
                           [](const Node& a, const Node& b) { return a.end.value.head<3>() == b.end.value.head<3>(); }),
               nodes.end());
   if (nodes.size() < 2) throw std::invalid_argument("fit_curve_spline: the points coincide");
-  Fit fit{problem, options, options.tolerance > 0 ? options.tolerance : 1e-9 * problem.scale(), n, {}, {}, 0, 0};
+  Fit fit{problem, options, options.tolerance > 0 ? options.tolerance : 1e-9 * problem.scale(), n, {}, {}, {}, {}, 0, 0};
   for (std::size_t i = 0; i + 1 < nodes.size(); ++i) {
-    if (i > 0) fit.smooth.push_back(nodes[i].regular);
+    if (i > 0) fit.joins.push_back(nodes[i].regular ? 2 : 0);
     fit.between(nodes[i], nodes[i + 1], 0);
   }
   CurveSpline out;
@@ -242,13 +322,16 @@ CurveSpline fit_curve_spline(const Problem& problem, const std::vector<VecX>& po
   out.within_tolerance = fit.max_deviation <= fit.tolerance;
   out.pieces = static_cast<int>(fit.pieces.size());
   out.inserted_points = fit.inserted;
-  out.c0_knots = static_cast<int>(std::count(fit.smooth.begin(), fit.smooth.end(), false));
-  const bool periodic = closed && nodes.front().regular && out.c0_knots == 0;
-  std::vector<bool> smooth = fit.smooth;
-  if (periodic) smooth.push_back(true);
+  for (const QuinticPiece& q : fit.pieces) out.length += piece_length_3d(q);
+  const std::vector<int> continuity = fit.continuity();
+  out.c0_knots = static_cast<int>(std::count(continuity.begin(), continuity.end(), 0));
+  out.c1_knots = static_cast<int>(std::count(continuity.begin(), continuity.end(), 1));
+  const bool periodic = closed && nodes.front().regular && out.c0_knots == 0 && out.c1_knots == 0;
+  std::vector<int> wrapped = continuity;
+  if (periodic) wrapped.push_back(2);
   else if (closed) ++out.c0_knots;  // the seam at the singular point
-  const BSplineCurve clamped = bspline_from_pieces(fit.pieces, fit.smooth, false);
-  const BSplineCurve stacked = periodic ? bspline_from_pieces(fit.pieces, smooth, true) : clamped;
+  const BSplineCurve clamped = bspline_from_pieces(fit.pieces, continuity, false);
+  const BSplineCurve stacked = periodic ? bspline_from_pieces(fit.pieces, wrapped, true) : clamped;
   out.curve = stacked.slice(0, 3);
   // A p-curve is periodic with the 3D curve only when its parameters return to their start
   // (a loop around a cylinder ends one period away: that p-curve stays clamped).

@@ -55,6 +55,7 @@ void add_spline(const CurveSpline& s, const std::array<std::string, 2>& parametr
   b["pieces"] = s.pieces;
   b["inserted_points"] = s.inserted_points;
   b["c0_knots"] = s.c0_knots;
+  b["c1_knots"] = s.c1_knots;
   b["time_ms"] = s.time_ms;
   (*curve)["bspline"] = std::move(b);
   json pcurves = json::array();

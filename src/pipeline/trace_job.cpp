@@ -121,7 +121,7 @@ IntersectionRun run_intersection(const Scene& scene, const IntersectionSpec& spe
       // replaces the circular-arc estimate over the traced points, which is off by O(h^4) per
       // segment (1.6e-6 on a torus section at the default deviation); a closed form's is exact.
       if (run.splines.back() && run.conics.empty())
-        run.result.curves[c].length = run.splines.back()->curve.end() - run.splines.back()->curve.start();
+        run.result.curves[c].length = run.splines.back()->length;
     }
   return run;
 }

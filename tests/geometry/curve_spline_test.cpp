@@ -89,16 +89,26 @@ VecX piecewise_at(const std::vector<QuinticPiece>& pieces, double t) {
 
 int sum(const std::vector<int>& v) { return std::accumulate(v.begin(), v.end(), 0); }
 
-TEST(BSplineFromPieces, IsExactWithC2AndC0Knots) {
+TEST(BSplineFromPieces, IsExactWithC2C1AndC0Knots) {
   const std::vector<double> breaks{0, 0.4, 1.1, 1.5, 2.3, 3.0};
-  const std::vector<QuinticPiece> pieces = circle_pieces(breaks);
-  const std::vector<bool> smooth{true, false, true, true};
-  const BSplineCurve b = bspline_from_pieces(pieces, smooth, false);
+  std::vector<QuinticPiece> pieces = circle_pieces(breaks);
+  // The fourth piece starts with the circle's first derivative but another second derivative:
+  // its join with the third is C1 only.
+  {
+    HermiteEnd a{pieces[3].at(0), pieces[3].derivative(0), VecX::Zero(4), 2};
+    HermiteEnd b{pieces[3].at(1), pieces[3].derivative(1), VecX::Zero(4), 2};
+    a.second << 0.3, -1.2, 0.7, 0.5;
+    b.second << -0.4, 0.2, 0.1, 0.0;
+    pieces[3] = quintic_hermite(a, b, pieces[3].h);
+    pieces[4] = quintic_hermite(b, HermiteEnd{pieces[4].at(1), pieces[4].derivative(1), VecX::Zero(4), 1}, pieces[4].h);
+  }
+  const std::vector<int> continuity{2, 0, 1, 2};
+  const BSplineCurve b = bspline_from_pieces(pieces, continuity, false);
   EXPECT_EQ(b.knots.size(), b.control_points.size() + 6);
   std::vector<double> values;
   std::vector<int> mult;
   b.distinct_knots(&values, &mult);
-  EXPECT_EQ(mult, (std::vector<int>{6, 3, 5, 3, 3, 6}));
+  EXPECT_EQ(mult, (std::vector<int>{6, 3, 5, 4, 3, 6}));
   EXPECT_EQ(sum(mult), static_cast<int>(b.control_points.size()) + b.degree + 1);
   EXPECT_NEAR(b.end(), 3.0, 1e-15);
   for (double t = 0; t <= 3.0; t += 0.0137) EXPECT_LT((b.at(t) - piecewise_at(pieces, t)).norm(), 1e-13) << t;
@@ -110,7 +120,7 @@ TEST(BSplineFromPieces, ClosedSmoothChainIsOnePeriodicSpline) {
   std::vector<QuinticPiece> pieces = circle_pieces(breaks);
   for (QuinticPiece& p : pieces)
     for (VecX& c : p.bezier) c = c.head(3).eval();  // the 4th coordinate (s) is not periodic
-  const BSplineCurve b = bspline_from_pieces(pieces, std::vector<bool>(pieces.size(), true), true);
+  const BSplineCurve b = bspline_from_pieces(pieces, std::vector<int>(pieces.size(), 2), true);
   const std::size_t n = b.control_points.size();
   EXPECT_TRUE(b.periodic);
   EXPECT_EQ(n, 3 * pieces.size() + 5);
@@ -179,6 +189,77 @@ TEST(FitCurveSpline, VivianiThroughItsNodeStaysWithinItsMeasuredBound) {
   EXPECT_LE(dense, sp.max_deviation + 1e-13);
   EXPECT_LE(pcurve_gap, 2 * sp.max_deviation + 1e-13);
   EXPECT_NEAR(sp.curve.end(), 15.2807911561, 1e-6);  // the arc length of Viviani's curve (elliptic integral)
+}
+
+// Distance from P to the semicubical parabola c(t) = (t^2, t^3, 0), t in [-1.25, 1.25]: Newton on
+// (c(t) - P) . c'(t) = 0 from every local minimum of a dense grid, each accepted only where it
+// improves on the grid; independent of the spline (and of which half-branch is nearer).
+double distance_to_cusp_curve(const Vec3& P) {
+  auto c = [](double t) { return Vec3(t * t, t * t * t, 0); };
+  auto dc = [](double t) { return Vec3(2 * t, 3 * t * t, 0); };
+  auto ddc = [](double t) { return Vec3(2, 6 * t, 0); };
+  const int m = 5000;
+  const double lo = -1.25, step = 2.5 / m;
+  std::vector<double> d(m + 1);
+  for (int k = 0; k <= m; ++k) d[static_cast<std::size_t>(k)] = (c(lo + step * k) - P).norm();
+  double best = *std::min_element(d.begin(), d.end());
+  for (int k = 1; k < m; ++k) {
+    const std::size_t i = static_cast<std::size_t>(k);
+    if (d[i] > d[i - 1] || d[i] > d[i + 1]) continue;
+    double t = lo + step * k;
+    for (int it = 0; it < 40; ++it) {
+      const double g = (c(t) - P).dot(dc(t)), dg = dc(t).squaredNorm() + (c(t) - P).dot(ddc(t));
+      if (!(dg > 0)) break;
+      t = std::clamp(t - g / dg, lo + step * (k - 1), lo + step * (k + 1));
+    }
+    best = std::min(best, (c(t) - P).norm());
+  }
+  return best;
+}
+
+TEST(FitCurveSpline, CuspMeetsATightToleranceWithPiecesInTheSquareRootOfArcLength) {
+  // Thesis ex. 22: (u, v, u^3 - v^2) against z = 0, the curve u^3 = v^2 with a cusp at the origin.
+  // In arc length s from the cusp the branch has an s^(3/2) term; the pieces at the cusp are
+  // parameterised in sqrt(s), where it is analytic (docs/math/curve_spline.md §1).
+  const Problem problem(testing::parametric("u", "v", "u^3-v^2", {-1.5, 1.5}, {-1.5, 1.5}),
+                        testing::implicit("z", Box{{-2, 2}, {-2, 2}, {-2, 2}}), PairKind::kParametricImplicit);
+  std::vector<VecX> points;
+  std::vector<Vec3> tangents;
+  std::vector<std::vector<Vec3>> half_branches;
+  const int m = 16;  // coarse on purpose: the check must refine at the cusp
+  for (int k = 0; k <= m; ++k) {
+    const double t = -1 + 2.0 * k / m;  // t = 0 (k = m/2) is the cusp
+    VecX x(2);
+    x << t * t, t * t * t;
+    points.push_back(x);
+    tangents.push_back(k == m / 2 ? Vec3(-1, 0, 0) : Vec3(2 * t, 3 * t * t, 0).normalized());
+    // Both half-branches leave the cusp along +x.
+    half_branches.push_back(k == m / 2 ? std::vector<Vec3>{Vec3(1, 0, 0), Vec3(1, 0, 0)} : std::vector<Vec3>{});
+  }
+  for (double relative : {1e-9, 1e-11}) {
+    CurveSplineOptions options;
+    options.tolerance = relative * problem.scale();
+    const CurveSpline sp = fit_curve_spline(problem, points, tangents, false, options, &half_branches);
+    EXPECT_TRUE(sp.within_tolerance) << relative << ": " << sp.max_deviation / problem.scale();
+    EXPECT_EQ(sp.c0_knots, 1);  // the cusp
+    EXPECT_EQ(sp.c1_knots, 2);  // where the two pieces at the cusp meet their neighbours
+    // The arc length of (t^2, t^3), t in [-1, 1]: 2 ((4 + 9)^(3/2) - 8) / 27. The interpolant's
+    // length differs from the curve's by about its distance from it (measured: 0.1-0.15 x the
+    // tolerance at both tolerances); a piece in sqrt(s) counts its arc length, not its parameter.
+    EXPECT_NEAR(sp.length, 2 * (std::pow(13.0, 1.5) - 8) / 27, sp.tolerance) << relative;
+    ASSERT_EQ(sp.pcurves.size(), 1u);
+    double dense = 0, pcurve_gap = 0;
+    const int samples = 40 * sp.pieces;
+    for (int k = 0; k <= samples; ++k) {
+      const double t = sp.curve.start() + (sp.curve.end() - sp.curve.start()) * k / samples;
+      const Vec3 P = sp.curve.at(t);
+      dense = std::max(dense, distance_to_cusp_curve(P));
+      const VecX uv = sp.pcurves[0].at(t);
+      pcurve_gap = std::max(pcurve_gap, (to_vec3(problem.first().point(uv[0], uv[1])) - P).norm());
+    }
+    EXPECT_LE(dense, sp.max_deviation + 1e-14 * problem.scale()) << relative;
+    EXPECT_LE(pcurve_gap, 2 * sp.max_deviation + 1e-14 * problem.scale()) << relative;
+  }
 }
 
 TEST(FitCurveSpline, SmoothLoopIsPeriodicAndRefinesToTheTolerance) {

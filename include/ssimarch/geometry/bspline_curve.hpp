@@ -30,10 +30,12 @@ struct BSplineCurve {
 };
 
 /// One B-spline of degree 5 through the pieces, piece i on [t_i, t_i + h_i] with t_0 = 0.
-/// smooth[i]: the pieces i and i+1 (for periodic, the last and the first at i = n-1) join with
-/// equal first and second derivatives, so two of the five copies of their common knot are
-/// removed exactly (multiplicity 3: C2); otherwise the knot keeps multiplicity 5 (C0).
-/// periodic requires every smooth[i]; the result is then the periodic form.
-BSplineCurve bspline_from_pieces(const std::vector<QuinticPiece>& pieces, const std::vector<bool>& smooth, bool periodic);
+/// continuity[i] (0, 1 or 2): how the pieces i and i+1 (for periodic, the last and the first at
+/// i = n-1) join in the spline's parameter. 2: equal first and second derivatives, so two of the
+/// five copies of their common knot are removed exactly (multiplicity 3: C2); 1: equal first
+/// derivatives only, one copy removed (multiplicity 4: C1; a piece at a singular point in its own
+/// parameter, docs/math/curve_spline.md §1); 0: multiplicity 5 (C0).
+/// periodic requires every continuity[i] == 2; the result is then the periodic form.
+BSplineCurve bspline_from_pieces(const std::vector<QuinticPiece>& pieces, const std::vector<int>& continuity, bool periodic);
 
 }  // namespace ssimarch

@@ -29,7 +29,9 @@ struct CurveSplineOptions {
 inline constexpr double kSplineDeviationSafety = 1.25;
 
 struct CurveSpline {
-  BSplineCurve curve;                // 3D, degree 5, parameter = arc length from the first point
+  /// 3D, degree 5. Parameter: the arc length from the first point, except on a piece at a
+  /// singular point, whose parameter u in [0, 2h] has s = u^2 / (4h) (docs/math/curve_spline.md §1).
+  BSplineCurve curve;
   /// One per parametric surface of the problem, same knots: problem.first() (u,v) first, then
   /// problem.second() (p,q) for parametric pairs; none for implicit pairs.
   std::vector<BSplineCurve> pcurves;
@@ -39,6 +41,8 @@ struct CurveSpline {
   int pieces = 0;                    // polynomial pieces after refinement
   int inserted_points = 0;           // exact curve points the refinement added
   int c0_knots = 0;                  // knots at singular points of the branch (C0 there)
+  int c1_knots = 0;                  // C1 knots: where a piece at a singular point meets the next
+  double length = 0;                 // arc length of the 3D spline (Gauss-Legendre per piece)
   double time_ms = 0;                // wall time of the fit and its check (steady clock)
 };
 

@@ -16,7 +16,7 @@ namespace ssimarch {
 /// "warnings"}; with the geometry option every point also has t, n, b, kappa, tau,
 /// kappa_prime, theta (null where undetermined) and geometry_status. Schema: docs/output-format.md.
 /// With the bspline option each curve also has "bspline" {degree, periodic, knots,
-/// control_points, tolerance, within_tolerance, pieces, inserted_points, c0_knots}, "pcurves"
+/// control_points, tolerance, within_tolerance, pieces, inserted_points, c0_knots, c1_knots}, "pcurves"
 /// [{surface, degree, periodic, knots, control_points}] and "max_deviation".
 nlohmann::json to_json(const IntersectionRun& run);
 /// The scene names of the problem's first and second surface (the parametric one first).
