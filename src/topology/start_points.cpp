@@ -111,6 +111,13 @@ std::vector<VecX> start_points_near(const Tracer& tracer, const std::vector<Vec3
       r = gauss_newton(P, *x, co);
       stats->linearizations += r.linearizations;
       stats->add_surface_evaluations(r.evaluations);
+      // A start given on a singular point of the curve (a cusp, a node: the Jacobian drops rank,
+      // so Gauss-Newton refuses to step) that is already on the curve within the tolerance is a
+      // start: regular_start and trace_all's singular-start registration take it from there.
+      if (r.status == CorrectorStatus::kSingular && P.linearize(*x).distance <= co.tolerance) {
+        r.status = CorrectorStatus::kConverged;
+        r.x = *x;
+      }
     }
     if (!x || r.status != CorrectorStatus::kConverged) {
       ++*failed;

@@ -236,8 +236,12 @@ Half march_contact(const Problem& P, const ContactPoint& start, double sign, dou
       out.end = Termination::kLeftDomain;
       out.message = "the curve of tangential contact leaves the domain at " + describe_point(cur.location.point);
       if (on_contact_curve(edge) && P.inside(edge.location.x, 1e-7)) {
-        out.length += (edge.location.point - cur.location.point).norm();
-        out.points.push_back({edge.location.x, edge.location.point, travel});
+        // The arc, not the chord, to the edge point (with the curve's tangent there): a chord of
+        // length c on a curve of curvature k falls short by k^2 c^3 / 24 (1.7e-6 at each end of
+        // bug25950's contact circle, whose march lands on the sphere's pole from both sides).
+        const Vec3 t_edge = edge.tangent * (edge.tangent.dot(travel) >= 0 ? 1.0 : -1.0);
+        out.length += arc_length_estimate(cur.location.point, travel, edge.location.point, t_edge);
+        out.points.push_back({edge.location.x, edge.location.point, t_edge});
         out.message = "the curve of tangential contact leaves the domain at " + describe_point(edge.location.point);
       }
       return out;
