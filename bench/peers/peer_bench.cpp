@@ -1,5 +1,6 @@
 // Side-by-side benchmark: OpenCASCADE (GeomAPI_IntSS, analytic and B-spline input), SISL (s1859 +
-// s1310) and ssimarch on the peer cases, interleaved in one process (docs/benchmarks.md, "Peers").
+// s1310) and ssimarch on the peer cases in one process, OpenCASCADE and ssimarch interleaved, SISL
+// after them (docs/benchmarks.md, "Peers").
 //
 //   peer_bench [--reps N] [--case NAME] [--scenes DIR]
 //
@@ -64,10 +65,11 @@ struct Loaded {
   Row rows[kEngines];
 };
 
-void run_once(Loaded* l, bool first) {
+// Runs the engines of [from, to) once on one case.
+void run_once(Loaded* l, bool first, int from, int to) {
   const ssimarch::Surface& a = l->scene.surface(l->spec.surfaces[0]);
   const ssimarch::Surface& b = l->scene.surface(l->spec.surfaces[1]);
-  for (int e = 0; e < kEngines; ++e) {
+  for (int e = from; e < to; ++e) {
     double ms = NAN;
     Outcome o;
     switch (e) {
@@ -147,8 +149,16 @@ int main(int argc, char** argv) {
     l.traced.options.closed_form = false;
     cases.push_back(std::move(l));
   }
-  for (int r = 0; r < reps; ++r)  // interleaved: every engine on every case, then again
-    for (Loaded& l : cases) run_once(&l, r == 0);
+  // OpenCASCADE and ssimarch interleaved: every engine on every case, then again. SISL runs in a
+  // forked child (sisl_engine.cpp), and after a fork every page of this process is copy-on-write:
+  // the engine run next paid for re-faulting its heap (3-5 ms, malloc_consolidate and page faults in
+  // `perf record`), so SISL's repetitions come after all the others.
+  const int engines[] = {kOcctAnalytic, kOcctBspline, kSsimarch, kSsimarchTraced};
+  for (int r = 0; r < reps; ++r)
+    for (Loaded& l : cases)
+      for (int e : engines) run_once(&l, r == 0, e, e + 1);
+  for (int r = 0; r < reps; ++r)
+    for (Loaded& l : cases) run_once(&l, r == 0, kSisl, kSisl + 1);
   std::printf("| case | exact length (components) |");
   for (const char* e : kEngineNames) std::printf(" %s |", e);
   std::printf("\n|---|---|---|---|---|---|---|\n");
