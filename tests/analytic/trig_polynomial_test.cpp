@@ -178,9 +178,11 @@ double gauss_legendre_length(const RuledCurves& rc, const RuledLoop& loop, int p
   return 0.5 * h * sum;
 }
 
-// Every loop of the section of `ruled` with `other`, inside a region that holds them all: closed
-// curves whose lengths agree with Gauss-Legendre's to 1e-12 relative.
-void expect_lengths_as_gauss_legendre(const Surface& ruled, const Surface& other) {
+// The loops of the section of `ruled` with `other`, inside a region that holds them all, handed to
+// `check` with the section they come from (the section refers to the rulings and the quadric,
+// which live here).
+template <class Check>
+void with_section_loops(const Surface& ruled, const Surface& other, Check check) {
   const auto rulings = rulings_of(ruled);
   const auto q = quadric_matrix(other);
   ASSERT_TRUE(rulings && q);
@@ -189,13 +191,20 @@ void expect_lengths_as_gauss_legendre(const Surface& ruled, const Surface& other
   ASSERT_TRUE(section.has_value());
   const auto curves = ruled_curves_in(rc, *section, {}, 1e-4, 0.1);
   ASSERT_TRUE(curves.has_value());
-  ASSERT_EQ(curves->size(), section->loops.size());
-  for (std::size_t i = 0; i < curves->size(); ++i) {
-    EXPECT_TRUE((*curves)[i].closed);
-    const double reference = gauss_legendre_length(rc, section->loops[i], 32);
-    ASSERT_NEAR(gauss_legendre_length(rc, section->loops[i], 16) / reference - 1, 0, 1e-12) << "reference not converged";
-    EXPECT_NEAR((*curves)[i].length / reference - 1, 0, 1e-12) << "loop " << i << (section->loops[i].arc ? " (arc)" : " (circle)");
-  }
+  check(rc, *section, *curves);
+}
+
+// Every loop is a closed curve whose length agrees with Gauss-Legendre's to 1e-12 relative.
+void expect_lengths_as_gauss_legendre(const Surface& ruled, const Surface& other) {
+  with_section_loops(ruled, other, [](const RuledCurves& rc, const RuledSection& section, const std::vector<TracedCurve>& curves) {
+    ASSERT_EQ(curves.size(), section.loops.size());
+    for (std::size_t i = 0; i < curves.size(); ++i) {
+      EXPECT_TRUE(curves[i].closed);
+      const double reference = gauss_legendre_length(rc, section.loops[i], 32);
+      ASSERT_NEAR(gauss_legendre_length(rc, section.loops[i], 16) / reference - 1, 0, 1e-12) << "reference not converged";
+      EXPECT_NEAR(curves[i].length / reference - 1, 0, 1e-12) << "loop " << i << (section.loops[i].arc ? " (arc)" : " (circle)");
+    }
+  });
 }
 
 TEST(RuledLoopLength, TrapezoidalLengthsAsGaussLegendre) {
@@ -227,17 +236,12 @@ TEST(RuledLoopLength, TrapezoidalLengthsAsGaussLegendre) {
 TEST(RuledLoopLength, SteinmetzEllipsesAsTheEllipticIntegral) {
   // The ellipses z = +-x on x^2 + y^2 = 1: semi-axes sqrt 2 and 1, perimeter 4 sqrt(2) E(k),
   // k^2 = 1 - 1/2 (std::comp_ellint_2 takes the modulus k).
-  const auto rulings = rulings_of(Cylinder(Vec3::Zero(), Vec3::UnitZ(), 1, {-2, 2}));
-  const auto q = quadric_matrix(Cylinder(Vec3::Zero(), Vec3::UnitX(), 1, {-2, 2}));
-  ASSERT_TRUE(rulings && q);
-  const RuledCurves rc(*rulings, *q);
-  const auto section = rc.section();
-  ASSERT_TRUE(section.has_value());
-  const auto curves = ruled_curves_in(rc, *section, {}, 1e-4, 0.1);
-  ASSERT_TRUE(curves.has_value());
-  ASSERT_EQ(curves->size(), 2u);
   const double perimeter = 4 * std::sqrt(2.0) * std::comp_ellint_2(std::sqrt(0.5));
-  for (const TracedCurve& c : *curves) EXPECT_NEAR(c.length / perimeter - 1, 0, 1e-13);
+  with_section_loops(Cylinder(Vec3::Zero(), Vec3::UnitZ(), 1, {-2, 2}), Cylinder(Vec3::Zero(), Vec3::UnitX(), 1, {-2, 2}),
+                     [&](const RuledCurves&, const RuledSection&, const std::vector<TracedCurve>& curves) {
+                       ASSERT_EQ(curves.size(), 2u);
+                       for (const TracedCurve& c : curves) EXPECT_NEAR(c.length / perimeter - 1, 0, 1e-13);
+                     });
 }
 
 }  // namespace
