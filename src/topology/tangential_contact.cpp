@@ -155,6 +155,32 @@ std::pair<double, int> first_exit(const Problem& P, const VecX& from, const VecX
   return out;
 }
 
+// The contact point where the march leaves the domain, between cur (inside) and next (outside):
+// first the fraction of the step where the unknowns' chord leaves; when the corrected point there
+// is not on the contact curve inside the domain (the corrector moves it off the chord: cylinder on a
+// plane traced parametric-parametric stopped 0.021 short of its edge, and a second start in that gap
+// traced the line again), the fraction is bisected on the corrected points until the bracket is
+// at rounding level of the step, so the end lies on the bound. None when nothing lands.
+std::optional<ContactPoint> land_on_bound(const Problem& P, const ContactPoint& cur, const ContactPoint& next, const Vec2& dir, double ds,
+                           const ContactOptions& o) {
+  const double f = first_exit(P, cur.location.x, next.location.x).first;
+  ContactPoint edge = advance(P, cur, dir, f * ds, o);
+  if (on_contact_curve(edge) && P.inside(edge.location.x, 1e-7)) return edge;
+  std::optional<ContactPoint> landed;
+  double lo = 0, hi = 1;
+  while (hi - lo > 4 * std::numeric_limits<double>::epsilon()) {
+    const double mid = 0.5 * (lo + hi);
+    ContactPoint p = advance(P, cur, dir, mid * ds, o);
+    if (on_contact_curve(p) && P.inside(p.location.x, 0)) {
+      lo = mid;
+      landed = std::move(p);
+    } else {
+      hi = mid;
+    }
+  }
+  return landed;
+}
+
 // A step of the contact march that left the domain over a pole (a degenerate edge mapped to one
 // point, march/pole_passage.hpp) when the contact curve goes through that point: the curve is one
 // curve through the pole, as a transversal curve is (docs/math/poles.md). The continuation is the
@@ -230,19 +256,17 @@ Half march_contact(const Problem& P, const ContactPoint& start, double sign, dou
         cur = std::move(pass->beyond);
         continue;
       }
-      // Onto the bound: the fraction of the step where the unknowns' chord leaves the domain.
-      const double f = first_exit(P, cur.location.x, next.location.x).first;
-      ContactPoint edge = advance(P, cur, dir, f * ds, o);
+      const std::optional<ContactPoint> edge = land_on_bound(P, cur, next, dir, ds, o);
       out.end = Termination::kLeftDomain;
       out.message = "the curve of tangential contact leaves the domain at " + describe_point(cur.location.point);
-      if (on_contact_curve(edge) && P.inside(edge.location.x, 1e-7)) {
+      if (edge) {
         // The arc, not the chord, to the edge point (with the curve's tangent there): a chord of
         // length c on a curve of curvature k falls short by k^2 c^3 / 24 (1.7e-6 at each end of
         // bug25950's contact circle, whose march lands on the sphere's pole from both sides).
-        const Vec3 t_edge = edge.tangent * (edge.tangent.dot(travel) >= 0 ? 1.0 : -1.0);
-        out.length += arc_length_estimate(cur.location.point, travel, edge.location.point, t_edge);
-        out.points.push_back({edge.location.x, edge.location.point, t_edge});
-        out.message = "the curve of tangential contact leaves the domain at " + describe_point(edge.location.point);
+        const Vec3 t_edge = edge->tangent * (edge->tangent.dot(travel) >= 0 ? 1.0 : -1.0);
+        out.length += arc_length_estimate(cur.location.point, travel, edge->location.point, t_edge);
+        out.points.push_back({edge->location.x, edge->location.point, t_edge});
+        out.message = "the curve of tangential contact leaves the domain at " + describe_point(edge->location.point);
       }
       return out;
     }

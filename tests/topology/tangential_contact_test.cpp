@@ -4,6 +4,7 @@
 // OpenCASCADE's tests/lowalgos/intss/bug23163 ("no resulting circle at the intersection of tori").
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -51,6 +52,27 @@ TEST(TangentialContact, CylinderLyingOnAPlane) {
   }
   EXPECT_TRUE(r.singular_points.empty());
   EXPECT_TRUE(r.isolated_points.empty());
+}
+
+// The peers case cylinder_plane_tangent traced (closed form off), both surfaces parametric: the
+// contact line x = z = 0, |y| <= 2 lies on the cylinder's seam. Its march used to stop short of one
+// edge (by 0.021 at the automatic step) and a second start in that gap traced the line again: two
+// open curves of 3.979. One curve of length 4, ends on y = -2 and y = 2 to 1e-9, at every step.
+TEST(TangentialContact, ContactLineLandsOnBothEdgesAndIsTracedOnce) {
+  for (double step : {0.0, 0.01, 0.03, 0.05}) {
+    const std::string json = R"({"surfaces": {"cyl": {"cylinder": {"point": [0, 0, 1], "axis": [0, 1, 0], "radius": 1, "range": [-2, 2]}},
+      "plane": {"plane": {"point": [0, 0, 0], "normal": [0, 0, 1], "u": [-3, 3], "v": [-3, 3]}}},
+      "intersections": [{"name": "c", "surfaces": ["cyl", "plane"], "options": {"closed_form": false, "step_length": )" +
+                             std::to_string(step) + "}}]}";
+    const TraceResult r = trace_scene(json);
+    ASSERT_EQ(r.curves.size(), 1u) << "step " << step;
+    const TracedCurve& c = r.curves[0];
+    EXPECT_TRUE(c.tangential_contact) << "step " << step;
+    EXPECT_NEAR(c.length, 4.0, 1e-9) << "step " << step;
+    const double y0 = c.points.front().p.y(), y1 = c.points.back().p.y();
+    EXPECT_NEAR(std::min(y0, y1), -2.0, 1e-9) << "step " << step;
+    EXPECT_NEAR(std::max(y0, y1), 2.0, 1e-9) << "step " << step;
+  }
 }
 
 TEST(TangentialContact, SphereInsideCylinderOfEqualRadius) {
