@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-
 namespace ssimarch {
 
 double signed_turn(const Vec2& a, const Vec2& b) {

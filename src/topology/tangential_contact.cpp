@@ -161,8 +161,8 @@ std::pair<double, int> first_exit(const Problem& P, const VecX& from, const VecX
 // plane traced parametric-parametric stopped 0.021 short of its edge, and a second start in that gap
 // traced the line again), the fraction is bisected on the corrected points until the bracket is
 // at rounding level of the step, so the end lies on the bound. None when nothing lands.
-std::optional<ContactPoint> land_on_bound(const Problem& P, const ContactPoint& cur, const ContactPoint& next, const Vec2& dir, double ds,
-                           const ContactOptions& o) {
+std::optional<ContactPoint> land_on_bound(const Problem& P, const ContactPoint& cur, const ContactPoint& next,
+                                          const Vec2& dir, double ds, const ContactOptions& o) {
   const double f = first_exit(P, cur.location.x, next.location.x).first;
   ContactPoint edge = advance(P, cur, dir, f * ds, o);
   if (on_contact_curve(edge) && P.inside(edge.location.x, 1e-7)) return edge;

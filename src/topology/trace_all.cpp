@@ -323,11 +323,6 @@ void add_or_join(TracedCurve c, const std::vector<LooseEnd>& ends, std::vector<T
   }
 }
 
-// Curves traced before a singular point next to them was known can be a stub of a branch traced
-// later through that point (a start on the domain edge 1e-3 from a node, whose march could not
-// get past it: OCCT bug32850): a curve shorter than the resolution radius, through no singular
-// point, with every point within that radius of a longer curve is that curve's duplicate and goes
-// (each branch once, issue 11 item 2); the registry's curve indices follow.
 // Removes curve i; the registry's curve indices follow.
 void erase_curve(std::size_t i, std::vector<TracedCurve>* curves, SingularRegistry* registry) {
   curves->erase(curves->begin() + static_cast<std::ptrdiff_t>(i));
@@ -370,6 +365,11 @@ std::vector<Vec3> absorb_contact_loops(std::vector<TracedCurve>* curves, Singula
   return absorbed;
 }
 
+// Curves traced before a singular point next to them was known can be a stub of a branch traced
+// later through that point (a start on the domain edge 1e-3 from a node, whose march could not
+// get past it: OCCT bug32850): a curve shorter than the resolution radius, through no singular
+// point, with every point within that radius of a longer curve is that curve's duplicate and goes
+// (each branch once, issue 11 item 2); the registry's curve indices follow.
 void drop_stubs(std::vector<TracedCurve>* curves, SingularRegistry* registry, double radius) {
   for (std::size_t i = curves->size(); i-- > 0;) {
     const TracedCurve& c = (*curves)[i];
