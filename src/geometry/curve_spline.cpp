@@ -243,7 +243,7 @@ struct Fit {
     // tried too and the one measured closer kept: a cusp needs it, a node's or tacnode's smooth
     // half-branch is interpolated better in s.
     const bool singular_a = ea.order == 1 && eb.order == 2, singular_b = eb.order == 1 && ea.order == 2;
-    if ((singular_a || singular_b)) {
+    if (singular_a || singular_b) {
       Checked root = check(root_piece(ea, eb, singular_a));
       (singular_a ? root.end_continuity : root.start_continuity) = 1;
       if (root.measured < best.measured) best = root;
