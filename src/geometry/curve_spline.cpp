@@ -51,18 +51,24 @@ VecX parameter_direction(const Problem& problem, const VecX& x, const Vec3& d) {
 // a small angle (near a singular point, where they touch) that leaves it farther from the curve,
 // by the tolerance over the angle (1e-9 off for a residual of 1e-14 next to ex22's cusp). Newton
 // steps of least norm on H alone, x -= J^T (J J^T)^-1 H, put it on the curve to rounding before
-// its jet is taken: quadratic convergence from the tracer's tolerance takes two or three; they
-// stop when a step no longer moves the 3D point beyond rounding. A point where J J^T is singular
-// (the singular point itself) is kept as traced.
+// its jet is taken: quadratic convergence from the tracer's tolerance takes two or three. The
+// iteration stops when a step no longer moves the 3D point beyond rounding, or when a step is not
+// at most half the previous one (no longer contracting: that step is not taken). Steps that halve
+// at least go from the tracer's tolerance to rounding in log2(tolerance / rounding) iterations, so
+// the loop is bounded by the tolerances themselves. A point where J J^T is singular (the singular
+// point itself) is kept as traced.
 VecX onto_curve(const Problem& problem, VecX x) {
   const double rounding = 1e-15 * problem.scale();
-  for (int it = 0; it < 8; ++it) {
+  double previous = std::numeric_limits<double>::infinity();
+  while (true) {
     const Linearization L = problem.linearize(x);
     const MatX J = L.jacobian;
     const VecX dx = -J.transpose() * (J * J.transpose()).ldlt().solve(VecX(L.h));
-    if (!dx.allFinite()) break;
+    const double moved = (L.point_jacobian * dx).norm();
+    if (!dx.allFinite() || !(moved <= 0.5 * previous)) break;
     x = problem.wrap(x + dx);
-    if ((L.point_jacobian * dx).norm() <= rounding) break;
+    if (moved <= rounding) break;
+    previous = moved;
   }
   return x;
 }
@@ -152,16 +158,22 @@ struct Checked {
 
 // The piece whose 3D part has arc length h, built by build(h): a fixed point of
 // h -> length(build(h)), reached in a few iterations from the chord (docs/math/curve_spline.md §1).
+// The iteration contracts (the length depends on h only through the end derivatives' scaling);
+// it stops at rounding (1e-14 relative) or when a correction is not at most half the previous
+// one, which bounds it by log2 of the chord's relative error over rounding.
 template <class Build>
 QuinticPiece at_own_length(double chord, const Build& build) {
   double h = chord;
   QuinticPiece q = build(h);
-  for (int it = 0; it < 12; ++it) {
+  double previous = std::numeric_limits<double>::infinity();
+  while (true) {
     const double length = piece_length_3d(q);
-    const bool done = std::fabs(length - h) <= 1e-14 * h;
+    const double correction = std::fabs(length - h);
+    if (!(correction <= 0.5 * previous)) break;
     h = length;
     q = build(h);
-    if (done) break;
+    if (correction <= 1e-14 * h) break;
+    previous = correction;
   }
   return q;
 }
