@@ -127,6 +127,27 @@ TEST(RuledSection, ConeAgainstASphereAlongTheConesRulings) {
                    2);
 }
 
+TEST(RuledSection, NarrowLoopOfNearlyTouchingCylindersHasItsLength) {
+  // x^2 + y^2 = 1 and (x - d)^2 + z^2 = 1 (perpendicular axes), d = 2 - eps: a small loop round
+  // (1, 0, 0) where Delta is ~eps of its terms all along the loop. References: the arc length of
+  // (cos t, sin t, +-sqrt(1 - (cos t - d)^2)) integrated by mpmath at 50 digits with t = T sin s
+  // (T = acos(1 - eps), eps = 2 - d of the double d), tanh-sinh quadrature. A difference of
+  // points gave 2.80950e-4 for eps = 1e-9 (1.5e-4 short): sqrt(Delta)'s cancellation. The input's
+  // own conditioning is eps's rounding, 1.1e-16 / eps: the bound is ten times that, over 2.
+  const struct {
+    double d, length;
+  } cases[] = {{2 - 1e-9, 2.8099260084880896e-4}, {2 - 1e-6, 8.8857653205909771e-3}};
+  for (const auto& c : cases) {
+    const Problem P(Cylinder(Vec3::Zero(), Vec3::UnitZ(), 1, {-3, 3}), Cylinder(Vec3(c.d, 0, 0), Vec3::UnitY(), 1, {-3, 3}),
+                    PairKind::kImplicitImplicit);
+    const ClosedFormResult r = solve(P);
+    ASSERT_EQ(r.result.curves.size(), 1u);
+    EXPECT_TRUE(r.result.curves[0].closed);
+    const double eps = 2 - c.d;
+    EXPECT_NEAR(r.result.curves[0].length / c.length - 1, 0, 10 * 1.1e-16 / eps / 2) << "d = " << c.d;
+  }
+}
+
 TEST(RuledSection, TrimmedCylinderGivesOpenPiecesEndingOnItsRims) {
   // The z-axis cylinder of the Steinmetz pair cut to |z| <= 0.5: four open arcs, each end on a rim.
   const Problem P(Cylinder(Vec3::Zero(), Vec3::UnitX(), 1, {-2, 2}), Cylinder(Vec3::Zero(), Vec3::UnitZ(), 1, {-0.5, 0.5}),

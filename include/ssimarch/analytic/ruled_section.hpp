@@ -171,8 +171,8 @@ namespace ssimarch {
 /// others inside as open curves ending on the region's faces (kLeftDomain, ends found by
 /// bisection). Chords within `deviation` of the curve and at most `max_chord` long; lengths of
 /// |d point / d phi| (analytic in phi) by the trapezoidal rule on the loop's uniform coarse samples
-/// (a closed loop: geometric convergence, checked by halving) or Gauss-Legendre quadrature (an open
-/// piece, or a loop where the trapezoidal rule has not converged). nullopt when a loop would need
+/// (a closed loop: geometric convergence, checked by halving) or Romberg-extrapolated chord sums of
+/// exact points (an open piece, or a loop where the trapezoidal rule has not converged). nullopt when a loop would need
 /// more than 100000 samples (it runs far outside the region): the caller traces instead.
 std::optional<std::vector<TracedCurve>> ruled_curves_in(const RuledCurves& curves, const RuledSection& section,
                                                         const std::vector<Slab>& region, double deviation,
