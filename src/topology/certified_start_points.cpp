@@ -8,12 +8,17 @@
 #include "ssimarch/core/progress.hpp"
 #include "ssimarch/core/thread_pool.hpp"
 
+#include "ssimarch/problem/closed_form_tolerances.hpp"
 #include "ssimarch/problem/gauss_newton.hpp"
 #include "ssimarch/problem/poles_and_trims.hpp"
 #include "ssimarch/problem/singular_tolerances.hpp"
+#include "ssimarch/singular/locate.hpp"
+#include "ssimarch/topology/isolated_box.hpp"
 #include "ssimarch/topology/krawczyk.hpp"
+#include "ssimarch/topology/topology_tolerances.hpp"
 #include "ssimarch/topology/saddle_box.hpp"
 #include "ssimarch/topology/start_points.hpp"
+#include "ssimarch/topology/trace_all.hpp"
 
 namespace ssimarch {
 
@@ -180,11 +185,20 @@ std::vector<IntervalBox> merge_touching(const std::vector<UndecidedBox>& boxes, 
   return regions;
 }
 
+// A box decided around an isolated point (topology/isolated_box.hpp): every point of the curve
+// in `box` lies within `radius` (model units) of point(x).
+struct IsolatedBox {
+  IntervalBox box;  // a periodic unknown may reach past its period
+  VecX x;
+  double radius = 0;
+};
+
 struct Collector {
   const Tracer& tracer;
   TraceStats* stats;
   StartPointSearch* search;
   std::vector<VecX> points;
+  std::vector<IsolatedBox> isolated{};
 
   // x clamped into the bounds and polished by Newton when that keeps it close.
   void add(UnknownVec x, bool candidate) {
@@ -212,9 +226,9 @@ struct Collector {
     }
   }
 
-  // Roots as start points, undecided boxes as candidates and uncertain regions. Returns
-  // whether the system was decided everywhere.
-  bool take(const System& s, const RootSearchResult& r, bool report) {
+  // Roots as start points, undecided boxes as candidates. Returns whether the system was decided
+  // everywhere.
+  bool take(const System& s, const RootSearchResult& r) {
     search->boxes += r.boxes;
     for (const CertifiedRoot& root : r.roots) {
       IntervalBox x = to_unknowns(s, root.enclosure);
@@ -228,19 +242,94 @@ struct Collector {
         VecX v(static_cast<Eigen::Index>(x.size()));
         for (std::size_t i = 0; i < x.size(); ++i) v[static_cast<Eigen::Index>(i)] = x[i].mid();
         if (!budget) add(v, true);
-        if (!report) continue;
+      }
+    return r.complete();
+  }
+
+  // The undecided boxes of s as uncertain regions, but those inside an isolated box.
+  void report(const System& s, const RootSearchResult& r) {
+    for (bool budget : {false, true})
+      for (const IntervalBox& y : merge_touching(r.undecided, budget)) {
+        const IntervalBox x = to_unknowns(s, y);
+        if (covered(x)) continue;
         UncertainRegion u{{}, s.name, budget ? "budget spent" : "singular or non-isolated root"};
         for (const IntervalNumber& c : x) u.box.push_back({c.lo(), c.hi()});
         search->uncertain_regions.push_back(std::move(u));
       }
-    return r.complete();
   }
+
+  // Interval i of a region moved by whole periods (periodic unknowns) to lie nearest to `to`.
+  IntervalNumber nearest_copy(int i, const IntervalNumber& c, double to) const {
+    const double period = tracer.problem().periods()[static_cast<std::size_t>(i)];
+    const double shift = period > 0 ? period * std::round((to - c.mid()) / period) : 0.0;
+    return {c.lo() + shift, c.hi() + shift};
+  }
+
+  // Whether the region lies in a decided isolated box (modulo the periods).
+  bool covered(const IntervalBox& region) const {
+    for (const IsolatedBox& b : isolated) {
+      bool inside = true;
+      for (std::size_t i = 0; i < region.size() && inside; ++i) {
+        const IntervalNumber c = nearest_copy(static_cast<int>(i), region[i], b.x[static_cast<Eigen::Index>(i)]);
+        inside = b.box[i].lo() <= c.lo() && c.hi() <= b.box[i].hi();
+      }
+      if (inside) return true;
+    }
+    return false;
+  }
+
+  // The region decided as part of a box around an isolated point (topology/isolated_box.hpp):
+  // the singular point is located from the region's middle and boxes around it holding the
+  // region, `factor` times its extent from the point plus kSaddleFloor of the domain, are tried.
+  bool decide_isolated(const IntervalBox& region);
 };
+
+// The box S of a singular cluster tried as a saddle or isolated box: half-widths `factor` times
+// the region's extent plus a floor of kSaddleFloor of the domain.
+constexpr double kSaddleFloor = 1e-6;
+constexpr double kClusterGrowth[] = {2.0, 5.0, 20.0};  // the sizes tried, as multiples of the region
+
+bool Collector::decide_isolated(const IntervalBox& region) {
+  if (covered(region)) return true;
+  const Problem& P = tracer.problem();
+  VecX guess(P.dim());
+  for (int i = 0; i < P.dim(); ++i) guess[i] = region[static_cast<std::size_t>(i)].mid();
+  const SingularLocation s = locate_singular_point(P, guess);
+  if (s.status != LocateStatus::kConverged) return false;
+  UnknownVec x0 = s.x;
+  clamp(&x0);
+  // The curve in the box within the resolution radius of the point is what the tracer reports as
+  // the isolated point (trace_all.cpp, absorb_contact_loops); kIsolatedBoxRadius bounds it below.
+  const double max_radius =
+      std::min(kIsolatedBoxRadius * std::max(1.0, P.scale()), kResolutionFraction * tracer.spacing());
+  // A gap within the corrector's tolerance is a contact, as the closed forms and the tracer have
+  // it (tests NearContact.*): a deeper overlap is a loop to trace, not an isolated point.
+  const double max_depth = contact_gap_tolerance(tracer.options().tolerance, P.scale());
+  for (double factor : kClusterGrowth) {
+    IntervalBox S;
+    for (int i = 0; i < P.dim(); ++i) {
+      const auto ui = static_cast<std::size_t>(i);
+      const IntervalNumber c = nearest_copy(i, region[ui], x0[i]);
+      const Interval& b = P.bounds()[ui];
+      const double w = factor * std::max(std::abs(c.lo() - x0[i]), std::abs(c.hi() - x0[i])) + kSaddleFloor * (b.hi - b.lo);
+      if (P.periods()[ui] > 0) S.emplace_back(x0[i] - w, x0[i] + w);
+      else S.emplace_back(std::max(b.lo, x0[i] - w), std::min(b.hi, x0[i] + w));
+    }
+    ++search->boxes;
+    const IsolatedBoxResult d = decide_isolated_box(P, x0, S, max_radius, max_depth);
+    if (!d.decided) continue;
+    isolated.push_back({S, x0, d.radius});
+    // The point itself is a start: trace_all reports a start on an isolated point as that point
+    // (after a certified search the tangency hunt looks nowhere).
+    add(x0, false);
+    return true;
+  }
+  return false;
+}
 
 // The box S of a singular cluster tried as a saddle box (topology/saddle_box.hpp): the region
 // grown by `factor` times its half-widths plus a floor of kSaddleFloor of the domain, clipped to
 // the bounds.
-constexpr double kSaddleFloor = 1e-6;
 constexpr long kSaddleFaceBoxes = 100;  // least box budget of each face system of a saddle box
 IntervalBox grown(const Problem& P, const IntervalBox& region, double factor) {
   IntervalBox out;
@@ -252,31 +341,36 @@ IntervalBox grown(const Problem& P, const IntervalBox& region, double factor) {
   return out;
 }
 
-// Every undecided region of a turning system decided as a saddle box (no closed branch inside,
-// every arc through it crossing its certified faces, whose roots become start points); tries a
-// few sizes per region. Returns whether all were.
-bool decide_by_saddle_boxes(const System& s, const RootSearchResult& r, const RootSearchOptions& ro, Collector* out,
-                            long* saddle_boxes) {
+// The region of a turning system decided as a saddle box (no closed branch inside, every arc
+// through it crossing its certified faces, whose roots become start points); tries a few sizes.
+bool decide_saddle(const IntervalBox& region, const RootSearchOptions& ro, Collector* out, long* saddle_boxes) {
   const Problem& P = out->tracer.problem();
   if (P.dim() > 3) return false;  // saddle boxes need a reduction to two variables (saddle_box.hpp)
   // The faces of a small box need few boxes; a tenth of the budget bounds what a box that fails
   // (a face through a tangency) can cost, tried at three sizes per region.
   RootSearchOptions faces = ro;
   faces.max_boxes = std::max(kSaddleFaceBoxes, ro.max_boxes / 10);
+  for (double factor : kClusterGrowth) {
+    SaddleBoxResult b = decide_saddle_box(P, grown(P, region, factor), faces);
+    out->search->boxes += b.boxes;
+    if (!b.decided) continue;
+    for (const VecX& x : b.crossings) out->add(x, false);
+    ++*saddle_boxes;
+    return true;
+  }
+  return false;
+}
+
+// Every undecided region of a system decided: inside a decided isolated box, as a saddle box
+// (turning systems: `saddles`), or as a new isolated box. Returns whether all were.
+bool decide_clusters(const System& s, const RootSearchResult& r, const RootSearchOptions& ro, bool saddles, Collector* out,
+                     long* saddle_boxes) {
   for (bool budget : {false, true})
     for (const IntervalBox& y : merge_touching(r.undecided, budget)) {
       const IntervalBox region = to_unknowns(s, y);
-      bool decided = false;
-      for (double factor : {2.0, 5.0, 20.0}) {
-        SaddleBoxResult b = decide_saddle_box(P, grown(P, region, factor), faces);
-        out->search->boxes += b.boxes;
-        if (!b.decided) continue;
-        for (const VecX& x : b.crossings) out->add(x, false);
-        ++*saddle_boxes;
-        decided = true;
-        break;
-      }
-      if (!decided) return false;
+      if (out->covered(region)) continue;
+      if (saddles && decide_saddle(region, ro, out, saddle_boxes)) continue;
+      if (!out->decide_isolated(region)) return false;
     }
   return true;
 }
@@ -371,7 +465,7 @@ std::vector<VecX> certified_start_points(const Tracer& tracer, TraceStats* stats
   search->method = "certified";
   RootSearchOptions ro;
   ro.max_boxes = tracer.options().start_box_budget;
-  Collector out{tracer, stats, search, {}};
+  Collector out{tracer, stats, search, {}, {}};
   // The root searches of the boundary systems and of the first turning system are independent
   // (read-only Problem): run on the shared pool, then taken in the serial order, so the start
   // points are the serial run's.
@@ -389,16 +483,20 @@ std::vector<VecX> certified_start_points(const Tracer& tracer, TraceStats* stats
   const double systems = static_cast<double>(boundary.size()) + P.dim();
   double solved = static_cast<double>(boundary.size());
   report_progress("start points", solved, systems);
-  for (std::size_t i = 0; i < boundary.size(); ++i) boundary_decided = out.take(boundary[i], found[i], true) && boundary_decided;
+  long saddle_boxes = 0;
+  for (std::size_t i = 0; i < boundary.size(); ++i) {
+    const bool decided = out.take(boundary[i], found[i]) || decide_clusters(boundary[i], found[i], ro, false, &out, &saddle_boxes);
+    if (!decided) out.report(boundary[i], found[i]);
+    boundary_decided = decided && boundary_decided;
+  }
   // One turning system decided everywhere suffices for the loops; the others' roots still help.
   bool loops_decided = false;
-  long saddle_boxes = 0;
   std::vector<std::pair<System, RootSearchResult>> undecided_turning;
   for (int k = 0; k < P.dim() && !loops_decided; ++k) {
     report_progress("start points", solved++, systems);
     System s = k == 0 ? std::move(first[0]) : turning_system(P, k);
     RootSearchResult r = k == 0 ? std::move(found.back()) : find_all_roots(s.equations, s.box, ro);
-    loops_decided = out.take(s, r, false) || decide_by_saddle_boxes(s, r, ro, &out, &saddle_boxes);
+    loops_decided = out.take(s, r) || decide_clusters(s, r, ro, true, &out, &saddle_boxes);
     if (loops_decided) break;
     const bool budget_spent = std::any_of(r.undecided.begin(), r.undecided.end(), [](const UndecidedBox& u) { return u.budget; });
     undecided_turning.emplace_back(std::move(s), std::move(r));
@@ -408,10 +506,7 @@ std::vector<VecX> certified_start_points(const Tracer& tracer, TraceStats* stats
   }
   report_progress("start points", systems, systems);  // the turning loop may stop early
   if (!loops_decided)
-    for (const auto& [s, r] : undecided_turning) {
-      RootSearchResult regions_only{{}, r.undecided, 0};
-      out.take(s, regions_only, true);
-    }
+    for (const auto& [s, r] : undecided_turning) out.report(s, r);
   search->certified = boundary_decided && loops_decided;
   if (!search->certified) {
     search->note = std::string(boundary_decided ? "" : "a boundary system ") +
@@ -422,6 +517,14 @@ std::vector<VecX> certified_start_points(const Tracer& tracer, TraceStats* stats
   }
   if (search->certified && saddle_boxes > 0)
     search->note = std::to_string(saddle_boxes) + " singular cluster(s) of a turning system decided as saddle boxes";
+  if (search->certified && !out.isolated.empty()) {
+    double radius = 0;
+    for (const IsolatedBox& b : out.isolated) radius = std::max(radius, b.radius);
+    char line[160];
+    std::snprintf(line, sizeof line, "%zu isolated point(s) decided by convex boxes: the curve in each lies within %.3g of its point",
+                  out.isolated.size(), radius);
+    search->note += (search->note.empty() ? "" : "; ") + std::string(line);
+  }
   search->time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return std::move(out.points);
 }

@@ -10,6 +10,8 @@
 #include "ssimarch/march/pole_passage.hpp"
 #include "ssimarch/march/tracer.hpp"
 #include "ssimarch/problem/poles_and_trims.hpp"
+#include "ssimarch/problem/singular_tolerances.hpp"
+#include "ssimarch/topology/topology_tolerances.hpp"
 #include "ssimarch/singular/classify.hpp"
 
 namespace ssimarch {
@@ -99,9 +101,13 @@ ContactPoint advance(const Problem& P, const ContactPoint& from, const Vec2& dir
 }
 
 // The crossing between a and b (lambda changes sign; b at arc distance ds from a along dir): the
-// zero of lambda along the curve by regula falsi (Illinois variant) on the arc parameter.
-SingularLocation locate_crossing(const Problem& P, const ContactPoint& a, const ContactPoint& b, const Vec2& dir,
-                                 double ds, const ContactOptions& o) {
+// zero of lambda along the curve by regula falsi (Illinois variant) on the arc parameter. None
+// when the sign change is no zero of lambda: |lambda| never falls to kCrossingLambdaRatio of its
+// values at a and b (a pole of lambda, where the contact curve passes a singular point of a
+// surface: the apex of a cone touched along a generator, whose two nappes lie on either side of
+// the plane; docs/math/tangential_contact.md §3).
+std::optional<SingularLocation> locate_crossing(const Problem& P, const ContactPoint& a, const ContactPoint& b,
+                                                const Vec2& dir, double ds, const ContactOptions& o) {
   double ta = 0, tb = ds, fa = a.lambda, fb = b.lambda;
   SingularLocation best = std::fabs(fa) <= std::fabs(fb) ? a.location : b.location;
   double best_f = std::min(std::fabs(fa), std::fabs(fb));
@@ -122,6 +128,7 @@ SingularLocation locate_crossing(const Problem& P, const ContactPoint& a, const 
     }
     if (c.lambda == 0) break;
   }
+  if (!(best_f <= kCrossingLambdaRatio * std::max(std::fabs(a.lambda), std::fabs(b.lambda)))) return std::nullopt;
   return best;
 }
 
@@ -270,7 +277,8 @@ Half march_contact(const Problem& P, const ContactPoint& start, double sign, dou
       }
       return out;
     }
-    if ((next.lambda > 0) != (cur.lambda > 0)) crossings->push_back(locate_crossing(P, cur, next, dir, ds, o));
+    if ((next.lambda > 0) != (cur.lambda > 0))
+      if (auto c = locate_crossing(P, cur, next, dir, ds, o)) crossings->push_back(std::move(*c));
     const Vec3 t_next = next.tangent * (next.tangent.dot(next.location.point - cur.location.point) >= 0 ? 1.0 : -1.0);
     if (out.points.size() >= 3 && passes(start.location.point, cur.location.point, next.location.point, ds)) {
       out.length += arc_length_estimate(cur.location.point, travel, start.location.point, sign * start.tangent);
@@ -307,8 +315,9 @@ std::optional<SingularLocation> crossing_near(const Problem& P, const VecX& x, d
       ContactPoint next = advance(P, cur, dir, ds, o);
       if (!on_contact_curve(next)) break;
       if ((next.lambda > 0) != (cur.lambda > 0)) {
-        const SingularLocation c = locate_crossing(P, cur, next, dir, ds, o);
-        const double d = (c.point - start.location.point).norm();
+        const std::optional<SingularLocation> c = locate_crossing(P, cur, next, dir, ds, o);
+        if (!c) break;
+        const double d = (c->point - start.location.point).norm();
         if (d < best_distance) best_distance = d, best = c;
         break;
       }

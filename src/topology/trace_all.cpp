@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "ssimarch/march/predictor.hpp"
+#include "ssimarch/problem/closed_form_tolerances.hpp"
 #include "ssimarch/problem/curve_jet.hpp"
 #include "ssimarch/problem/gauss_newton.hpp"
 #include "ssimarch/problem/poles_and_trims.hpp"
@@ -420,6 +421,30 @@ bool register_singular_start(const Tracer& tracer, const VecX& x, const std::vec
   return true;
 }
 
+// A start on an isolated point of the curve (the certified search adds the point of every box it
+// decided around one, topology/isolated_box.hpp) is that point: it is reported in `isolated` (once)
+// and nothing is traced from it. False when x is regular, or no isolated point where the surfaces
+// meet within contact_gap_tolerance is located within half a step of it.
+bool isolated_start(const Tracer& tracer, const VecX& x, double merge, std::vector<SingularPointReport>* isolated) {
+  const Problem& P = tracer.problem();
+  if (!(Problem::rank_ratio(P.linearize(x)) < kSuspectSingularRankRatio)) return false;
+  const SingularLocation loc = locate_singular_point(P, x);
+  // A gap above the corrector's tolerance is no contact: a loop of the curve surrounds the point
+  // (a sphere 1e-10 above a plane, tests NearContact.*), traced from x.
+  if (loc.status != LocateStatus::kConverged || !P.inside(loc.x, 1e-9) ||
+      (loc.point - P.point(x)).norm() > 0.5 * tracer.options().step_length ||
+      loc.gap > contact_gap_tolerance(tracer.options().tolerance, P.scale()))
+    return false;
+  const LocalCurve local = local_curve(P, loc.x);
+  if (local.status != LocalCurveStatus::kOk) return false;
+  const Classification kind = classify(local.h);
+  if (kind.type != SingularType::kIsolated) return false;
+  for (const SingularPointReport& r : *isolated)
+    if ((r.p - loc.point).norm() <= merge) return true;
+  isolated->push_back(make_report(loc, kind, {}));
+  return true;
+}
+
 }  // namespace
 
 TraceResult trace_all(const Tracer& unbounded, const std::vector<Vec3>& starts, const TraceAllOptions& options) {
@@ -437,7 +462,8 @@ TraceResult trace_all(const Tracer& unbounded, const std::vector<Vec3>& starts, 
   std::vector<VecX> seeds = starts.empty() ? automatic_start_points(tracer, &result.stats, &result.start_search)
                                            : start_points_near(tracer, starts, &result.stats, &result.warnings,
                                                                &result.failed_starts);
-  SingularRegistry registry(P, 1e-7 * std::max(1.0, P.scale()));
+  const double registry_merge = 1e-7 * std::max(1.0, P.scale());  // singular points this close are one
+  SingularRegistry registry(P, registry_merge);
   const double registry_tol = 1e-9 * std::max(1.0, P.scale());  // a curve point on a located node
   SingularRegistry* reg = options.through_singular_points ? &registry : nullptr;
   const double radius = kResolutionFraction * tracer.spacing();
@@ -460,6 +486,7 @@ TraceResult trace_all(const Tracer& unbounded, const std::vector<Vec3>& starts, 
     if (near_traced_curve(P.point(x), result.curves, radius)) continue;
     if (reg && trace_contact_from(tracer, x, &result.curves, reg)) continue;  // a curve of tangential contact
     if (reg && register_singular_start(tracer, x, poles, reg)) continue;  // traced from the node below
+    if (reg && options.hunt_isolated_points && isolated_start(tracer, x, registry_merge, &result.isolated_points)) continue;
     const std::vector<LooseEnd> ends = loose_ends(result.curves, registry, registry_tol);
     const std::vector<TracedCurve> stub = stubs(result.curves, ends);
     TracedCurve c = trace_curve_through(tracer, x, &result.stats, reg, static_cast<int>(result.curves.size()),
