@@ -11,6 +11,7 @@
 #include "ssimarch/problem/gauss_newton.hpp"
 #include "ssimarch/problem/poles_and_trims.hpp"
 #include "ssimarch/problem/singular_tolerances.hpp"
+#include "ssimarch/topology/patch_exclusion.hpp"
 #include "ssimarch/topology/krawczyk.hpp"
 #include "ssimarch/topology/saddle_box.hpp"
 #include "ssimarch/topology/start_points.hpp"
@@ -63,11 +64,23 @@ void turning_residual(const Problem& P, int k, const T* x, T* g) {
   }
 }
 
+// For a parametric-parametric pair, the patch exclusion (topology/patch_exclusion.hpp)
+// of a system whose unknowns are H's with x_fixed = at removed (fixed < 0: all of H's).
+void add_patch_exclusion(const Problem& P, int fixed, double at, SquareSystem* e) {
+  if (!patch_exclusion_applies(P)) return;
+  e->excluded = [&P, fixed, at](const IntervalBox& y) {
+    IntervalNumber x[kMaxSystemDimension];
+    for (int i = 0, j = 0; i < P.dim(); ++i) x[i] = i == fixed ? IntervalNumber(at) : y[static_cast<std::size_t>(j++)];
+    return patches_cannot_meet(P, x);
+  };
+}
+
 }  // namespace
 
 SquareSystem face_system(const Problem& P, int i, double at) {
   SquareSystem e;
   e.dimension = P.dim() - 1;
+  add_patch_exclusion(P, i, at, &e);
   e.value = [&P, i, at](const IntervalNumber* y, IntervalNumber* g) { boundary_residual(P, i, at, y, g); };
   set_gradients(&e, [&P, i, at](const auto* y, auto* g) { boundary_residual(P, i, at, y, g); });
   return e;
@@ -131,6 +144,7 @@ std::vector<System> trim_face_systems(const Problem& P) {
       s.equations.dimension = P.dim();
       s.equations.value = [&P, n, at](const IntervalNumber* x, IntervalNumber* g) { trim_face_residual(P, n, at, x, g); };
       set_gradients(&s.equations, [&P, n, at](const auto* x, auto* g) { trim_face_residual(P, n, at, x, g); });
+      add_patch_exclusion(P, -1, 0.0, &s.equations);
       for (const Interval& b : P.bounds()) s.box.emplace_back(b.lo, b.hi);
       out.push_back(std::move(s));
     }
@@ -143,6 +157,7 @@ System turning_system(const Problem& P, int k) {
   s.equations.dimension = P.dim();
   s.equations.value = [&P, k](const IntervalNumber* x, IntervalNumber* g) { turning_residual(P, k, x, g); };
   set_gradients(&s.equations, [&P, k](const auto* x, auto* g) { turning_residual(P, k, x, g); });
+  add_patch_exclusion(P, -1, 0.0, &s.equations);
   for (const Interval& b : P.bounds()) s.box.emplace_back(b.lo, b.hi);
   return s;
 }
