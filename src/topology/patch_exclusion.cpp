@@ -80,4 +80,27 @@ bool patches_cannot_meet(const Problem& P, const IntervalNumber* x) {
          separated_along(f, g, normal(g));
 }
 
+bool singular_exclusion_applies(const Problem& P) {
+  return (P.kind() == PairKind::kParametricImplicit || P.kind() == PairKind::kParametricParametric) &&
+         P.second().is_implicit() && evaluates_on_intervals(P.first()) && evaluates_on_intervals(P.second());
+}
+
+bool patch_holds_no_singular_point(const Problem& P, const IntervalNumber& u, const IntervalNumber& v, int depth) {
+  const Patch f = enclose(P.first(), u, v);
+  const G2 g = P.second().value(f.over);
+  // The gap's enclosure; the partials' slack is relative to their own size (for a
+  // parametric-parametric pair, G's implicit normal is its parametric one to rounding).
+  const IntervalNumber gap = tighter(g.v, P.second().value(f.at_mid) + g.d[0] * f.da + g.d[1] * f.db);
+  if (misses(gap, kImplicitFormSlack * P.scale())) return true;
+  for (const IntervalNumber& d : g.d)
+    if (misses(d, kImplicitFormSlack * d.magnitude())) return true;
+  if (depth <= 0) return false;
+  const std::vector<Interval>& B = P.bounds();
+  const bool split_u = u.width() / B[0].width() >= v.width() / B[1].width();
+  const IntervalNumber& w = split_u ? u : v;
+  const IntervalNumber lo(w.lo(), w.mid()), hi(w.mid(), w.hi());
+  return split_u ? patch_holds_no_singular_point(P, lo, v, depth - 1) && patch_holds_no_singular_point(P, hi, v, depth - 1)
+                 : patch_holds_no_singular_point(P, u, lo, depth - 1) && patch_holds_no_singular_point(P, u, hi, depth - 1);
+}
+
 }  // namespace ssimarch

@@ -1,7 +1,8 @@
 // The patch exclusion of the parametric-parametric certified search (topology/patch_exclusion.hpp):
 // the assumption behind its implicit test (each primitive's parametric points lie on its own
 // implicit form far within kImplicitFormSlack), that no box holding a point of the curve is ever
-// excluded, and that patches of two nested spheres are excluded without subdividing the other.
+// excluded, that patches of two nested spheres are excluded without subdividing the other, and
+// that the hunt's singular-point test keeps a tangency and excludes a transversal curve.
 #include "ssimarch/topology/patch_exclusion.hpp"
 
 #include <gtest/gtest.h>
@@ -108,6 +109,37 @@ TEST(PatchExclusion, NestedSpheresAreExcludedByPatchesOfOneAlone) {
   const Problem Q(Sphere(Vec3(0.2, 0, 0), 0.5), Sphere(Vec3::Zero(), 1.0, kAxis, kReference),
                   PairKind::kParametricParametric);
   EXPECT_GT(exclude_by_first_patches(Q, {B[0].lo, B[0].hi}, {B[1].lo, B[1].hi}, 10), 0);
+}
+
+// The hunt's test: a sphere of radius 1 about (0, 0, 1) touches the plane z = 0 at the origin
+// (a singular point: the surfaces are tangent there) and a sphere about (0, 0, 0.5) cuts it
+// transversally in the circle of radius sqrt(0.75).
+TEST(PatchExclusion, HuntKeepsTheTangencyAndExcludesTheTransversalCircle) {
+  const Plane plane(Vec3::Zero(), Vec3::UnitZ(), {{-2, 2}, {-2, 2}});
+  const Problem touching(plane, Sphere(Vec3(0, 0, 1), 1.0), PairKind::kParametricImplicit);
+  const Problem cutting(plane, Sphere(Vec3(0, 0, 0.5), 1.0), PairKind::kParametricImplicit);
+  ASSERT_TRUE(singular_exclusion_applies(touching));
+  ASSERT_TRUE(singular_exclusion_applies(cutting));
+  // The plane's parameters are coordinates in an orthonormal frame at the origin: the tangency
+  // is at (0, 0) and the circle is u^2 + v^2 = 0.75 whatever the frame's rotation.
+  const Vec3T<double> o = plane.point(0.0, 0.0);
+  ASSERT_LT(std::hypot(o.x, o.y, o.z), 1e-15);
+  for (double w : {1e-3, 0.1, 1.0}) {
+    for (double a : {0.0, 0.3, 0.9}) {  // the tangency anywhere in the patch, its corner included
+      const IntervalNumber u(-a * w, (1 - a) * w), v(-(1 - a) * w, a * w);
+      EXPECT_FALSE(patch_holds_no_singular_point(touching, u, v, 12)) << w << " " << a;
+    }
+  }
+  // Patches along the circle (and the disc inside it) hold no singular point: excluded within
+  // the halvings allowed, however the patch lies across the circle.
+  const double r = std::sqrt(0.75);
+  for (int k = 0; k < 16; ++k) {
+    const double phi = 2 * M_PI * k / 16, x = r * std::cos(phi), y = r * std::sin(phi);
+    const IntervalNumber u(x - 0.2, x + 0.15), v(y - 0.1, y + 0.25);
+    EXPECT_TRUE(patch_holds_no_singular_point(cutting, u, v, 12)) << phi;
+  }
+  // The tangent pair without halvings: the whole domain is not excluded at once, rightly.
+  EXPECT_FALSE(patch_holds_no_singular_point(touching, IntervalNumber(-2, 2), IntervalNumber(-2, 2), 0));
 }
 
 }  // namespace

@@ -32,4 +32,17 @@ bool patch_exclusion_applies(const Problem& P);
 /// tests above. Requires patch_exclusion_applies(P).
 bool patches_cannot_meet(const Problem& P, const IntervalNumber* x);
 
+/// Whether the hunt's singular-point test applies: the first surface parametric and the second
+/// with an implicit form (parametric-implicit, or parametric-parametric with an implicit G),
+/// both evaluating on intervals.
+bool singular_exclusion_applies(const Problem& P);
+
+/// Whether the patch U x V of the first surface provably holds no singular point of the curve: at
+/// one, F(u, v) lies on G (f_G o F = 0) and G's normal is F's (grad f_G . F_u = grad f_G . F_v =
+/// 0, the two partials of f_G o F), so one interval evaluation of f_G o F with its gradient (the
+/// gap and sin(theta) bounds of docs/singular.md) excludes the patch when any of the three misses
+/// 0 (by kImplicitFormSlack, relative). A patch not excluded is halved, at most `depth` times
+/// along each path. Requires singular_exclusion_applies(P).
+bool patch_holds_no_singular_point(const Problem& P, const IntervalNumber& u, const IntervalNumber& v, int depth);
+
 }  // namespace ssimarch
