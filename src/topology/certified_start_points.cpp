@@ -200,6 +200,8 @@ struct Collector {
   TraceStats* stats;
   StartPointSearch* search;
   std::vector<VecX> points;
+  std::vector<Vec3> at;  // P.point of each of `points`: the duplicate test below compares with
+                         // all of them, thousands after the sampling of uncertain regions
 
   // x clamped into the bounds and polished by Newton when that keeps it close.
   void add(UnknownVec x, bool candidate) {
@@ -213,9 +215,10 @@ struct Collector {
     if (converged && (candidate || (P.point(r.x) - P.point(x)).norm() < 1e-6 * P.scale())) x = r.x;
     else if (candidate) return;  // Newton from an undecided box found no point of the curve
     const Vec3 p = P.point(x);
-    for (const VecX& q : points)
-      if ((P.point(q) - p).norm() < 1e-9 * P.scale()) return;
+    for (const Vec3& q : at)
+      if ((q - p).norm() < 1e-9 * P.scale()) return;
     points.push_back(x);
+    at.push_back(p);
   }
 
   // Into the bounds (a root on a face may come out a rounding error beyond it).
@@ -386,7 +389,7 @@ std::vector<VecX> certified_start_points(const Tracer& tracer, TraceStats* stats
   search->method = "certified";
   RootSearchOptions ro;
   ro.max_boxes = tracer.options().start_box_budget;
-  Collector out{tracer, stats, search, {}};
+  Collector out{tracer, stats, search, {}, {}};
   // The root searches of the boundary systems and of the first turning system are independent
   // (read-only Problem): run on the shared pool, then taken in the serial order, so the start
   // points are the serial run's.
