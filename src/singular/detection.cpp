@@ -116,6 +116,11 @@ std::vector<SingularLocation> hunt_singular_points(const Problem& problem, const
     const int n = options.regions.empty() ? options.grid : options.region_grid;
     for (const VecX& x0 : grid_starts(problem, box, n, &cell)) {
       if (options.regions.empty() && options.consider && !options.consider(x0)) continue;
+      if (options.holds_none) {
+        VecX step(static_cast<Eigen::Index>(box.size()));
+        for (std::size_t k = 0; k < box.size(); ++k) step[static_cast<Eigen::Index>(k)] = box[k].width() / (n - 1);
+        if (options.holds_none(x0, step)) continue;
+      }
       // A box narrower than the grid of the whole domain still admits starts a domain cell away.
       const double reach = options.regions.empty() ? cell : std::max(cell, 1e-3 * problem.scale());
       const std::optional<VecX> x = newton_target(problem, x0, reach, options.max_sine);

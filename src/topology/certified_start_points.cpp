@@ -14,6 +14,7 @@
 #include "ssimarch/problem/singular_tolerances.hpp"
 #include "ssimarch/singular/locate.hpp"
 #include "ssimarch/topology/isolated_box.hpp"
+#include "ssimarch/topology/patch_exclusion.hpp"
 #include "ssimarch/topology/krawczyk.hpp"
 #include "ssimarch/topology/topology_tolerances.hpp"
 #include "ssimarch/topology/saddle_box.hpp"
@@ -68,11 +69,23 @@ void turning_residual(const Problem& P, int k, const T* x, T* g) {
   }
 }
 
+// For a parametric-parametric pair, the patch exclusion (topology/patch_exclusion.hpp)
+// of a system whose unknowns are H's with x_fixed = at removed (fixed < 0: all of H's).
+void add_patch_exclusion(const Problem& P, int fixed, double at, SquareSystem* e) {
+  if (!patch_exclusion_applies(P)) return;
+  e->excluded = [&P, fixed, at](const IntervalBox& y) {
+    IntervalNumber x[kMaxSystemDimension];
+    for (int i = 0, j = 0; i < P.dim(); ++i) x[i] = i == fixed ? IntervalNumber(at) : y[static_cast<std::size_t>(j++)];
+    return patches_cannot_meet(P, x);
+  };
+}
+
 }  // namespace
 
 SquareSystem face_system(const Problem& P, int i, double at) {
   SquareSystem e;
   e.dimension = P.dim() - 1;
+  add_patch_exclusion(P, i, at, &e);
   e.value = [&P, i, at](const IntervalNumber* y, IntervalNumber* g) { boundary_residual(P, i, at, y, g); };
   set_gradients(&e, [&P, i, at](const auto* y, auto* g) { boundary_residual(P, i, at, y, g); });
   return e;
@@ -136,6 +149,7 @@ std::vector<System> trim_face_systems(const Problem& P) {
       s.equations.dimension = P.dim();
       s.equations.value = [&P, n, at](const IntervalNumber* x, IntervalNumber* g) { trim_face_residual(P, n, at, x, g); };
       set_gradients(&s.equations, [&P, n, at](const auto* x, auto* g) { trim_face_residual(P, n, at, x, g); });
+      add_patch_exclusion(P, -1, 0.0, &s.equations);
       for (const Interval& b : P.bounds()) s.box.emplace_back(b.lo, b.hi);
       out.push_back(std::move(s));
     }
@@ -148,6 +162,7 @@ System turning_system(const Problem& P, int k) {
   s.equations.dimension = P.dim();
   s.equations.value = [&P, k](const IntervalNumber* x, IntervalNumber* g) { turning_residual(P, k, x, g); };
   set_gradients(&s.equations, [&P, k](const auto* x, auto* g) { turning_residual(P, k, x, g); });
+  add_patch_exclusion(P, -1, 0.0, &s.equations);
   for (const Interval& b : P.bounds()) s.box.emplace_back(b.lo, b.hi);
   return s;
 }
@@ -198,6 +213,8 @@ struct Collector {
   TraceStats* stats;
   StartPointSearch* search;
   std::vector<VecX> points;
+  std::vector<Vec3> at;  // P.point of each of `points`: the duplicate test below compares with
+                         // all of them, thousands after the sampling of uncertain regions
   std::vector<IsolatedBox> isolated{};
 
   // x clamped into the bounds and polished by Newton when that keeps it close.
@@ -212,9 +229,10 @@ struct Collector {
     if (converged && (candidate || (P.point(r.x) - P.point(x)).norm() < 1e-6 * P.scale())) x = r.x;
     else if (candidate) return;  // Newton from an undecided box found no point of the curve
     const Vec3 p = P.point(x);
-    for (const VecX& q : points)
-      if ((P.point(q) - p).norm() < 1e-9 * P.scale()) return;
+    for (const Vec3& q : at)
+      if ((q - p).norm() < 1e-9 * P.scale()) return;
     points.push_back(x);
+    at.push_back(p);
   }
 
   // Into the bounds (a root on a face may come out a rounding error beyond it).

@@ -231,7 +231,7 @@ RootSearchResult find_all_roots(const SquareSystem& s, const IntervalBox& start,
     IntervalBox x = std::move(queue.front());
     queue.pop_front();
     ++out.boxes;
-    if (excluded_by_value(s, x)) continue;
+    if ((s.excluded && s.excluded(x)) || excluded_by_value(s, x)) continue;
     const IntervalBox xe = inflate(x, scale);
     Step st = krawczyk_step(s, xe, &x);
     if (st.excluded) continue;

@@ -5,6 +5,7 @@
 #include "ssimarch/problem/singular_tolerances.hpp"
 #include "ssimarch/singular/detection.hpp"
 #include "ssimarch/topology/certified_start_points.hpp"
+#include "ssimarch/topology/patch_exclusion.hpp"
 
 namespace ssimarch {
 
@@ -34,6 +35,14 @@ bool has_real_branches(SingularType t) {
 // The share of the start-point box budget the hunt's own turning-system search may use when no
 // certified search ran (a fifth: its unexplored boxes are still hunted, on the grid).
 constexpr long kHuntSearchBudgetShare = 5;
+
+// Halvings of a grid start's cell by the hunt's singular-point exclusion before the start is
+// tried: six per direction (sub-patches 1/64 of the cell). Only sub-patches that can hold a
+// singular point are halved again, so the work follows the curve (~2 x 64 evaluations of f_G o F
+// along a transversal curve through the cell, a few microseconds each) against one local curve
+// and a location (milliseconds) for every start tried; the whole 64 x 64 only where the cell is
+// all contact (no exclusion anywhere).
+constexpr int kHuntCellHalvings = 12;
 
 // Whether x lies within one cell of a grid of `grid` samples per unknown from one of the boxes.
 bool near_box(const Problem& P, const std::vector<std::vector<Interval>>& boxes, const VecX& x, int grid) {
@@ -161,6 +170,15 @@ void hunt_tangencies(const Tracer& tracer, const StartPointSearch& search, Singu
     if (candidates.empty()) return;
     hunt.consider = [&](const VecX& x) { return near_box(P, candidates, x, hunt.grid); };
   }
+  // A start whose cell (the points nearer to it than to any other start: half a grid step about
+  // it) provably holds no singular point is skipped (topology/patch_exclusion.hpp): every
+  // singular point keeps the start nearest to it, from which it was found before.
+  if (singular_exclusion_applies(P))
+    hunt.holds_none = [&P](const VecX& x0, const VecX& step) {
+      const double hu = 0.5 * step[0], hv = 0.5 * step[1];
+      return patch_holds_no_singular_point(P, IntervalNumber(x0[0] - hu, x0[0] + hu), IntervalNumber(x0[1] - hv, x0[1] + hv),
+                                           kHuntCellHalvings);
+    };
   // A grid cell from a singular point sin(theta) is about a cell's fraction of the scale; 0.2
   // leaves room while skipping the transversal rest of the curve.
   hunt.max_sine = 0.2;

@@ -60,6 +60,10 @@ struct HuntOptions {
   // Starts of the whole domain's grid for which this returns false are not tried (their cells are
   // known to hold no singular point); empty: every start.
   std::function<bool(const VecX&)> consider;
+  // Starts x0 for which this returns true, given the grid step per unknown of the box being
+  // sampled, are not tried: x0's cell provably holds no singular point (an interval test,
+  // topology/patch_exclusion.hpp); empty: every start.
+  std::function<bool(const VecX& x0, const VecX& step)> holds_none;
   // Called with each new singular point as soon as it is found (before the next start), so that
   // `skip` can account for what the caller derived from it.
   std::function<void(const SingularLocation&)> on_found;

@@ -42,6 +42,10 @@ struct SquareSystem {
   /// per operation, so N = 4 slots for 2 unknowns did ~1.7 times the work of N = 2.
   std::function<void(const Gradient<IntervalNumber, 2>* x, Gradient<IntervalNumber, 2>* g)> gradient2;
   std::function<void(const Gradient<IntervalNumber, 3>* x, Gradient<IntervalNumber, 3>* g)> gradient3;
+  /// Optional: true when the box provably holds no root by a necessary condition other than g's
+  /// own enclosure (topology/patch_exclusion.hpp); tried first. It must never reject a box
+  /// holding a root: only rigorous (interval) tests belong here.
+  std::function<bool(const IntervalBox& x)> excluded;
 };
 
 /// Sets `gradient` and the sized gradient of `system` (its dimension set) from one generic

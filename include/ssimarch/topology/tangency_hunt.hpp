@@ -9,7 +9,9 @@
 //   * after sampling or given start points (parametric-implicit pairs; the others' grids cost
 //     seconds), over a grid of the whole domain where sin(theta) <= 0.2, at the grid points within
 //     a cell of the boxes one turning system's interval search leaves undecided or unexplored
-//     (singular_point_regions; every point when the surfaces do not evaluate on intervals).
+//     (singular_point_regions; every point when the surfaces do not evaluate on intervals);
+//   * in every case, a grid start whose cell provably holds no singular point (an interval test
+//     of the gap and sin(theta), topology/patch_exclusion.hpp) is skipped.
 #pragma once
 
 #include <vector>
