@@ -105,11 +105,6 @@ void expect_viviani_node(const std::vector<SingularPointReport>& points, const s
 }
 
 TEST(StartOnSingular, VivianiNodeLeadingTermsAgreeWithTheClosedForm) {
-  GTEST_SKIP() << "open: the general classifier's parametric charts are linear in the parameters, so a "
-                  "parametric pair measures the expansion over the parametrisation (viviani.json: -+1/96, the "
-                  "cylinder's angle a with x = sin a); the closed form and implicit pairs measure it over the "
-                  "tangent plane (+-1/32, this reference). A projected chart (sing branch) fixes it but "
-                  "breaks bug25950_param's contact march near the sphere's poles";
   // The scene (parametric cylinder, implicit sphere: the general classifier), with the closed form
   // off and on (its own start point keeps the general path; without one the pair is traced).
   const Scene scene = load_scene(std::string(SSIMARCH_SOURCE_DIR) + "/examples/viviani.json");
