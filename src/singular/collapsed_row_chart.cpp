@@ -88,16 +88,11 @@ struct OtherChart {
   Eigen::Matrix2d M = Eigen::Matrix2d::Identity();
 };
 
-// The roots w of psi(w) = N . F_across(w, row) along the row: the generators at P0 in the other
-// surface's tangent plane, where branches of the curve leave the row.
-std::vector<double> row_roots(const Surface& D, const Row& row, const Vec3& N) {
+// The roots w of psi along the row: the generators at P0 along which branches of the curve leave
+// it (sign changes of 256 samples, bisection to the last bit).
+std::vector<double> row_roots(const Surface& D, const Row& row, const std::function<double(double)>& psi) {
   const int along = 1 - row.across;
   const Interval& a = range(D, along);
-  auto psi = [&](double w) {
-    const Vec2 p = on_row(row, w, row.value);
-    const FirstOrder f = parametric_first_order(D, p[0], p[1]);
-    return N.dot(row.across == 1 ? f.dv : f.du);
-  };
   std::vector<double> roots;
   double w0 = a.lo, f0 = psi(w0);
   for (int i = 1; i <= kRowSamples; ++i) {
@@ -125,52 +120,94 @@ struct BranchGerm {
 };
 
 // The chart's coordinates (s, t) and the height phi of D over the other surface along the common
-// normal, as jets in (W, C): D's parameters (w + W along the row, value + C across it).
-void height_over_chart(const Problem& pr, int slot, const Vec3T<LocalJet>& Dj, const LocalCurve& c,
-                       const OtherChart& o, LocalJet* s, LocalJet* t, LocalJet* phi) {
+// normal, as jets of order K in (W, C): D's parameters (w + W along the row, value + C across it).
+template <int K>
+void height_over_chart(const Problem& pr, int slot, const Vec3T<Jet<2, K>>& Dj, const LocalCurve& c,
+                       const OtherChart& o, Jet<2, K>* s, Jet<2, K>* t, Jet<2, K>* phi) {
+  using J = Jet<2, K>;
+  auto along = [](const Vec3T<J>& v, const Vec3& e) { return v.x * e.x() + v.y * e.y() + v.z * e.z(); };
   const Surface& O = slot == 0 ? pr.second() : pr.first();
   const Vec3 P0 = c.origin;
   if (!o.parametric) {  // the implicit graph's (s, t) are the tangential components exactly
-    *s = dot_jet(Dj, c.e1) - c.e1.dot(P0);
-    *t = dot_jet(Dj, c.e2) - c.e2.dot(P0);
+    *s = along(Dj, c.e1) - c.e1.dot(P0);
+    *t = along(Dj, c.e2) - c.e2.dot(P0);
     *phi = O.value(Dj) / o.unit;
     return;
   }
   // (p, q) with (O(p, q) - D) . e_i = 0: the chord iteration of the parametric-parametric chart
   // (docs/math/singular_local_curve.md §1), one order per pass.
-  const LocalJet t1 = dot_jet(Dj, c.e1) - c.e1.dot(P0), t2 = dot_jet(Dj, c.e2) - c.e2.dot(P0);
+  const J t1 = along(Dj, c.e1) - c.e1.dot(P0), t2 = along(Dj, c.e2) - c.e2.dot(P0);
   const Eigen::Matrix2d Ai = o.M.inverse();
-  LocalJet P(o.pq[0]), Q(o.pq[1]);
-  for (int it = 0; it <= kLocalOrder; ++it) {
-    const Vec3T<LocalJet> Oj = O.point(P, Q);
-    LocalJet r1 = t1 - (dot_jet(Oj, c.e1) - c.e1.dot(P0)), r2 = t2 - (dot_jet(Oj, c.e2) - c.e2.dot(P0));
+  J P(o.pq[0]), Q(o.pq[1]);
+  for (int it = 0; it <= K; ++it) {
+    const Vec3T<J> Oj = O.point(P, Q);
+    J r1 = t1 - (along(Oj, c.e1) - c.e1.dot(P0)), r2 = t2 - (along(Oj, c.e2) - c.e2.dot(P0));
     r1[0] = r2[0] = 0.0;
     P += Ai(0, 0) * r1 + Ai(0, 1) * r2;
     Q += Ai(1, 0) * r1 + Ai(1, 1) * r2;
   }
-  const Vec3T<LocalJet> Oj = O.point(P, Q);
-  *phi = dot_jet(Dj, c.normal) - dot_jet(Oj, c.normal);
-  const LocalJet dp = P - o.pq[0], dq = Q - o.pq[1];
+  const Vec3T<J> Oj = O.point(P, Q);
+  *phi = along(Dj, c.normal) - along(Oj, c.normal);
+  const J dp = P - o.pq[0], dq = Q - o.pq[1];
   *s = o.M(0, 0) * dp + o.M(0, 1) * dq;
   *t = o.M(1, 0) * dp + o.M(1, 1) * dq;
+}
+
+// D at (w + W, value + C) as jets of order K.
+template <int K>
+Vec3T<Jet<2, K>> row_jet(const Surface& D, const Row& row, double w) {
+  using J = Jet<2, K>;
+  const J W = J::variable(0, w), C = J::variable(1, row.value);
+  return row.across == 1 ? D.point(W, C) : D.point(C, W);
+}
+
+// The order m in C to which the height vanishes along the row (1 where D's generators at P0 leave
+// O's tangent plane: a cone's apex; 2 on a smooth pole, where D's tangent plane is O's: a
+// singular point of the curve), with psi_m(w), the coefficient of C^m, sampled along the row; 0
+// where the first kMaxRowOrder all vanish.
+constexpr int kMaxRowOrder = 3;
+int row_order(const Problem& pr, int slot, const Surface& D, const Row& row, const LocalCurve& c, const OtherChart& o,
+              std::function<double(double)>* psi) {
+  using J = Jet<2, kMaxRowOrder>;
+  auto coefficients = [&pr, slot, &D, row, c, o](double w, int m, double* size) {
+    const Vec3T<J> Dj = row_jet<kMaxRowOrder>(D, row, w);
+    J s, t, phi;
+    height_over_chart<kMaxRowOrder>(pr, slot, Dj, c, o, &s, &t, &phi);
+    const J::MultiIndex a{0, m};
+    if (size) *size = Vec3(Dj.x.coef(a), Dj.y.coef(a), Dj.z.coef(a)).norm();
+    return phi.coef(a);
+  };
+  const Interval& range_w = range(D, 1 - row.across);
+  for (int m = 1; m <= kMaxRowOrder; ++m) {
+    double largest = 0, scale = 0;
+    for (int i = 0; i <= kRowSamples; ++i) {
+      double size = 0;
+      largest = std::max(largest, std::fabs(coefficients(range_w.lo + range_w.width() * i / kRowSamples, m, &size)));
+      scale = std::max(scale, size);
+    }
+    if (largest > kRowOrderZero * scale) {
+      *psi = [coefficients, m](double w) { return coefficients(w, m, nullptr); };
+      return m;
+    }
+  }
+  return 0;
 }
 
 // The branch leaving the row at w: phi vanishes on the whole row (C = 0), so phi = C phi~ and the
 // branch is phi~(W, C) = 0 with phi~_W != 0 at a simple root: W(C) by the chord iteration on
 // series, then (s, t)(C), and Y(X) by reverting X(C). Order kLocalOrder - 1 (phi~ loses one).
-std::optional<BranchGerm> branch_at(const Problem& pr, int slot, const Row& row, double w, const LocalCurve& c,
+std::optional<BranchGerm> branch_at(const Problem& pr, int slot, const Row& row, int m, double w, const LocalCurve& c,
                                     const OtherChart& o) {
   const Surface& D = slot == 0 ? pr.first() : pr.second();
-  const LocalJet W = LocalJet::variable(0, w), C = LocalJet::variable(1, row.value);
-  const Vec3T<LocalJet> Dj = row.across == 1 ? D.point(W, C) : D.point(C, W);
+  const Vec3T<LocalJet> Dj = row_jet<kLocalOrder>(D, row, w);
   LocalJet s, t, phi;
-  height_over_chart(pr, slot, Dj, c, o, &s, &t, &phi);
-  LocalJet rest(0.0);  // phi / C
-  for (int d = 0; d < kLocalOrder; ++d)
-    for (int j = 0; j <= d; ++j) set_coef(rest, d - j, j, coef(phi, d - j, j + 1));
+  height_over_chart<kLocalOrder>(pr, slot, Dj, c, o, &s, &t, &phi);
+  LocalJet rest(0.0);  // phi / C^m
+  for (int d = 0; d + m <= kLocalOrder; ++d)
+    for (int j = 0; j <= d; ++j) set_coef(rest, d - j, j, coef(phi, d - j, j + m));
   const double a = coef(rest, 1, 0), b = coef(rest, 0, 1);
   if (!(std::fabs(a) > kSimpleRowRootRatio * std::hypot(a, b))) return std::nullopt;
-  const int K = kLocalOrder - 1;
+  const int K = kLocalOrder - m;
   Series Ws(static_cast<std::size_t>(K + 1), 0.0), Cs = Ws;
   Cs[1] = 1.0;
   for (int it = 0; it < K; ++it) {  // each pass fixes one more order of W(C)
@@ -274,8 +311,11 @@ LocalCurve collapsed_row_curve(const Problem& pr, const VecX& x, int slot) {
   const std::vector<LocalJet> other_unknowns = c.unknowns;
   std::vector<BranchGerm> germs;
   const double rho = 1e-2 * std::max(1.0, pr.scale());
-  for (double w : row_roots(D, *row, c.normal)) {
-    const std::optional<BranchGerm> g = branch_at(pr, slot, *row, w, c, o);
+  std::function<double(double)> psi;
+  const int m = row_order(pr, slot, D, *row, c, o, &psi);
+  if (m == 0) return c;
+  for (double w : row_roots(D, *row, psi)) {
+    const std::optional<BranchGerm> g = branch_at(pr, slot, *row, m, w, c, o);
     if (!g) return c;
     bool known = false;
     for (const BranchGerm& h : germs) known = known || same_branch(h, *g, rho);

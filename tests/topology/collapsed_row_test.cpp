@@ -2,7 +2,7 @@
 // its patch and which has no implicit form (docs/math/singular_local_curve.md §7; issue 10
 // "Not done yet"): traced with default options it is one closed curve of the closed-form length,
 // with its node found, located and classified; the curve passes both poles, regular points of it
-// where the patch's chart collapses.
+// where the patch's chart collapses. With the node itself on a pole row it is classified there.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,6 +10,9 @@
 #include <numbers>
 #include <vector>
 
+#include "ssimarch/singular/classify.hpp"
+#include "ssimarch/singular/half_branches.hpp"
+#include "ssimarch/singular/locate.hpp"
 #include "ssimarch/surface/bspline_surface.hpp"
 #include "ssimarch/surface/primitives.hpp"
 #include "ssimarch/topology/trace_all.hpp"
@@ -79,6 +82,35 @@ TEST(CollapsedRow, VivianiOnARationalSphereThroughItsPolesKeepsItsNode) {
   expect_viviani_with_its_node(trace_all(Problem(sphere, cylinder, PairKind::kParametricImplicit), {}), "implicit cylinder");
   expect_viviani_with_its_node(trace_all(Problem(sphere, cylinder, PairKind::kParametricParametric), {}),
                                "parametric cylinder");
+}
+
+// The same sphere turned so that its pole +2 e_x is the node: the singular point lies exactly on
+// a collapsed edge row of the patch, where the height over the cylinder vanishes to order 2 in
+// the distance from the row (every generator lies in the common tangent plane). Located from the
+// pole's parameters, it is classified in the cylinder's chart: a node with the tangents
+// (0, +-1, +-1)/sqrt2 of (1 + cos t, sin t, 2 sin(t/2)) at t = 0, 2 pi, each half-branch continued
+// straight on.
+TEST(CollapsedRow, VivianiNodeOnARationalSpheresPoleIsClassified) {
+  const Problem P(nurbs_sphere(2, 0), Cylinder(Vec3(1, 0, 0), Vec3::UnitZ(), 1, {-3, 3}), PairKind::kParametricImplicit);
+  VecX x(2);
+  x << 0.3, 1.0;  // on the pole row v = 1, any u
+  const SingularLocation s = locate_singular_point(P, x);
+  ASSERT_EQ(s.status, LocateStatus::kConverged);
+  EXPECT_LT((s.point - Vec3(2, 0, 0)).norm(), 1e-10);
+  const LocalCurve c = local_curve(P, s.x);
+  ASSERT_EQ(c.status, LocalCurveStatus::kOk);
+  const Classification kind = classify(c.h);
+  EXPECT_EQ(kind.type, SingularType::kNode);
+  EXPECT_EQ(kind.ak, "A1");
+  const std::vector<HalfBranch> hb = half_branches(P, c, kind);
+  ASSERT_EQ(hb.size(), 4u);
+  const Vec3 t1 = Vec3(0, 1, 1).normalized(), t2 = Vec3(0, 1, -1).normalized();
+  for (const HalfBranch& b : hb) {
+    EXPECT_NEAR(std::max(std::fabs(b.tangent_3d.dot(t1)), std::fabs(b.tangent_3d.dot(t2))), 1.0, 1e-9);
+    ASSERT_GE(b.continuation, 0);
+    EXPECT_NEAR(b.tangent_3d.dot(hb[static_cast<std::size_t>(b.continuation)].tangent_3d), -1.0, 1e-9);
+    EXPECT_TRUE(b.exit_ok);
+  }
 }
 
 }  // namespace

@@ -20,6 +20,14 @@ inline constexpr double kTangentPlaneTermZero = 1e-12;
 /// is one point to rounding, a regular row is a curve of non-zero length.
 inline constexpr double kCollapsedRowRelative = 1e-12;
 
+/// The height of a surface over the other along a collapsed row vanishes to order m in the
+/// distance C from the row (singular/collapsed_row_chart.cpp): its C^m coefficient psi_m(w)
+/// counts as zero along the whole row when at most this times the largest C^m coefficient of the
+/// surface's own point (dimensionless: both carry the same units). m = 1 where the surface's
+/// generators at the point leave the other's tangent plane (a cone's apex); on a smooth pole at a
+/// singular point of the curve psi_1 is rounding, ~1e-16 of it.
+inline constexpr double kRowOrderZero = 1e-10;
+
 /// A root w of psi(w) = N . F_across(w, row) along a collapsed row is simple (a branch of the
 /// intersection leaves the row transversally in the parameters, and is a smooth branch in 3D)
 /// when |psi'(w)| is at least this times |F_across(w, row)| (both per unit parameter, so the
