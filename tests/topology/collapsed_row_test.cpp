@@ -113,5 +113,12 @@ TEST(CollapsedRow, VivianiNodeOnARationalSpheresPoleIsClassified) {
   }
 }
 
+// Traced with default options: the pole passage carries the curve through the pole, the hunt
+// finds the node there and inserts it into both passages of the curve: one closed curve.
+TEST(CollapsedRow, VivianiNodeOnARationalSpheresPoleIsTracedOnce) {
+  const Problem P(nurbs_sphere(2, 0), Cylinder(Vec3(1, 0, 0), Vec3::UnitZ(), 1, {-3, 3}), PairKind::kParametricImplicit);
+  expect_viviani_with_its_node(trace_all(P, {}), "node on the pole");
+}
+
 }  // namespace
 }  // namespace ssimarch
