@@ -214,8 +214,8 @@ void bind_intersection(py::module_& m) {
         "As the JSON's singular_points: list of dicts xyz, params, type, ak, multiplicity, milnor, curves and "
         "half_branches, each with tangent, param_tangent, continuation and expansion {coefficient, exponent (the "
         "leading term), normal, terms [{exponent, coefficient}]}: the Puiseux expansion W = sum coefficient "
-        "X^exponent of the half-branch in the local curve's tangent-plane coordinates, X along tangent, W along "
-        "normal (docs/python.md).")
+        "X^exponent of the half-branch over the common tangent plane, X = (P - P0) . tangent, W = (P - P0) . normal, "
+        "the same for every pair kind (docs/python.md).")
       .def_property_readonly("isolated_points", [](const PyIntersection& x) {
         return python_of(singular_points_to_json(x.run->result.isolated_points)); }, "As the JSON's isolated_points.")
       .def_property_readonly("stats", [](const PyIntersection& x) { return python_of(stats_to_json(x.run->result.stats)); },

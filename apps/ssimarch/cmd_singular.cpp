@@ -35,7 +35,7 @@ nlohmann::json point_json(const Problem& problem, const SingularLocation& s) {
     for (const PuiseuxTerm& t : b.expansion.terms) terms.push_back({{"exponent", t.exponent}, {"coefficient", t.coefficient}});
     branches.push_back({{"tangent", vec_json(b.tangent_3d)},
                         {"param_tangent", vec_json(b.param_tangent)},
-                        {"expansion", {{"coefficient", b.leading_coefficient}, {"exponent", b.offset_exponent},
+                        {"expansion", {{"coefficient", b.leading_coefficient}, {"exponent", b.leading_exponent},
                                        {"normal", vec_json(b.normal_3d)}, {"terms", terms}}},
                         {"branch", b.branch},
                         {"continuation", b.continuation},

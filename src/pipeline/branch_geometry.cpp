@@ -15,7 +15,7 @@ CurveGeometry smooth_branch(const LocalCurve& curve, const HalfBranch& b) {
   using T = Taylor<kLocalOrder>;
   const Vec2 d = b.tangent, nrm(-d[1], d[0]);
   T W(0.0);
-  for (const PuiseuxTerm& term : b.expansion.terms) W[static_cast<int>(std::lround(term.exponent))] = term.coefficient;
+  for (const PuiseuxTerm& term : b.chart_expansion.terms) W[static_cast<int>(std::lround(term.exponent))] = term.coefficient;
   const T X = T::variable(0, 0.0);
   const std::array<T, 2> st = {d[0] * X + nrm[0] * W, d[1] * X + nrm[1] * W};
   Vec3 c[3];
@@ -45,7 +45,7 @@ std::optional<BranchGeometry> singular_branch_geometry(const Problem& problem, c
   BranchGeometry out;
   out.x = s.x;
   // A smooth branch needs its offset through X^3 for t, n, b, kappa, tau and kappa'.
-  const bool smooth = best->expansion.denominator == 1 && best->expansion.max_exponent >= 3;
+  const bool smooth = best->chart_expansion.denominator == 1 && best->chart_expansion.max_exponent >= 3;
   if (smooth) {
     out.geometry = smooth_branch(curve, *best);
   } else {

@@ -7,6 +7,7 @@
 #include <numeric>
 
 #include "ssimarch/problem/curve_jet.hpp"
+#include "ssimarch/singular/tangent_plane_expansion.hpp"
 
 namespace ssimarch {
 
@@ -95,35 +96,57 @@ int nearest_line(const Classification& kind, const Vec2& p, Vec2* signed_directi
   return best;
 }
 
-// Leading term c X^gamma of the offset w from the line at distance X along it, from the crossing
-// p and the point of the same half-branch at 0.8 X (Newton in w across the line, started from
-// the quadratic prediction 0.64 w, which lies well inside the basin of the same half-branch).
-void offset_term(const LocalJet& h, const Vec2& p, const Vec2& normal, const Vec2& d, HalfBranch* b) {
-  const double X1 = p.dot(d), w1 = p.dot(normal);
-  b->offset_coefficient = w1 / (X1 * X1);
-  b->offset_exponent = 0;
-  if (std::fabs(w1) <= 1e-9 * X1) return;
-  const double X2 = 0.8 * X1;
-  double w2 = 0.64 * w1;
+// The point of the half-branch through the crossing p = X1 d + w1 n at 0.8 X1 along the line (Newton
+// in w across the line, started from the quadratic prediction 0.64 w1, well inside the basin of
+// the same half-branch); w2 = 0 where it fails.
+Vec2 inner_point(const LocalJet& h, const Vec2& p, const Vec2& normal, const Vec2& d) {
+  const double X2 = 0.8 * p.dot(d);
+  double w2 = 0.64 * p.dot(normal);
   for (int it = 0; it < 50; ++it) {
     LocalValue v = evaluate(h, X2 * d + w2 * normal);
     const double dw = v.value / v.gradient.dot(normal);
-    if (!std::isfinite(dw)) return;
+    if (!std::isfinite(dw)) return X2 * d;
     w2 -= dw;
     if (std::fabs(dw) <= 1e-16 * std::fabs(w2)) break;
   }
-  if (w2 == 0 || (w2 > 0) != (w1 > 0)) return;
-  double gamma = std::log(w1 / w2) / std::log(X1 / X2);
+  return X2 * d + w2 * normal;
+}
+
+// Leading term c X^gamma of an offset w from two points (X1, w1), (X2, w2) of a half-branch
+// (X2 = 0.8 X1): gamma = 0 and c = w1 / X1^2 where the offset is below resolution.
+void leading_term(double X1, double w1, double X2, double w2, double* c, double* gamma) {
+  *c = w1 / (X1 * X1);
+  *gamma = 0;
+  if (std::fabs(w1) <= 1e-9 * X1 || w2 == 0 || (w2 > 0) != (w1 > 0)) return;
+  double g = std::log(w1 / w2) / std::log(X1 / X2);
   // Puiseux exponents are rationals p/q with q <= the multiplicity: snap to the nearest one with
   // q <= 4 when the estimate is within its O(X^2) error.
   double best = 1;
   for (int q = 1; q <= 4; ++q) {
-    const double snapped = std::round(gamma * q) / q;
-    if (std::fabs(snapped - gamma) < std::fabs(best - gamma)) best = snapped;
+    const double snapped = std::round(g * q) / q;
+    if (std::fabs(snapped - g) < std::fabs(best - g)) best = snapped;
   }
-  if (std::fabs(best - gamma) <= 0.02) gamma = best;
-  b->offset_exponent = gamma;
-  b->offset_coefficient = w1 / std::pow(X1, gamma);
+  if (std::fabs(best - g) <= 0.02) g = best;
+  *gamma = g;
+  *c = w1 / std::pow(X1, g);
+}
+
+// The leading term of the offset from the line d in the chart, from the crossing p and the
+// point of the same half-branch at 0.8 X (its sign w.r.t. `normal`); `inner` receives that point.
+void offset_term(const LocalJet& h, const Vec2& p, const Vec2& normal, const Vec2& d, HalfBranch* b, Vec2* inner) {
+  const double X1 = p.dot(d), w1 = p.dot(normal);
+  *inner = inner_point(h, p, normal, d);
+  double w2 = inner->dot(normal);
+  if (std::fabs(w1) <= 1e-9 * X1) w2 = 0;
+  leading_term(X1, w1, inner->dot(d), w2, &b->offset_coefficient, &b->offset_exponent);
+}
+
+// The same two points of the half-branch mapped to 3D by the chart's jet, measured over the
+// tangent plane: X along tangent_3d, W along normal_3d (the frame of the reported expansion).
+void tangent_plane_term(const LocalCurve& curve, const Vec2& p, const Vec2& inner, HalfBranch* b) {
+  const Vec3 q1 = curve.point_at(p) - curve.origin, q2 = curve.point_at(inner) - curve.origin;
+  leading_term(q1.dot(b->tangent_3d), q1.dot(b->normal_3d), q2.dot(b->tangent_3d), q2.dot(b->normal_3d),
+               &b->leading_coefficient, &b->leading_exponent);
 }
 
 // How far half-branch B is from continuing A analytically through the point, from their Puiseux
@@ -135,15 +158,15 @@ void offset_term(const LocalJet& h, const Vec2& p, const Vec2& normal, const Vec
 // terms (a tacnode whose branches differ first at X^3, a ramphoid cusp's halves at X^(5/2)).
 double continuation_mismatch(const HalfBranch& A, const HalfBranch& B, double r) {
   const bool same_side = A.tangent.dot(B.tangent) > 0;
-  const int q = std::max(A.expansion.denominator, B.expansion.denominator);
+  const int q = std::max(A.chart_expansion.denominator, B.chart_expansion.denominator);
   auto coefficient = [](const HalfBranch& h, double e) {
-    for (const PuiseuxTerm& t : h.expansion.terms)
+    for (const PuiseuxTerm& t : h.chart_expansion.terms)
       if (std::fabs(t.exponent - e) <= 1e-9) return t.coefficient;
     return 0.0;
   };
   std::vector<double> exponents;
   for (const HalfBranch* h : {&A, &B})
-    for (const PuiseuxTerm& t : h->expansion.terms) exponents.push_back(t.exponent);
+    for (const PuiseuxTerm& t : h->chart_expansion.terms) exponents.push_back(t.exponent);
   double cost = 0;
   for (double e : exponents) {
     const double j = e * q;
@@ -173,7 +196,7 @@ void pair_half_branches(const Classification& kind, double radius, std::vector<H
       if ((*hb)[i].line == static_cast<int>(l)) ((*hb)[i].tangent.dot(d) > 0 ? plus : minus).push_back(static_cast<int>(i));
     auto cost = [&](int a, int b) {
       const HalfBranch &A = (*hb)[static_cast<std::size_t>(a)], &B = (*hb)[static_cast<std::size_t>(b)];
-      if (!A.expansion.terms.empty() || !B.expansion.terms.empty()) return continuation_mismatch(A, B, radius);
+      if (!A.chart_expansion.terms.empty() || !B.chart_expansion.terms.empty()) return continuation_mismatch(A, B, radius);
       const int ga = static_cast<int>(std::lround(A.offset_exponent)), gb = static_cast<int>(std::lround(B.offset_exponent));
       if (ga != gb && A.offset_exponent != 0 && B.offset_exponent != 0) return 1e300;
       const double sign = (ga % 2 == 0) ? 1.0 : -1.0;
@@ -231,15 +254,18 @@ std::vector<HalfBranch> half_branches_at(const Problem& problem, const LocalCurv
     b.line = nearest_line(kind, p, &b.tangent);
     if (b.line < 0) continue;
     const Vec2& d = kind.tangent_cone[static_cast<std::size_t>(b.line)].direction;
-    offset_term(curve.h, p, Vec2(-d[1], d[0]), b.tangent, &b);
+    Vec2 inner;
+    offset_term(curve.h, p, Vec2(-d[1], d[0]), b.tangent, &b, &inner);
     b.tangent_3d = curve.direction_3d(b.tangent);
-    // The expansion in the half-branch's own frame: rot90(tangent) = +-rot90(d).
+    // The expansion in the half-branch's own frame: rot90(tangent) = +-rot90(d); reported over
+    // the tangent plane (tangent_plane_expansion.hpp).
     const auto [num, den] = exponent_fraction(b.offset_exponent);
     const double leading = (b.tangent.dot(d) > 0 ? 1.0 : -1.0) * b.offset_coefficient;
-    b.leading_coefficient = leading;
     const Vec2 through(p.dot(b.tangent), p.dot(Vec2(-b.tangent[1], b.tangent[0])));
-    b.expansion = puiseux_expansion(curve.h, b.tangent, leading, num, den, 6, &through);
+    b.chart_expansion = puiseux_expansion(curve.h, b.tangent, leading, num, den, 6, &through);
     b.normal_3d = curve.direction_3d(Vec2(-b.tangent[1], b.tangent[0]));
+    b.expansion = tangent_plane_expansion(curve, b.tangent, b.chart_expansion);
+    tangent_plane_term(curve, p, inner, &b);
     if (curve.lifted()) {
       // A degenerate parametrisation (local_curve.hpp): the half-branch's parameters along it by a
       // chord, and none where the implicit form's branch leaves the parametric patch (the other

@@ -5,98 +5,20 @@
 
 #include "ssimarch/problem/closest_point.hpp"
 #include "ssimarch/problem/singular_tolerances.hpp"
+#include "collapsed_row_chart.hpp"
+#include "local_charts.hpp"
 
 namespace ssimarch {
 
 namespace {
 
-using J1 = Jet<2, 1>;
-using J3 = Jet<3, 1>;
+using namespace local_charts;
 
-LocalJet dot_jet(const Vec3T<LocalJet>& a, const Vec3& e) { return a.x * e.x() + a.y * e.y() + a.z * e.z(); }
-
-struct FirstOrder {
-  Vec3 p, du, dv;
-};
-FirstOrder parametric_first_order(const Surface& s, double u, double v) {
-  Vec3T<J1> f = s.point(J1::variable(0, u), J1::variable(1, v));
-  FirstOrder r;
-  for (int i = 0; i < 3; ++i) r.p[i] = f[i].value(), r.du[i] = f[i].d(0), r.dv[i] = f[i].d(1);
-  return r;
-}
-Vec3 implicit_gradient(const Surface& s, const Vec3& p, double* value) {
-  J3 f = s.value(Vec3T<J3>(J3::variable(0, p.x()), J3::variable(1, p.y()), J3::variable(2, p.z())));
-  if (value) *value = f.value();
-  return {f.d(0), f.d(1), f.d(2)};
-}
-
-// |Hess f(p)| (Frobenius), the scale of f where its gradient vanishes.
-double implicit_hessian_norm(const Surface& s, const Vec3& p) {
-  using J32 = Jet<3, 2>;
-  const J32 f = s.value(Vec3T<J32>(J32::variable(0, p.x()), J32::variable(1, p.y()), J32::variable(2, p.z())));
-  double n2 = 0;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      J32::MultiIndex a{0, 0, 0};
-      ++a[static_cast<std::size_t>(i)];
-      ++a[static_cast<std::size_t>(j)];
-      n2 += f.derivative(a) * f.derivative(a);
-    }
-  return std::sqrt(n2);
-}
-
-// How far a parametric chart is from degenerate: |F_u x F_v| / (|F_u|^2 + |F_v|^2), in [0, 1/2].
-double chart_condition(const Surface& s, double u, double v);
-
-// Orthonormal tangent frame (e1, e2) with e1 x e2 = n, e1 along `hint` where it is not parallel to n.
-void frame_from_normal(const Vec3& n, const Vec3& hint, Vec3* e1, Vec3* e2) {
-  Vec3 a = hint - hint.dot(n) * n;
-  if (a.norm() <= 1e-8 * hint.norm() || hint.norm() == 0) {
-    int k = 0;
-    n.cwiseAbs().minCoeff(&k);
-    a = Vec3::Unit(k).cross(n);
-  }
-  *e1 = a.normalized();
-  *e2 = n.cross(*e1);
-}
-
-double chart_condition(const Surface& s, double u, double v) {
-  const FirstOrder f = parametric_first_order(s, u, v);
-  const double d = f.du.squaredNorm() + f.dv.squaredNorm();
-  return d > 0 ? f.du.cross(f.dv).norm() / d : 0.0;
-}
-
-// The unit dividing an implicit surface's value into model units over a parametric chart: its
-// gradient's length, floored where the surface is singular (a cone's apex) by
-// kSingularSurfaceGradientRatio times |Hess g| and the problem's scale (same zero set).
-double implicit_unit(const Surface& g, const Vec3& p, double scale) {
-  const double grad = implicit_gradient(g, p, nullptr).norm();
-  if (grad >= kSingularSurfaceGradientRatio * scale * implicit_hessian_norm(g, p)) return grad;
-  return std::max(grad, kSingularSurfaceGradientRatio * scale * implicit_hessian_norm(g, p));
-}
 
 bool finite(const LocalCurve& c) {
   if (!is_finite(c.h)) return false;
   for (const auto& u : c.unknowns)
     if (!is_finite(u)) return false;
-  return true;
-}
-
-// The first surface F over its tangent plane: (u, v) linear in (s, t).
-bool parametric_chart(const Surface& F, double u0, double v0, LocalCurve* c, Vec3T<LocalJet>* Fj) {
-  FirstOrder f = parametric_first_order(F, u0, v0);
-  Vec3 n = f.du.cross(f.dv);
-  if (!(n.norm() > 0) || !n.allFinite()) return false;
-  c->normal = n.normalized();
-  c->origin = f.p;
-  frame_from_normal(c->normal, f.du, &c->e1, &c->e2);
-  Eigen::Matrix2d M;
-  M << c->e1.dot(f.du), c->e1.dot(f.dv), c->e2.dot(f.du), c->e2.dot(f.dv);
-  const Eigen::Matrix2d Mi = M.inverse();
-  const LocalJet S = LocalJet::variable(0, 0.0), T = LocalJet::variable(1, 0.0);
-  LocalJet U = u0 + Mi(0, 0) * S + Mi(0, 1) * T, V = v0 + Mi(1, 0) * S + Mi(1, 1) * T;
-  *Fj = F.point(U, V);
-  c->unknowns = {U, V};
   return true;
 }
 
@@ -155,59 +77,22 @@ void parametric_parametric(const Problem& pr, const VecX& x, LocalCurve* c) {
   c->status = LocalCurveStatus::kOk;
 }
 
-// The surface `chart` over its tangent plane at the point of it nearest x (Newton along its
-// gradient), h = the surface `other` over that chart.
+// The surface `chart` over its tangent plane at the point of it nearest x, h = the surface
+// `other` over that chart.
 void implicit_chart(const Surface& chart, const Surface& other, const VecX& x, LocalCurve* c) {
-  Vec3 P0(x[0], x[1], x[2]);
-  double f = 0;
-  Vec3 grad;
-  for (int it = 0; it < 60; ++it) {  // onto f = 0 along grad f
-    grad = implicit_gradient(chart, P0, &f);
-    if (!(grad.squaredNorm() > 0)) return;
-    Vec3 step = grad * (f / grad.squaredNorm());
-    P0 -= step;
-    if (step.norm() <= 1e-16 * (1 + P0.norm())) break;
-  }
-  grad = implicit_gradient(chart, P0, &f);
-  if (!(grad.norm() > 0)) return;
-  c->origin = P0;
-  c->normal = grad.normalized();
-  frame_from_normal(c->normal, Vec3::UnitX(), &c->e1, &c->e2);
-  const LocalJet S = LocalJet::variable(0, 0.0), T = LocalJet::variable(1, 0.0);
-  LocalJet W(0.0);
   Vec3T<LocalJet> Pj;
-  for (int it = 0; it <= kLocalOrder + 1; ++it) {
-    Pj = from_frame(P0, c->e1, c->e2, c->normal, S, T, W);
-    W -= chart.value(Pj) / grad.norm();
-  }
-  Pj = from_frame(P0, c->e1, c->e2, c->normal, S, T, W);
+  double grad = 0;
+  if (!implicit_graph(chart, Vec3(x[0], x[1], x[2]), c, &Pj, &grad)) return;
+  const Vec3 P0 = c->origin;
   // h in model units: `other` divided by its gradient's length, or by the chart's where `other`
   // is singular at P0 (its gradient vanishes there: a cone's apex).
   const double gg = implicit_gradient(other, P0, nullptr).norm();
-  const double unit = gg >= kSingularSurfaceGradientRatio * grad.norm() ? gg : grad.norm();
+  const double unit = gg >= kSingularSurfaceGradientRatio * grad ? gg : grad;
   c->h = other.value(Pj) / unit;
   c->unknowns = {Pj.x, Pj.y, Pj.z};
   c->point = {Pj.x, Pj.y, Pj.z};
   c->base = P0;
   c->status = LocalCurveStatus::kOk;
-}
-
-// The nearest parameters of a degenerate parametric surface of the pair, replacing the constant
-// jets of its unknowns (first, first + 1) at a point of the local curve: near a cone's apex or a
-// sphere's pole the parameters are not smooth functions of the point, so they are not jets.
-std::function<VecX(const Vec3&, VecX)> lift_parameters(const Problem& pr, bool first, bool second) {
-  auto F = first ? std::make_shared<const Surface>(pr.first()) : nullptr;
-  auto G = second ? std::make_shared<const Surface>(pr.second()) : nullptr;
-  return [F, G](const Vec3& P, VecX x) {
-    int slot = 0;
-    for (const auto& S : {F, G}) {
-      if (S) {
-        if (const auto uv = closest_parameters(*S, P)) x.segment<2>(2 * slot) = *uv;
-      }
-      ++slot;
-    }
-    return x;
-  };
 }
 
 // A parametric chart of the pair degenerate at x (a cone's apex, a sphere's pole: F_u x F_v = 0,
@@ -297,10 +182,24 @@ LocalCurve local_curve(const Problem& problem, const VecX& x) {
   LocalCurve c;
   c.kind = problem.kind();
   c.base = x;
-  // A degenerate chart of a surface without an implicit form (an expression or a patch) stays:
-  // it is still a chart away from the degenerate point itself.
-  const bool d0 = problem.kind() != PairKind::kImplicitImplicit && problem.first().is_implicit() && degenerate_at(problem, x, 0);
-  const bool d1 = problem.kind() == PairKind::kParametricParametric && problem.second().is_implicit() && degenerate_at(problem, x, 1);
+  const bool pp = problem.kind() == PairKind::kParametricParametric;
+  const bool deg0 = problem.kind() != PairKind::kImplicitImplicit && degenerate_at(problem, x, 0);
+  const bool deg1 = pp && degenerate_at(problem, x, 1);
+  // A degenerate surface without an implicit form (an expression or a patch): on a collapsed row
+  // of it that lies on the other surface, the chart of collapsed_row_chart.hpp; elsewhere its own
+  // chart stays (still a chart away from the degenerate point itself).
+  if (deg0 != deg1 && !(deg0 ? problem.first() : problem.second()).is_implicit()) {
+    c = collapsed_row_curve(problem, x, deg0 ? 0 : 1);
+    if (c.status == LocalCurveStatus::kOk) {
+      if (!finite(c)) c.status = LocalCurveStatus::kNonFinite;
+      return c;
+    }
+    c = LocalCurve{};
+    c.kind = problem.kind();
+    c.base = x;
+  }
+  const bool d0 = deg0 && problem.first().is_implicit();
+  const bool d1 = deg1 && problem.second().is_implicit();
   if (d0 || d1) {
     degenerate_chart(problem, x, d0, d1, &c);
     if (c.status == LocalCurveStatus::kOk && !finite(c)) c.status = LocalCurveStatus::kNonFinite;

@@ -76,7 +76,7 @@ SingularPointReport make_report(const SingularLocation& s, const Classification&
   r.multiplicity = kind.multiplicity;
   r.milnor = kind.milnor;
   for (const HalfBranch& b : branches) {
-    SingularPointReport::HalfBranch h{b.tangent_3d, b.param_tangent, b.leading_coefficient, b.offset_exponent, b.continuation, {}, b.normal_3d};
+    SingularPointReport::HalfBranch h{b.tangent_3d, b.param_tangent, b.leading_coefficient, b.leading_exponent, b.continuation, {}, b.normal_3d};
     for (const PuiseuxTerm& t : b.expansion.terms) h.expansion.push_back({t.exponent, t.coefficient});
     r.half_branches.push_back(std::move(h));
   }

@@ -76,10 +76,12 @@ void add_contact_curve(const Tracer& tracer, const ContactPoint& c, std::vector<
   for (const SingularLocation& s : t.crossings) registry->mark(registry->add(s), -1, index);
 }
 
-// Inserts the node's point into the segment of curve ci passing within radius of it.
+// Inserts the node's point into each passage of curve ci within radius of it (a curve through a
+// node passes it once per branch: Viviani's curve twice), marking the half-branches along it.
 bool insert_into(SingularRegistry* registry, int n, int ci, TracedCurve* c, double radius) {
   const SingularNode& node = registry->node(n);
   const Vec3 s = node.location.point;
+  bool found = false;
   for (std::size_t i = 0; i + 1 < c->points.size(); ++i) {
     const Vec3 a = c->points[i].p, seg = c->points[i + 1].p - a;
     const double L2 = seg.squaredNorm();
@@ -95,17 +97,17 @@ bool insert_into(SingularRegistry* registry, int n, int ci, TracedCurve* c, doub
       if (cosine > 0) t = node.branches[k].tangent_3d;
     }
     registry->mark(n, -1, ci);
-    if ((c->points[i].p - s).norm() > 0 && (c->points[i + 1].p - s).norm() > 0)
+    found = true;
+    if ((c->points[i].p - s).norm() > 0 && (c->points[i + 1].p - s).norm() > 0) {
       c->points.insert(c->points.begin() + static_cast<std::ptrdiff_t>(i) + 1, CurvePoint{node.location.x, s, t});
-    return true;
+      ++i;  // past the inserted point: the next segment starts at the node
+    } else {
+      ++i;  // the segment after the node's own point is the same passage
+    }
   }
-  return false;
+  return found;
 }
 
-// A singular point a hunt found: an isolated point is reported; one with real branches that no
-// march stopped at (a trace stepped over it, e.g. a node within its first step) becomes a node of
-// the network: attach_crossings makes it a point of the curves passing it, the rest of its
-// half-branches are traced from it.
 void take_found(const Problem& P, const SingularLocation& s, double merge, double radius, SingularRegistry* registry,
                 const std::vector<TracedCurve>& curves, std::vector<SingularPointReport>* isolated) {
   if (near_node(s.point, *registry, merge) || near_contact_curve(s.point, curves, radius)) return;

@@ -198,28 +198,22 @@ def test_topology_of_the_figure_eight(viviani):
 
 def test_singular_expansions_follow_the_traced_curve(viviani):
     """Each half-branch at the node: the Puiseux expansion W(X) = sum c X^e (singular/puiseux.hpp)
-    describes the local curve in orthonormal coordinates (s, t) of the first surface's tangent
-    plane, in which that surface's parameters are linear (singular/local_curve.hpp): a parameter
-    offset dq maps to the tangent-plane vector Fu dq_u + Fv dq_v, whose components along the
-    half-branch's tangent and normal are X and W. The curve's own points must follow it."""
-    scene = json.loads(viviani.read_text())
+    describes the curve over the common tangent plane at the node, the same for every pair kind
+    (singular/tangent_plane_expansion.hpp): X = (P - P0) . tangent, W = (P - P0) . normal for the
+    curve's 3D points P. The curve's own points must follow it; on Viviani's node
+    W = +-(X^3/32 + X^5/256)."""
     run = ssimarch.trace(viviani, only="viviani", step_length=0.01)["viviani"]
-    assert run.unknowns == ["u", "v"]  # the parameters of the cylinder, the parametric (first) surface
-    cyl = ssimarch.Surface(scene["surfaces"]["cyl"], scene["constants"])
     (node,) = [p for p in run.singular_points if p["type"] == "node"]
-    q0 = np.array(node["params"])
-    d = cyl.derivatives(q0[0], q0[1], order=1)
-    dq = np.vstack([c.params for c in run.curves]) - q0
-    w3 = dq[:, :1] * d[(1, 0)] + dq[:, 1:] * d[(0, 1)]
+    w3 = np.vstack([c.xyz for c in run.curves]) - np.array(node["xyz"])
     assert len(node["half_branches"]) == 4
     for hb in node["half_branches"]:
         t, n = np.array(hb["tangent"]), np.array(hb["expansion"]["normal"])
         terms = hb["expansion"]["terms"]
         assert terms[0]["exponent"] == hb["expansion"]["exponent"]
-        # The leading term twice: measured on the local curve, and refined by the Newton-Puiseux step.
-        # Only magnitudes: the measured one has the opposite sign on the half-branches leaving with
-        # z < 0 (the points follow the terms; reported to the singular module's owners).
-        assert abs(terms[0]["coefficient"]) == pytest.approx(abs(hb["expansion"]["coefficient"]), rel=1e-4)
+        # The leading term twice: measured on the curve at 1e-2 from the node (O(X^2) relative
+        # here, the branch being odd in X), and refined by the Newton-Puiseux step.
+        assert terms[0]["coefficient"] == pytest.approx(hb["expansion"]["coefficient"], rel=1e-4)
+        assert abs(terms[0]["coefficient"]) == pytest.approx(1 / 32, rel=1e-12)
         X, W = w3 @ t, w3 @ n
         mine = (X > 0.02) & (X < 0.15) & (np.abs(W) < 0.5 * X)
         assert mine.sum() >= 5, hb

@@ -7,7 +7,8 @@
 //  * bug25950 (as the script states the locus): a sphere and a spheroid touching along the great
 //    circle x = 0, which passes both poles of the sphere's parametrisation: one closed curve of
 //    tangential contact of length 6 pi;
-//  * a cone's apex on the curve (implicit and parametric cone): the node at the apex, one closed curve;
+//  * a cone's apex on the curve (implicit, parametric, expression and B-spline cone): the node at the
+//    apex, one closed curve;
 //  * bug21494_2: the cone's apex on the sphere's pole, an isolated point, in both forms.
 #include <gtest/gtest.h>
 
@@ -83,18 +84,25 @@ TEST(OcctCases, Bug25950ContactCircleThroughBothPolesIsOneClosedCurve) {
 
 // Every form of the cone through its apex: implicit; parametric (the apex is the row v = 0 inside
 // its parameter rectangle, where F_u x F_v = 0); implicit as the second surface of a
-// parametric-implicit pair (its gradient vanishes at the apex). The apex is a node of the curve
-// in 3D whatever the parametrisation: two branches with tangents (0, -1, -+1)/sqrt2 crossing
-// straight, each half-branch once, the apex an exact point of the one closed curve.
+// parametric-implicit pair (its gradient vanishes at the apex); an expression and an exact
+// rational B-spline without implicit form (the collapsed row's chart, docs/math/
+// singular_local_curve.md §7), against the implicit cylinder and the B-spline against the
+// parametric one. The apex is a node of the curve in 3D whatever the parametrisation: two
+// branches with tangents (0, -1, -+1)/sqrt2 crossing straight, each half-branch once, the apex an
+// exact point of the one closed curve, whose length is the implicit form's to 1e-8.
 TEST(OcctCases, CurveThroughAConesApexHasItsNodeThereInEveryForm) {
   // z = 2 cos(t/2) on the cylinder (1 + cos t, sin t, z): length 8 sqrt2 E(1/2) (Viviani's).
   const double length = 15.2807911561;
   const Vec3 t1 = Vec3(0, -1, -1).normalized(), t2 = Vec3(0, -1, 1).normalized();
-  for (const char* name : {"apex_implicit", "apex_cone_parametric", "apex_cylinder_parametric"}) {
+  double implicit_length = 0;
+  for (const char* name : {"apex_implicit", "apex_cone_parametric", "apex_cylinder_parametric", "apex_cone_expression",
+                           "apex_cone_spline", "apex_cone_spline_pp"}) {
     const TraceResult r = trace_example("cone_apex_cylinder.json", name);
     ASSERT_EQ(r.curves.size(), 1u) << name;
     EXPECT_TRUE(r.curves[0].closed) << name;
     EXPECT_NEAR(r.curves[0].length, length, 1e-6 * length) << name;
+    if (implicit_length == 0) implicit_length = r.curves[0].length;
+    EXPECT_NEAR(r.curves[0].length, implicit_length, 1e-8 * length) << name;
     ASSERT_EQ(r.singular_points.size(), 1u) << name;
     const SingularPointReport& s = r.singular_points[0];
     EXPECT_EQ(s.type, "node") << name;

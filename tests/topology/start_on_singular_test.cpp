@@ -99,17 +99,17 @@ void expect_viviani_node(const std::vector<SingularPointReport>& points, const s
     EXPECT_NEAR(b.expansion[0].exponent, 3.0, 1e-12) << label;
     EXPECT_NEAR(b.expansion[0].coefficient, c_ref, 2e-5 * std::fabs(c_ref)) << label;
     EXPECT_NEAR(b.exponent, 3.0, 1e-12) << label;
+    // The whole series over the tangent plane: W = +-(X^3/32 + X^5/256 + 11 X^7/16384 + ...)
+    // (sympy: X and W from P(s), X(s) reverted), no X^4 or X^6 term.
+    ASSERT_EQ(b.expansion.size(), 2u) << label;
+    EXPECT_NEAR(b.expansion[1].exponent, 5.0, 1e-12) << label;
+    EXPECT_NEAR(b.expansion[1].coefficient, (c_ref > 0 ? 1.0 : -1.0) / 256, 1e-9) << label;
     // The measured leading term (at the classifier's circle, O(1e-2) relative) in the same frame.
     EXPECT_NEAR(b.coefficient, b.expansion[0].coefficient, 0.05 * std::fabs(c_ref)) << label;
   }
 }
 
 TEST(StartOnSingular, VivianiNodeLeadingTermsAgreeWithTheClosedForm) {
-  GTEST_SKIP() << "open: the general classifier's parametric charts are linear in the parameters, so a "
-                  "parametric pair measures the expansion over the parametrisation (viviani.json: -+1/96, the "
-                  "cylinder's angle a with x = sin a); the closed form and implicit pairs measure it over the "
-                  "tangent plane (+-1/32, this reference). A projected chart (sing branch) fixes it but "
-                  "breaks bug25950_param's contact march near the sphere's poles";
   // The scene (parametric cylinder, implicit sphere: the general classifier), with the closed form
   // off and on (its own start point keeps the general path; without one the pair is traced).
   const Scene scene = load_scene(std::string(SSIMARCH_SOURCE_DIR) + "/examples/viviani.json");

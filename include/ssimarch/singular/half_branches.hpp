@@ -40,14 +40,23 @@ struct HalfBranch {
   Vec3 tangent_3d = Vec3::Zero();     // unit 3D tangent at the singular point
   VecX param_tangent;                 // d(unknowns) along the tangent per unit length (first order)
   int line = -1;                      // index of its line in Classification::tangent_cone
+  // The leading term of the offset in the chart (s, t) of the local curve, measured at the circle
+  // (offset_term in half_branches.cpp): internal (pairing, arriving half-branches), since the
+  // chart of a parametric surface is the tangent plane only to first order.
   double offset_coefficient = 0;      // c of w = c X^gamma (sign w.r.t. the line's normal rot90(d))
   double offset_exponent = 0;         // gamma; 0 where the offset is below resolution (straight)
-  // The same leading coefficient c in the half-branch's own frame: the offset along normal_3d
-  // (rot90(tangent) = sign(tangent . d) rot90(d)), the frame of `expansion`, whose first term is
-  // c refined (the reports and JSON give this one).
+  // The Puiseux expansion in the chart, in the half-branch's frame (X along the tangent d, W along
+  // rot90(d)), up to exponent 6 (singular/puiseux.hpp): pairing by expansions and the geometry of
+  // the branch lifted by the chart's 3D jet (pipeline/branch_geometry.cpp) use this one.
+  PuiseuxExpansion chart_expansion;
+  // Reported (JSON `expansion`): the same half-branch over the common tangent plane, in every pair
+  // kind alike (singular/tangent_plane_expansion.hpp; docs/math/singular_local_curve.md §4):
+  // X = (P - P0) . tangent_3d >= 0, W = (P - P0) . normal_3d, normal_3d = N x tangent_3d.
+  // `leading_coefficient` X^`leading_exponent` is the leading term measured on 3D points of the
+  // half-branch at the circle (O(epsilon) relative; exponent 0: straight within resolution),
+  // `expansion` the series W(X) = sum b_j X^(j/q) to exponent 6, whose first term is it refined.
   double leading_coefficient = 0;
-  // The Puiseux expansion W(X) = sum b_j X^(j/q) of the offset along normal_3d (= rot90(tangent)
-  // in (s, t)), X >= 0 along the tangent, up to exponent 6 (singular/puiseux.hpp).
+  double leading_exponent = 0;
   PuiseuxExpansion expansion;
   Vec3 normal_3d = Vec3::Zero();
   int branch = -1;                    // index of the real branch it belongs to

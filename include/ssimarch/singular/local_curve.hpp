@@ -45,7 +45,7 @@ struct LocalCurve {
   std::array<LocalJet, 3> point;    // the 3D point P(s, t) of x(s, t) (on the chart's surface)
   // Set where a parametric surface of the pair is degenerate at the base point (a cone's apex, a
   // sphere's pole: its parameters are not coordinates of the surface there) and the local curve
-  // was built over implicit forms instead: the unknowns of that surface are constant jets (the
+  // was built over another chart instead (§6, §7): the unknowns of that surface are constant jets (the
   // base), and `lift` replaces them at a 3D point P(s, t) by the surface's nearest parameters.
   std::function<VecX(const Vec3& point, VecX unknowns)> lift;
 
@@ -66,8 +66,10 @@ struct LocalCurve {
 /// x is first moved onto f = 0 along grad f. Where a parametric chart of the pair is degenerate
 /// at x (problem/singular_tolerances.hpp kDegenerateChartRatio) the curve is built over the
 /// other surface's regular chart, or over implicit forms, with that surface's implicit form as
-/// the equation (docs/math/singular_local_curve.md §6); status kDegenerate when the degenerate
-/// surface has no implicit form. Never throws for numeric trouble: see status.
+/// the equation (docs/math/singular_local_curve.md §6); a degenerate surface without an implicit
+/// form, at a collapsed row of its rectangle lying on the other surface, gets the other surface's
+/// chart with h the product of the branches' equations (§7), and otherwise keeps its own chart.
+/// Never throws for numeric trouble: see status.
 LocalCurve local_curve(const Problem& problem, const VecX& x);
 
 }  // namespace ssimarch
