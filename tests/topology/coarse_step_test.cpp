@@ -17,6 +17,9 @@
 
 #include "ssimarch/io/scene.hpp"
 #include "ssimarch/pipeline/trace_job.hpp"
+#include "ssimarch/problem/singular_tolerances.hpp"
+#include "ssimarch/topology/start_points.hpp"
+#include "ssimarch/topology/start_tolerances.hpp"
 
 namespace ssimarch {
 namespace {
@@ -101,6 +104,36 @@ std::string case_name(const ::testing::TestParamInfo<CoarseCase>& c) {
 }
 
 INSTANTIATE_TEST_SUITE_P(SingularScenes, CoarseStep, ::testing::ValuesIn(cases()), case_name);
+
+// Whether a start is on a singular point is decided in model units (start_tolerances.hpp), not
+// by the rank ratio alone nor by the step: on the four-petal rose r = |sin 2 phi| (Ex. 13, curve
+// points (r cos phi, r sin phi) with sin 2 phi = r), a point 0.03 from the quadruple point has a
+// rank ratio below kSuspectSingularRankRatio (it falls like d^3) but is a regular start at the
+// coarse step; one 1e-7 from it (inside the radius, 0.0245 here) is moved off it.
+TEST(CoarseStep, StartNearTheQuadruplePointIsSingularOnlyWithinTheRadius) {
+  const Scene scene = load_scene(std::filesystem::path(SSIMARCH_SOURCE_DIR) / "examples" / "thesis_ex13_four_petals.json");
+  const IntersectionSpec& spec = scene.intersections.at(0);
+  const IntersectionRun run = run_intersection(scene, spec);
+  TraceOptions o = spec.options.trace;
+  o.step = StepRule::kConstant;
+  o.step_length = run.problem.scale() / 25;
+  const Tracer tracer(run.problem, o);
+  const double radius = singular_start_radius(o.tolerance, run.problem.scale());
+  auto curve_point = [](double r) {
+    const double phi = 0.5 * std::asin(r);
+    VecX x(2);
+    x << r * std::cos(phi), r * std::sin(phi);
+    return x;
+  };
+  const VecX far = curve_point(0.03), near = curve_point(1e-7);
+  ASSERT_GT(0.03, radius);
+  ASSERT_LT(Problem::rank_ratio(run.problem.linearize(far)), kSuspectSingularRankRatio);
+  std::vector<std::string> warnings;
+  EXPECT_EQ((regular_start(tracer, far, &warnings) - far).norm(), 0.0);
+  EXPECT_TRUE(warnings.empty());
+  EXPECT_GT((regular_start(tracer, near, &warnings) - near).norm(), 0.0);
+  EXPECT_EQ(warnings.size(), 1u);
+}
 
 }  // namespace
 }  // namespace ssimarch
