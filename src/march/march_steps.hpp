@@ -21,6 +21,17 @@ bool chord_is_plausible(const CurvePoint& cur, const Vec3& p1, const Vec3& predi
 /// The guard on the tangents at both ends of a step: they turn by <= max_turn_angle.
 bool turn_is_plausible(const Vec3& t0, const Vec3& t1, const TraceOptions& o);
 
+/// What the middle of a step shows (kMidpointDeviationRatio): the cubic Hermite interpolant
+/// of the ends x0, x1 (unknowns) with unit tangents dx0, dx1 (derivatives of the unknowns along
+/// the 3D arc, scaled by the 3D chord) at its middle; `deviation` its first-order distance from
+/// both surfaces (model units), `rank_ratio` Problem::rank_ratio there.
+struct MidpointProbe {
+  double deviation = 0;
+  double rank_ratio = 1;
+};
+MidpointProbe probe_midpoint(const Problem& problem, const UnknownVec& x0, const UnknownVec& dx0, const UnknownVec& x1,
+                             const UnknownVec& dx1, double chord, TraceStats* stats);
+
 /// The event where no step >= min_step could be taken after `cur` (jet rank ratio `rank_ratio`):
 /// kSingularSuspected when J_H or the normals are nearly degenerate there, else kStepUnderflow.
 Event stuck_event(const Problem& problem, const CurvePoint& cur, double rank_ratio, double min_step, TraceStats* stats);

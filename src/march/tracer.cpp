@@ -13,6 +13,7 @@
 #include "ssimarch/march/pole_passage.hpp"
 #include "ssimarch/march/predictor.hpp"
 #include "ssimarch/march/step_control.hpp"
+#include "ssimarch/march/step_tolerances.hpp"
 #include "ssimarch/problem/singular_tolerances.hpp"
 
 namespace ssimarch {
@@ -127,6 +128,7 @@ struct Marcher {
     Vec3 p1 = Vec3::Zero();
     DynamicCurveJet next;
     StepReport report;
+    internal::MidpointProbe middle;
   };
 
   DynamicCurveJet jet_at(const UnknownVec& x, const Vec3* hint) {
@@ -158,6 +160,11 @@ struct Marcher {
     if (!internal::chord_is_plausible(cur, a.p1, a.prediction.point, arc, o)) return a;
     a.next = jet_at(a.corrected.x, &cur.t);
     if (a.next.status != CurveJetStatus::kOk || !internal::turn_is_plausible(cur.t, a.next.tangent(), o)) return a;
+    // The step's middle: off the curve when the step left its arc (kMidpointDeviationRatio);
+    // its rank ratio feeds the watch for singular points the chord passes (watch_event).
+    const double chord = (a.p1 - cur.p).norm();
+    a.middle = internal::probe_midpoint(P, cur.x, state.here.x[1], a.corrected.x, a.next.x[1], chord, stats);
+    if (!(a.middle.deviation <= kMidpointDeviationRatio * chord)) return a;
     a.report = make_step_report(cur.p, cur.t, a.p1, a.next.tangent(), a.prediction.point, arc, a.corrected.iterations);
     a.measured = true;
     a.ok = std::visit([&](const auto& s) { return s.acceptable(a.report); }, rule);
@@ -230,10 +237,14 @@ Event budget_event(BudgetBound bound, const std::string& message) {
 
 // The watch on a step from cur (jet `here`) to the attempt's point (MarchLimits::watch_crossings):
 // kSingularSuspected with Event::beyond = the attempt's point when the tangent orientation reverses
-// (a crossing of branches passed) or the rank ratio of J_H has a local minimum below
-// kWatchRankRatio at cur (a tacnode passed near); kBudget (no event) otherwise.
-Event watch_event(const CurvePoint& cur, double previous_rank, const DynamicCurveJet& here, const Marcher::Attempt& a) {
-  const double r1 = here.rank_ratio, r2 = a.next.rank_ratio;
+// (a crossing of branches passed), the rank ratio of J_H has a local minimum below
+// kWatchRankRatio at cur (a tacnode passed near), or it dips in the middle of the step below
+// kRankDipRatio times its smaller end value (a singular point the chord passes without a
+// reversal: a triple point along a branch, or a long step past a quadruple point); kBudget (no
+// event) otherwise.
+Event watch_event(const CurvePoint& cur, double previous_rank, double previous_middle, const DynamicCurveJet& here,
+                  const Marcher::Attempt& a) {
+  const double r1 = here.rank_ratio, r2 = a.next.rank_ratio, rm = a.middle.rank_ratio;
   if (a.next.orientation != here.orientation)
     return Event{EventKind::kSingularSuspected, BudgetBound::kNone,
                  "the tangent orientation reverses between " + describe_point(cur.p) + " and " + describe_point(a.p1) +
@@ -242,6 +253,19 @@ Event watch_event(const CurvePoint& cur, double previous_rank, const DynamicCurv
   if (r1 < kWatchRankRatio && r1 < previous_rank && r1 <= r2)
     return Event{EventKind::kSingularSuspected, BudgetBound::kNone,
                  "the rank ratio of the Jacobian has a local minimum " + std::to_string(r1) + " at " + describe_point(cur.p),
+                 a.corrected.x};
+  if (rm < kRankDipRatio * std::min(r1, r2))
+    return Event{EventKind::kSingularSuspected, BudgetBound::kNone,
+                 "the rank ratio of the Jacobian dips to " + std::to_string(rm) + " between " + describe_point(cur.p) +
+                     " and " + describe_point(a.p1) + ": a singular point lies near the chord",
+                 a.corrected.x};
+  // The same dip with cur at its bottom, against the middles of the steps on either side: the
+  // march came within a fraction of a step of a singular point that neither chord passes by
+  // its middle (a long step ending next to the triple point of the three-petal rose).
+  if (r1 < kRankDipRatio * std::min(previous_middle, rm))
+    return Event{EventKind::kSingularSuspected, BudgetBound::kNone,
+                 "the rank ratio of the Jacobian dips to " + std::to_string(r1) + " at " + describe_point(cur.p) +
+                     " between the middles of its steps: a singular point lies next to it",
                  a.corrected.x};
   return Event{};
 }
@@ -326,6 +350,7 @@ MarchResult Tracer::march_until_event(const CurvePoint& start_point, Direction d
   }
   bool watch = limits.watch_crossings && !limits.skip_first_watch;
   double previous_rank = 0;  // rank ratio at the point before m.cur (0: none, no minimum at the start)
+  double previous_middle = 0;  // rank ratio at the middle of the step that reached m.cur (0: none)
   const std::vector<Pole> poles = problem_poles(problem_);
   auto may_close = [&] { return limits.detect_closure && r.points.size() >= first_closing; };
   while (true) {
@@ -369,7 +394,7 @@ MarchResult Tracer::march_until_event(const CurvePoint& start_point, Direction d
     // again (issue 11: every branch exactly once). The caller closes the loop at the located
     // point when the target lies before it (topology/through_singular.cpp, closes_before).
     if (watch) {
-      Event e = watch_event(m.cur, previous_rank, m.state.here, a);
+      Event e = watch_event(m.cur, previous_rank, previous_middle, m.state.here, a);
       if (e.kind == EventKind::kSingularSuspected) {
         r.event = std::move(e);
         return r;
@@ -386,6 +411,7 @@ MarchResult Tracer::march_until_event(const CurvePoint& start_point, Direction d
     }
     watch = limits.watch_crossings;
     previous_rank = m.state.here.rank_ratio;
+    previous_middle = a.middle.rank_ratio;
     m.accept(a, &r);
     if (limits.traced && near_traced_curve(m.cur.p, *limits.traced, limits.traced_radius)) {
       r.event = Event{EventKind::kReachedTracedCurve, BudgetBound::kNone,

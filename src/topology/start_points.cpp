@@ -9,6 +9,8 @@
 #include "ssimarch/problem/closest_point.hpp"
 #include "ssimarch/problem/gauss_newton.hpp"
 #include "ssimarch/problem/singular_tolerances.hpp"
+#include "ssimarch/singular/locate.hpp"
+#include "ssimarch/topology/start_tolerances.hpp"
 #include "ssimarch/topology/nearest_point_tree.hpp"
 
 namespace ssimarch {
@@ -144,6 +146,12 @@ VecX regular_start(const Tracer& tracer, const VecX& x, std::vector<std::string>
     if (auto y = leave_pole(P, *pole, x, 0.5 * tracer.options().step_length, co))
       return y->x;
   if (!(Problem::rank_ratio(P.linearize(x)) < kSuspectSingularRankRatio)) return x;
+  // A low rank ratio says "near a singular point" only up to the point's order (it falls like
+  // d^3 at a quadruple point); the start is on one only within singular_start_radius of it.
+  const SingularLocation s = locate_singular_point(P, x);
+  if (s.status == LocateStatus::kConverged &&
+      (s.point - P.point(x)).norm() > singular_start_radius(tracer.options().tolerance, P.scale()))
+    return x;
   auto y = regular_point_near(P, x, 0.5 * tracer.options().step_length, tracer.options().tolerance);
   if (!y) return x;
   warnings->push_back("start point " + describe_point(P.point(x)) + " is a singular point of the curve; tracing from the regular point " +

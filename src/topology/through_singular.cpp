@@ -34,12 +34,17 @@ void trim_beyond(const Vec3& s, std::size_t begin, BranchMarch* out) {
 bool locate_near(const Tracer& tracer, const CurvePoint& last, const Event& event, SingularLocation* loc) {
   const Problem& P = tracer.problem();
   const bool crossing = event.beyond.size() > 0;
-  const UnknownVec guess = crossing ? UnknownVec(last.x + 0.5 * P.difference(last.x, event.beyond)) : last.x;
-  *loc = locate_singular_point(P, guess);
   const double chord = crossing ? (P.point(event.beyond) - last.p).norm() : 0.0;
   const double reach = std::max(2 * chord, tracer.options().step_length);
-  return loc->status == LocateStatus::kConverged && loc->gap <= contact_gap_tolerance(tracer.options().tolerance, P.scale()) &&
-         P.inside(loc->x, 1e-9) && (loc->point - last.p).norm() <= reach;
+  auto located_from = [&](const UnknownVec& guess) {
+    *loc = locate_singular_point(P, guess);
+    return loc->status == LocateStatus::kConverged && loc->gap <= contact_gap_tolerance(tracer.options().tolerance, P.scale()) &&
+           P.inside(loc->x, 1e-9) && (loc->point - last.p).norm() <= reach;
+  };
+  // From the middle of the step, then (the watch saw the dip at the last point itself) from the
+  // last point.
+  if (crossing && located_from(UnknownVec(last.x + 0.5 * P.difference(last.x, event.beyond)))) return true;
+  return located_from(last.x);
 }
 
 // Whether the curve's start lies on the stretch from the last accepted point to the singular point

@@ -21,6 +21,7 @@
 #include "ssimarch/singular/locate.hpp"
 #include "ssimarch/problem/singular_tolerances.hpp"
 #include "ssimarch/topology/start_points.hpp"
+#include "ssimarch/topology/start_tolerances.hpp"
 #include "ssimarch/topology/tangency_hunt.hpp"
 #include "ssimarch/topology/through_singular.hpp"
 
@@ -398,15 +399,15 @@ void drop_stubs(std::vector<TracedCurve>* curves, SingularRegistry* registry, do
 // it left by; a trace from the start itself would leave and come back through the point along
 // used half-branches and stop there as an open curve (issue 11: every branch exactly once). False
 // (nothing registered) when x is regular, or no singular point with a half-branch to leave by
-// is located within half a step of it (a point of a curve of tangential contact, an isolated
-// point), or x is on a pole.
+// is located within singular_start_radius of it (model units, topology/start_tolerances.hpp;
+// a point of a curve of tangential contact, an isolated point), or x is on a pole.
 bool register_singular_start(const Tracer& tracer, const VecX& x, const std::vector<Pole>& poles, SingularRegistry* registry) {
   const Problem& P = tracer.problem();
   // A start on a pole (no tangent in its parameters) is the pole's, handled after the others.
   if (pole_at(poles, x, 1e-9) || !(Problem::rank_ratio(P.linearize(x)) < kSuspectSingularRankRatio)) return false;
   const SingularLocation loc = locate_singular_point(P, x);
   if (loc.status != LocateStatus::kConverged || !P.inside(loc.x, 1e-9) ||
-      (loc.point - P.point(x)).norm() > 0.5 * tracer.options().step_length)
+      (loc.point - P.point(x)).norm() > singular_start_radius(tracer.options().tolerance, P.scale()))
     return false;
   const LocalCurve local = local_curve(P, loc.x);
   if (local.status != LocalCurveStatus::kOk) return false;

@@ -27,10 +27,12 @@ std::vector<VecX> find_start_points_in(const Tracer& tracer, const std::vector<I
 std::vector<VecX> start_points_near(const Tracer& tracer, const std::vector<Vec3>& points, TraceStats* stats,
                                     std::vector<std::string>* warnings, int* failed);
 
-/// A start x that converged onto a suspected singular point (rank ratio of J_H below
-/// kSuspectSingularRankRatio, e.g. Newton from far away ending at a node) moved to a regular
+/// A start x that converged onto a singular point (rank ratio of J_H below
+/// kSuspectSingularRankRatio and a singular point located within singular_start_radius of it,
+/// topology/start_tolerances.hpp; e.g. Newton from far away ending at a node) moved to a regular
 /// point of the curve about half a step away, which the trace then crosses; x itself when it is
-/// regular, or when no regular neighbour is found. Says so in *warnings when it moves x.
+/// regular (a low rank ratio farther from the located point: 0.03 from a quadruple point), or
+/// when no regular neighbour is found. Says so in *warnings when it moves x.
 VecX regular_start(const Tracer& tracer, const VecX& x, std::vector<std::string>* warnings);
 
 }  // namespace ssimarch
