@@ -44,7 +44,13 @@ double segment_shortfall(const std::vector<Segment>& g, std::size_t i, std::size
     tau = internal::angle_between(b0, b2) / (d1 + d2);
   }
   const double k = kappa(i), h = g[i].h;
-  return std::pow(h, 5) / 1440 * (k1 * k1 - 2 * k * k2 + 3 * k * k * tau * tau);
+  const double shortfall = std::pow(h, 5) / 1440 * (k1 * k1 - 2 * k * k2 + 3 * k * k * tau * tau);
+  // Consistency: on a smooth curve resolved by the window the curvature changes across the
+  // segment by less than a few times its largest value there, and the shortfall stays below
+  // the circle's own correction at the window's largest turning angle, h Phi^2 / 24. Beyond it
+  // the samples are noise (tangents at a node, steps of very different lengths): nothing added.
+  const double turn = std::max({g[w[0]].phi, g[w[1]].phi, g[w[2]].phi, g[i].phi});
+  return std::fabs(shortfall) <= h * turn * turn / 24 ? shortfall : 0.0;
 }
 
 }  // namespace
