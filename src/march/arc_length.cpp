@@ -55,24 +55,30 @@ double segment_shortfall(const std::vector<Segment>& g, std::size_t i, std::size
 
 }  // namespace
 
-double arc_length_shortfall(const std::vector<CurvePoint>& points, bool closed) {
+std::vector<double> arc_length_shortfalls(const std::vector<CurvePoint>& points, bool closed) {
   std::size_t n = points.size();
   // A closed curve's list may repeat its first point at the end: the closing segment is then
   // the last listed one, not one back to the start.
   if (closed && n > 1 && points.back().p == points.front().p) --n;
   const std::size_t m = closed ? n : (n > 0 ? n - 1 : 0);  // segments
-  if (n < 2 || m < 3) return 0;
+  std::vector<double> out(m, 0.0);
+  if (n < 2 || m < 3) return out;
   std::vector<Segment> g(m);
   for (std::size_t i = 0; i < m; ++i) {
     const CurvePoint &a = points[i], &b = points[(i + 1) % n];
     g[i].h = arc_length_estimate(a.p, a.t, b.p, b.t);
     g[i].phi = internal::angle_between(a.t, b.t);
     if (g[i].phi > kNoPlaneTurn) g[i].b = a.t.cross(b.t).normalized();
-    if (!(g[i].h > 0)) return 0;  // a repeated point: no differences to take  // a repeated point: no differences to take
+    if (!(g[i].h > 0)) return out;  // a repeated point: no differences to take
   }
-  double sum = 0;
   for (std::size_t i = 0; i < m; ++i)
-    sum += segment_shortfall(g, i, closed ? i : std::clamp<std::size_t>(i, 1, m - 2));
+    out[i] = segment_shortfall(g, i, closed ? i : std::clamp<std::size_t>(i, 1, m - 2));
+  return out;
+}
+
+double arc_length_shortfall(const std::vector<CurvePoint>& points, bool closed) {
+  double sum = 0;
+  for (double s : arc_length_shortfalls(points, closed)) sum += s;
   return sum;
 }
 

@@ -21,4 +21,8 @@ constexpr double kShortfallMaxTurn = 0.5;
 /// (model units; 0 for fewer than three segments). Add it to the sum of arc_length_estimate.
 double arc_length_shortfall(const std::vector<CurvePoint>& points, bool closed);
 
+/// The same per segment: entry i belongs to the segment from points[i] to the next point (the
+/// last, of a closed curve not repeating its first point, to the closing segment).
+std::vector<double> arc_length_shortfalls(const std::vector<CurvePoint>& points, bool closed);
+
 }  // namespace ssimarch
