@@ -11,6 +11,7 @@
 #include <numbers>
 
 #include "ssimarch/analytic/conic_pieces.hpp"
+#include "ssimarch/march/arc_length.hpp"
 #include "ssimarch/march/tracer.hpp"
 #include "ssimarch/problem/gauss_newton.hpp"
 
@@ -93,7 +94,7 @@ double length_of(const TracedCurve& c) {
   double length = 0;
   for (std::size_t i = 0; i + 1 < c.points.size(); ++i)
     length += arc_length_estimate(c.points[i].p, c.points[i].t, c.points[i + 1].p, c.points[i + 1].t);
-  return length;
+  return length + arc_length_shortfall(c.points, false);
 }
 
 // A point of the curve with where it stands, and at crossings the boundary point itself.

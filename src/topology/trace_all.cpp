@@ -8,6 +8,7 @@
 #include <limits>
 #include <optional>
 
+#include "ssimarch/march/arc_length.hpp"
 #include "ssimarch/march/predictor.hpp"
 #include "ssimarch/problem/closed_form_tolerances.hpp"
 #include "ssimarch/problem/curve_jet.hpp"
@@ -510,6 +511,9 @@ TraceResult trace_all(const Tracer& unbounded, const std::vector<Vec3>& starts, 
   const std::vector<Vec3> contacts =
       reg ? absorb_contact_loops(&result.curves, reg, radius, registry_tol, &result.isolated_points) : std::vector<Vec3>{};
   for (TracedCurve& c : result.curves) explain_bound(bound, &c);
+  // The circular-arc estimates summed while marching fall short where the curvature varies
+  // (docs/marching.md, "Length."): one pass over each finished curve's points adds that.
+  for (TracedCurve& c : result.curves) c.length += arc_length_shortfall(c.points, c.closed);
   if (reg) result.singular_points = registry.reports();
   std::erase_if(result.singular_points, [&](const SingularPointReport& r) {
     return std::find(contacts.begin(), contacts.end(), r.p) != contacts.end();
