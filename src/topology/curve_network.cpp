@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <numeric>
 
+#include "ssimarch/march/arc_length.hpp"
 #include "ssimarch/march/tracer.hpp"
 
 namespace ssimarch {
@@ -39,12 +40,15 @@ std::vector<Cut> singular_cuts(const TracedCurve& c, const std::vector<NetworkVe
   return cuts;
 }
 
-double arc_length(const TracedCurve& c, std::size_t first, std::size_t last) {
+// The edge's length as the curve's: each segment's circular-arc estimate plus its shortfall
+// (march/arc_length.hpp), so that a branch's edges add up to its curve's length.
+double arc_length(const TracedCurve& c, const std::vector<double>& shortfall, std::size_t first, std::size_t last) {
   double length = 0;
   const std::size_t n = c.points.size();
   auto add = [&](std::size_t a, std::size_t b) {
     for (std::size_t i = a; i < b; ++i)
-      length += arc_length_estimate(c.points[i].p, c.points[i].t, c.points[i + 1].p, c.points[i + 1].t);
+      length += arc_length_estimate(c.points[i].p, c.points[i].t, c.points[i + 1].p, c.points[i + 1].t) +
+                (i < shortfall.size() ? shortfall[i] : 0.0);
   };
   if (last > first) {
     add(first, last);
@@ -75,8 +79,9 @@ NetworkBranch branch_of(const Problem& P, const TracedCurve& c, int ci, std::vec
   const std::size_t n = c.points.size();
   std::vector<bool> corner(n, false);
   for (const Cut& k : cuts) corner[k.index] = true;
+  const std::vector<double> shortfall = arc_length_shortfalls(c.points, c.closed);
   auto add_edge = [&](const Cut& a, const Cut& z) {
-    net->edges.push_back({a.vertex, z.vertex, ci, a.index, z.index, arc_length(c, a.index, z.index)});
+    net->edges.push_back({a.vertex, z.vertex, ci, a.index, z.index, arc_length(c, shortfall, a.index, z.index)});
     b.edges.push_back(static_cast<int>(net->edges.size()) - 1);
   };
   if (c.closed) {

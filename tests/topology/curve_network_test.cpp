@@ -143,7 +143,7 @@ TEST(CurveNetwork, VivianiFigureEight) {
   }
   ASSERT_EQ(net.branches.size(), 1u);
   EXPECT_TRUE(net.branches[0].closed);
-  EXPECT_NEAR(edge_sum(net, net.branches[0]), net.branches[0].length, 1e-6 * net.branches[0].length);
+  EXPECT_NEAR(edge_sum(net, net.branches[0]), net.branches[0].length, 1e-9 * net.branches[0].length);
   // The two lobes are congruent (reflection z -> -z).
   EXPECT_NEAR(net.edges[0].length, net.edges[1].length, 1e-6);
   ASSERT_EQ(net.components.size(), 1u);
@@ -161,7 +161,7 @@ TEST(CurveNetwork, CrossingAndDisjointLoops) {
     ASSERT_EQ(net.branches.size(), 2u);
     for (const NetworkBranch& b : net.branches) {
       EXPECT_EQ(b.edges.size(), 4u);
-      EXPECT_NEAR(edge_sum(net, b), b.length, 1e-6 * b.length);
+      EXPECT_NEAR(edge_sum(net, b), b.length, 1e-9 * b.length);
     }
     ASSERT_EQ(net.components.size(), 1u);
     EXPECT_EQ(net.components[0].branches.size(), 2u);
