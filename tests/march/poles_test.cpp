@@ -14,6 +14,7 @@
 #include "ssimarch/surface/degenerate_edges.hpp"
 #include "ssimarch/surface/primitives.hpp"
 #include "ssimarch/topology/trace_all.hpp"
+#include "testing/nurbs_sphere.hpp"
 
 namespace ssimarch {
 namespace {
@@ -40,23 +41,7 @@ double viviani_length(double a) {
   return 2 * a * sum * h / 3;
 }
 
-// The exact rational B-spline unit sphere: a full circle (9 control points, 4 quarter arcs) in u
-// times a half circle from the south to the north pole (5 control points) in v; its v edges
-// are the poles (every control point of the edge row is the pole), u closes a seam.
-BSplineSurface nurbs_sphere() {
-  const double s = std::sqrt(0.5);
-  const double cx[9] = {1, 1, 0, -1, -1, -1, 0, 1, 1}, cy[9] = {0, 1, 1, 1, 0, -1, -1, -1, 0};
-  const double wu[9] = {1, s, 1, s, 1, s, 1, s, 1};
-  const double rho[5] = {0, 1, 1, 1, 0}, z[5] = {-1, -1, 0, 1, 1}, wv[5] = {1, s, 1, s, 1};
-  ControlNet points(9, std::vector<Vec3>(5));
-  WeightNet weights(9, std::vector<double>(5));
-  for (int i = 0; i < 9; ++i)
-    for (int j = 0; j < 5; ++j) {
-      points[i][j] = Vec3(rho[j] * cx[i], rho[j] * cy[i], z[j]);
-      weights[i][j] = wu[i] * wv[j];
-    }
-  return BSplineSurface(2, 2, {0, 0, 0, .25, .25, .5, .5, .75, .75, 1, 1, 1}, {0, 0, 0, .5, .5, 1, 1, 1}, points, weights);
-}
+using testing::nurbs_sphere;
 
 void expect_one_closed_curve(const TraceResult& r, double length, double rel) {
   ASSERT_EQ(r.curves.size(), 1u);

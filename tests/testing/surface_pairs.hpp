@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "ssimarch/expr/program.hpp"
+#include "ssimarch/problem/problem.hpp"
 #include "ssimarch/surface/surface.hpp"
 
 namespace ssimarch::testing {
@@ -23,6 +24,12 @@ inline Surface parametric(const std::string& x, const std::string& y, const std:
 inline Surface implicit(const std::string& f, const Box& box) {
   std::vector<std::string> vars = {"x", "y", "z"};
   return ExprImplicit(Program::compile_or_throw(f, vars, Constants{}), box);
+}
+
+// The plane (u, v, 0) against the implicit surface z = q(x, y): the curve q(u, v) = 0.
+inline Problem plane_against(const std::string& q) {
+  return Problem(parametric("u", "v", "0", {-1, 1}, {-1, 1}), implicit("z-(" + q + ")", Box{{-2, 2}, {-2, 2}, {-2, 2}}),
+                 PairKind::kParametricImplicit);
 }
 
 // Thesis pair 1 (thesis ch. 3): ruled surface F1 and torus G1; curve C1.

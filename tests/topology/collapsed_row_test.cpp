@@ -16,34 +16,14 @@
 #include "ssimarch/surface/bspline_surface.hpp"
 #include "ssimarch/surface/primitives.hpp"
 #include "ssimarch/topology/trace_all.hpp"
+#include "testing/nurbs_sphere.hpp"
 
 namespace ssimarch {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-// The exact rational B-spline sphere of radius R about the origin: a full circle (9 control
-// points, 4 quarter arcs) in u times a half circle from pole to pole (5 control points) in v,
-// the poles at -R a and +R a (a = `axis`, a unit coordinate vector), every control point of an
-// edge row on its pole.
-Surface nurbs_sphere(double R, int axis) {
-  const double s = std::sqrt(0.5);
-  const double cx[9] = {1, 1, 0, -1, -1, -1, 0, 1, 1}, cy[9] = {0, 1, 1, 1, 0, -1, -1, -1, 0};
-  const double wu[9] = {1, s, 1, s, 1, s, 1, s, 1};
-  const double rho[5] = {0, 1, 1, 1, 0}, h[5] = {-1, -1, 0, 1, 1}, wv[5] = {1, s, 1, s, 1};
-  ControlNet points(9, std::vector<Vec3>(5));
-  WeightNet weights(9, std::vector<double>(5));
-  for (int i = 0; i < 9; ++i)
-    for (int j = 0; j < 5; ++j) {
-      Vec3 p;  // (circle, circle, axis) rotated so that the axis is coordinate `axis`
-      p[(axis + 1) % 3] = R * rho[j] * cx[i];
-      p[(axis + 2) % 3] = R * rho[j] * cy[i];
-      p[axis] = R * h[j];
-      points[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] = p;
-      weights[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] = wu[i] * wv[j];
-    }
-  return BSplineSurface(2, 2, {0, 0, 0, .25, .25, .5, .5, .75, .75, 1, 1, 1}, {0, 0, 0, .5, .5, 1, 1, 1}, points, weights);
-}
+using testing::nurbs_sphere;
 
 // Viviani's curve on the sphere of radius 2 and the cylinder (x - 1)^2 + y^2 = 1:
 // (1 + cos t, sin t, 2 sin(t/2)), t in [0, 4 pi), length 2 int_0^{2 pi} sqrt(1 + cos^2 s) ds

@@ -16,11 +16,7 @@ namespace {
 using testing::implicit;
 using testing::parametric;
 
-// The plane (u, v, 0) against the implicit surface z = q(x, y): the curve q(u, v) = 0.
-Problem plane_against(const std::string& q) {
-  return Problem(parametric("u", "v", "0", {-1, 1}, {-1, 1}), implicit("z-(" + q + ")", Box{{-2, 2}, {-2, 2}, {-2, 2}}),
-                 PairKind::kParametricImplicit);
-}
+using testing::plane_against;
 
 // The crossings sorted, and expected points (each sorted the same way) to `tol`.
 void expect_points(std::vector<VecX> got, std::vector<std::vector<double>> expected, double tol) {
