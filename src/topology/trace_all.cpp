@@ -402,48 +402,56 @@ void drop_stubs(std::vector<TracedCurve>* curves, SingularRegistry* registry, do
 // (nothing registered) when x is regular, or no singular point with a half-branch to leave by
 // is located within singular_start_radius of it (model units, topology/start_tolerances.hpp;
 // a point of a curve of tangential contact, an isolated point), or x is on a pole.
-bool register_singular_start(const Tracer& tracer, const VecX& x, const std::vector<Pole>& poles, SingularRegistry* registry) {
+// The singular point located from a start x, with its local curve and class: none when x is
+// regular (J_H's rank ratio), or the location fails or leaves the domain, or the local curve
+// cannot be built. Located once for both uses below (a node to trace from, an isolated point).
+struct StartSingularity {
+  SingularLocation loc;
+  LocalCurve local;
+  Classification kind;
+  double distance = 0;  // from point(x), model units
+};
+std::optional<StartSingularity> singularity_at_start(const Problem& P, const VecX& x) {
+  if (!(Problem::rank_ratio(P.linearize(x)) < kSuspectSingularRankRatio)) return std::nullopt;
+  StartSingularity s;
+  s.loc = locate_singular_point(P, x);
+  if (s.loc.status != LocateStatus::kConverged || !P.inside(s.loc.x, 1e-9)) return std::nullopt;
+  s.distance = (s.loc.point - P.point(x)).norm();
+  s.local = local_curve(P, s.loc.x);
+  if (s.local.status != LocalCurveStatus::kOk) return std::nullopt;
+  s.kind = classify(s.local.h);
+  return s;
+}
+
+bool register_singular_start(const Tracer& tracer, const VecX& x, const StartSingularity& s, const std::vector<Pole>& poles,
+                             SingularRegistry* registry) {
   const Problem& P = tracer.problem();
   // A start on a pole (no tangent in its parameters) is the pole's, handled after the others.
-  if (pole_at(poles, x, 1e-9) || !(Problem::rank_ratio(P.linearize(x)) < kSuspectSingularRankRatio)) return false;
-  const SingularLocation loc = locate_singular_point(P, x);
-  if (loc.status != LocateStatus::kConverged || !P.inside(loc.x, 1e-9) ||
-      (loc.point - P.point(x)).norm() > singular_start_radius(tracer.options().tolerance, P.scale()))
-    return false;
-  const LocalCurve local = local_curve(P, loc.x);
-  if (local.status != LocalCurveStatus::kOk) return false;
-  const Classification kind = classify(local.h);
+  if (pole_at(poles, x, 1e-9) || s.distance > singular_start_radius(tracer.options().tolerance, P.scale())) return false;
   // Points on or across a curve of tangential contact are traced by trace_contact_from.
-  if (kind.type == SingularType::kRegular || kind.type == SingularType::kTangentialContact ||
-      kind.type == SingularType::kTangentLineCrossing)
+  if (s.kind.type == SingularType::kRegular || s.kind.type == SingularType::kTangentialContact ||
+      s.kind.type == SingularType::kTangentLineCrossing)
     return false;
-  const std::vector<HalfBranch> branches = half_branches(P, local, kind);
+  const std::vector<HalfBranch> branches = half_branches(P, s.local, s.kind);
   if (std::none_of(branches.begin(), branches.end(), [](const HalfBranch& b) { return b.exit_ok; })) return false;
-  registry->add(loc);
+  registry->add(s.loc);
   return true;
 }
 
 // A start on an isolated point of the curve (the certified search adds the point of every box it
 // decided around one, topology/isolated_box.hpp) is that point: it is reported in `isolated` (once)
-// and nothing is traced from it. False when x is regular, or no isolated point where the surfaces
-// meet within contact_gap_tolerance is located within half a step of it.
-bool isolated_start(const Tracer& tracer, const VecX& x, double merge, std::vector<SingularPointReport>* isolated) {
+// and nothing is traced from it. False when no isolated point where the surfaces meet within
+// contact_gap_tolerance is located within half a step of it.
+bool isolated_start(const Tracer& tracer, const StartSingularity& s, double merge, std::vector<SingularPointReport>* isolated) {
   const Problem& P = tracer.problem();
-  if (!(Problem::rank_ratio(P.linearize(x)) < kSuspectSingularRankRatio)) return false;
-  const SingularLocation loc = locate_singular_point(P, x);
   // A gap above the corrector's tolerance is no contact: a loop of the curve surrounds the point
   // (a sphere 1e-10 above a plane, tests NearContact.*), traced from x.
-  if (loc.status != LocateStatus::kConverged || !P.inside(loc.x, 1e-9) ||
-      (loc.point - P.point(x)).norm() > 0.5 * tracer.options().step_length ||
-      loc.gap > contact_gap_tolerance(tracer.options().tolerance, P.scale()))
+  if (s.distance > 0.5 * tracer.options().step_length ||
+      s.loc.gap > contact_gap_tolerance(tracer.options().tolerance, P.scale()) || s.kind.type != SingularType::kIsolated)
     return false;
-  const LocalCurve local = local_curve(P, loc.x);
-  if (local.status != LocalCurveStatus::kOk) return false;
-  const Classification kind = classify(local.h);
-  if (kind.type != SingularType::kIsolated) return false;
   for (const SingularPointReport& r : *isolated)
-    if ((r.p - loc.point).norm() <= merge) return true;
-  isolated->push_back(make_report(loc, kind, {}));
+    if ((r.p - s.loc.point).norm() <= merge) return true;
+  isolated->push_back(make_report(s.loc, s.kind, {}));
   return true;
 }
 
@@ -487,8 +495,12 @@ TraceResult trace_all(const Tracer& unbounded, const std::vector<Vec3>& starts, 
     throw_if_interrupted();  // Ctrl-C between curves (core/interrupt.hpp)
     if (near_traced_curve(P.point(x), result.curves, radius)) continue;
     if (reg && trace_contact_from(tracer, x, &result.curves, reg)) continue;  // a curve of tangential contact
-    if (reg && register_singular_start(tracer, x, poles, reg)) continue;  // traced from the node below
-    if (reg && options.hunt_isolated_points && isolated_start(tracer, x, registry_merge, &result.isolated_points)) continue;
+    if (reg) {
+      if (const std::optional<StartSingularity> s = singularity_at_start(P, x)) {
+        if (register_singular_start(tracer, x, *s, poles, reg)) continue;  // traced from the node below
+        if (options.hunt_isolated_points && isolated_start(tracer, *s, registry_merge, &result.isolated_points)) continue;
+      }
+    }
     const std::vector<LooseEnd> ends = loose_ends(result.curves, registry, registry_tol);
     const std::vector<TracedCurve> stub = stubs(result.curves, ends);
     TracedCurve c = trace_curve_through(tracer, x, &result.stats, reg, static_cast<int>(result.curves.size()),
