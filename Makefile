@@ -30,7 +30,7 @@ asan: deps
 # the tests of a tier of modules. ASAN_TIER=core (the default, what .ci/run runs): core and expr, the
 # expression compiler every user formula goes through; it fits CI's 25-minute budget beside `make
 # test`. ASAN_TIER=wide adds surface, problem, march (with the libraries march's tests link: geometry,
-# singular, topology) and the porosity kernels and packing readers; measured, it does not fit beside
+# singular, start, trace) and the porosity kernels and packing readers; measured, it does not fit beside
 # `make test`. The whole suite under the sanitizers is `make asan`.
 ASAN_TIER ?= core
 ASAN_TARGETS_core = core_tests expr_tests

@@ -40,7 +40,7 @@ int main(int argc, char** argv) {
         curves = run.result.curves.size();
         length = 0;
         for (const ssimarch::TracedCurve& c : run.result.curves) length += c.length;
-        method = run.result.start_search.method;
+        method = std::string(ssimarch::to_string(run.result.start_search.method));
       }
       std::sort(ms.begin(), ms.end());
       std::sort(search_ms.begin(), search_ms.end());

@@ -30,7 +30,7 @@
 
 #include "ssimarch/expr/program.hpp"
 #include "ssimarch/march/predictor.hpp"
-#include "ssimarch/topology/trace_all.hpp"
+#include "ssimarch/trace/trace_all.hpp"
 #include "ssimarch/surface/sphere.hpp"
 #include "ssimarch/surface/surface.hpp"
 #include "testing/surface_pairs.hpp"

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "ssimarch/io/scene.hpp"
-#include "ssimarch/topology/trace_all.hpp"
+#include "ssimarch/trace/trace_all.hpp"
 
 using namespace ssimarch;
 

@@ -2,6 +2,7 @@
 // run_porosity_job (pipeline/porosity_job.hpp), and the packing generator through run_packing_job
 // (pipeline/packing_job.hpp); no porosity logic here. Ctrl-C stops a profile between chunks
 // (interrupt.hpp: the job's progress callback polls the stop flag).
+#include <sstream>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -72,9 +73,25 @@ PorosityJob porosity_job(const py::object& particles, double radius, const py::o
   return job;
 }
 
+// Overlapping particles are counted twice (docs/porosity.md): said as a RuntimeWarning, as the CLI
+// says it on stderr (issue 29: Python returned negative porosities silently). The CLI's --strict is
+// Python's warning filter: warnings.simplefilter("error", RuntimeWarning) makes it an exception.
+void warn_of_overlaps(const PorosityJobResult& r) {
+  const ParticleOverlaps& o = r.overlaps;
+  if (o.pairs <= 0) return;
+  std::ostringstream m;
+  m.precision(6);
+  m << o.pairs << " pair" << (o.pairs == 1 ? "" : "s") << " of particles overlap (worst: particles " << o.worst_first
+    << " and " << o.worst_second << ", 0-based, by " << o.max_depth << "); their common volume (at least "
+    << o.doubled_volume << ") is counted twice, so the porosities are too low";
+  if (PyErr_WarnEx(PyExc_RuntimeWarning, m.str().c_str(), 2) != 0) throw py::error_already_set();
+}
+
 PorosityJobResult run_job(PorosityJob job) {
   job.progress = [](std::string_view, double) { throw_if_interrupted(); };
-  return python::run_interruptible([&] { return run_porosity_job(job); });
+  PorosityJobResult r = python::run_interruptible([&] { return run_porosity_job(job); });
+  warn_of_overlaps(r);
+  return r;
 }
 
 Array vector_array(const std::vector<double>& v) {

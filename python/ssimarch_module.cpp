@@ -60,7 +60,7 @@ struct PyIntersection {
   const IntersectionRun* run;
 };
 
-// The curve network of one run (topology/curve_network.hpp), as the JSON's "topology".
+// The curve network of one run (network/curve_network.hpp), as the JSON's "topology".
 struct PyTopology {
   std::shared_ptr<const TraceJob> job;
   const IntersectionRun* run;

@@ -1,6 +1,7 @@
 // ssimarch faces MODEL.step: the faces of a STEP file, numbered as a scene names them
 // ({"step": "MODEL.step", "face": N}, docs/scene-format.md), with their surface type and the
 // parameter domain ssimarch gives them (io/step_reader.hpp), as a table or JSON.
+#include <algorithm>
 #include <iostream>
 #include <memory>
 
@@ -41,6 +42,16 @@ void run_faces(const FacesArgs& a) {
   const StepModel model = StepModel::read(a.file, input_limits());
   nlohmann::json list = nlohmann::json::array();
   for (const StepFace& f : model.faces()) list.push_back(face_json(model, f));
+  // Issue 29: a file without faces listed an empty table with exit status 0.
+  if (list.empty())
+    throw InputError(a.file, "no faces (ADVANCED_FACE, FACE_SURFACE): the file holds no surface geometry to list");
+  const auto unread =
+      std::count_if(list.begin(), list.end(), [](const nlohmann::json& j) { return j.contains("error"); });
+  if (unread > 0) {
+    std::cerr << fmt::format("ssimarch: {} of {} face(s) of {} could not be read (see each face's error)\n", unread,
+                             list.size(), a.file);
+    g_exit_status = 1;
+  }
   if (a.json) {
     std::cout << nlohmann::json{{"file", a.file}, {"faces", list}}.dump(2) << "\n";
     return;

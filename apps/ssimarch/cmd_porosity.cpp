@@ -15,6 +15,7 @@
 #include "flag_error.hpp"
 #include "run_budget.hpp"
 #include "run_progress.hpp"
+#include "ssimarch/core/input_files.hpp"
 #include "ssimarch/io/output_files.hpp"
 #include "ssimarch/io/porosity_vtk.hpp"
 #include "ssimarch/io/profile_plot.hpp"
@@ -33,7 +34,9 @@ namespace {
 struct PorosityArgs {
   std::string packing, output, plot, summary, z_range, map, method = "chord", format, html;
   double radius = 0, tolerance = 1e-8;
-  int radii = 0, bins = 0, axial = 0;
+  // Profile sizes; kNotGiven where the flag is absent (an explicit 0 is an error, not "absent").
+  static constexpr int kNotGiven = std::numeric_limits<int>::min();
+  int radii = kNotGiven, bins = kNotGiven, axial = kNotGiven;
   unsigned threads = 0;
   bool strict = false, quiet = false;
 };
@@ -65,7 +68,19 @@ bool vtk_format(const PorosityArgs& a) {
 }
 
 // The job the flags describe; flag syntax and combinations are checked here, values by the job.
-PorosityJob make_job(const PorosityArgs& a) {
+// The count a profile flag gives: 0 when absent; an explicit value must be at least 1 (issue 29:
+// `--radii 0` silently meant the default).
+int profile_count(int given, const char* flag) {
+  if (given == PorosityArgs::kNotGiven) return 0;
+  if (given < 1) throw CliError(std::string(flag) + ": must be a positive number, got " + std::to_string(given));
+  return given;
+}
+
+PorosityJob make_job(const PorosityArgs& given) {
+  PorosityArgs a = given;
+  a.radii = profile_count(given.radii, "--radii");
+  a.bins = profile_count(given.bins, "--bins");
+  a.axial = profile_count(given.axial, "--axial");
   if (a.radii && a.bins) throw CliError("--radii and --bins are mutually exclusive");
   if (a.method != "chord" && a.method != "kernel") throw CliError("--method must be 'chord' or 'kernel'");
   PorosityJob job;
@@ -333,6 +348,11 @@ void run(const PorosityArgs& a) {
     }
     return;
   }
+  // An output never replaces the packing (issue 29), refused before the work; OutputFiles checks
+  // every file it opens again.
+  note_input_file(a.packing);
+  for (const std::string* out : {&a.output, &a.plot, &a.summary, &a.html})
+    if (!out->empty() && *out != "-") refuse_input_as_output(*out);
   std::string_view script;
   if (!a.html.empty()) {  // the viewer page needs the particles: read once, given to the job
     script = require_viewer_script();

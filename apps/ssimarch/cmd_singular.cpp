@@ -9,9 +9,8 @@
 #include "commands.hpp"
 #include "run_budget.hpp"
 #include "ssimarch/io/scene.hpp"
-#include "ssimarch/singular/classify.hpp"
-#include "ssimarch/singular/detection.hpp"
-#include "ssimarch/singular/half_branches.hpp"
+#include "ssimarch/io/singular_json.hpp"
+#include "ssimarch/pipeline/singular_job.hpp"
 
 namespace ssimarch::cli {
 
@@ -22,38 +21,6 @@ struct SingularArgs {
   int grid = 32;
   bool json = false;
 };
-
-nlohmann::json vec_json(const Eigen::VectorXd& a) { return std::vector<double>(a.data(), a.data() + a.size()); }
-
-nlohmann::json point_json(const Problem& problem, const SingularLocation& s) {
-  const LocalCurve curve = local_curve(problem, s.x);
-  const Classification kind = classify(curve.h);
-  const std::vector<HalfBranch> hb = half_branches(problem, curve, kind);
-  nlohmann::json branches = nlohmann::json::array();
-  for (const HalfBranch& b : hb) {
-    nlohmann::json terms = nlohmann::json::array();
-    for (const PuiseuxTerm& t : b.expansion.terms) terms.push_back({{"exponent", t.exponent}, {"coefficient", t.coefficient}});
-    branches.push_back({{"tangent", vec_json(b.tangent_3d)},
-                        {"param_tangent", vec_json(b.param_tangent)},
-                        {"expansion", {{"coefficient", b.leading_coefficient}, {"exponent", b.leading_exponent},
-                                       {"normal", vec_json(b.normal_3d)}, {"terms", terms}}},
-                        {"branch", b.branch},
-                        {"continuation", b.continuation},
-                        {"exit", b.exit_ok ? vec_json(b.exit_point) : nlohmann::json(nullptr)}});
-  }
-  nlohmann::json cone = nlohmann::json::array();
-  for (const auto& l : kind.tangent_cone) cone.push_back({{"direction", vec_json(curve.direction_3d(l.direction))}, {"multiplicity", l.multiplicity}});
-  return {{"xyz", vec_json(s.point)},
-          {"params", vec_json(s.x)},
-          {"type", std::string(to_string(kind.type))},
-          {"ak", kind.ak},
-          {"multiplicity", kind.multiplicity},
-          {"milnor", kind.milnor >= 0 ? nlohmann::json(kind.milnor) : nlohmann::json(nullptr)},
-          {"tangent_cone", cone},
-          {"gap", s.gap},
-          {"sine", s.sine},
-          {"half_branches", branches}};
-}
 
 void print_table(const std::string& name, const nlohmann::json& points) {
   std::cout << fmt::format("intersection {}: {} singular point(s)\n", name, points.size());
@@ -74,24 +41,17 @@ void print_table(const std::string& name, const nlohmann::json& points) {
 }
 
 void run_singular(const SingularArgs& a) {
-  if (a.grid < 3) throw CliError("--grid must be at least 3, got " + std::to_string(a.grid));
-  Scene scene = load_scene(a.scene, input_limits());
+  const Scene scene = load_scene(a.scene, input_limits());
+  const std::vector<SingularJobResult> found = run_singular_job(scene, {a.intersection, a.grid});
   nlohmann::json out = nlohmann::json::object();
-  bool any = false;
-  for (const auto& spec : scene.intersections) {
-    if (!a.intersection.empty() && spec.name != a.intersection) continue;
-    any = true;
-    const Problem problem = scene.problem(spec);
-    HuntOptions options;
-    options.grid = a.grid;
+  for (const SingularJobResult& r : found) {
     nlohmann::json points = nlohmann::json::array();
-    for (const SingularLocation& s : hunt_singular_points(problem, options)) points.push_back(point_json(problem, s));
+    for (const SingularAnalysis& p : r.points) points.push_back(singular_analysis_to_json(p));
     if (a.json)
-      out[spec.name] = {{"singular_points", points}};
+      out[r.intersection] = {{"singular_points", points}};
     else
-      print_table(spec.name, points);
+      print_table(r.intersection, points);
   }
-  if (!any) throw CliError("--intersection: the scene has no intersection \"" + a.intersection + "\"");
   if (a.json) std::cout << out.dump(2) << "\n";
 }
 

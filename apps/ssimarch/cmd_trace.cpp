@@ -9,6 +9,7 @@
 #include "run_budget.hpp"
 #include "run_progress.hpp"
 #include "ssimarch/core/thread_pool.hpp"
+#include "ssimarch/io/output_files.hpp"
 #include "ssimarch/io/scene.hpp"
 #include "ssimarch/io/step_surface_json.hpp"
 #include "ssimarch/pipeline/trace_job.hpp"
@@ -70,6 +71,7 @@ void run_trace(const TraceArgs& a) {
   if (a.scene.empty()) throw CliError("trace: a scene file is required (ssimarch trace SCENE.json; --help)");
   if (a.threads > 0) set_thread_count(a.threads);
   const Scene scene = load_trace_input(a);
+  if (a.output != "-") refuse_input_as_output(a.output);  // before the work (OutputFiles checks it again)
   OutputFormat f = a.format.empty() ? (a.output == "-" ? OutputFormat::kJson : format_from_path(a.output)) : parse_format(a.format);
   TraceRequest request = request_of(a);
   // STEP holds the certified B-splines: the format turns the option on unless a flag sets it.

@@ -34,7 +34,11 @@ OutputFormat format_from_path(const std::filesystem::path& p) {
   if (e == ".step" || e == ".stp") return OutputFormat::kStep;
   if (e == ".vtp" || e == ".vtm") return OutputFormat::kVtp;
   if (e == ".html" || e == ".htm") return OutputFormat::kHtml;
-  return OutputFormat::kJson;
+  if (e == ".json" || e.empty()) return OutputFormat::kJson;
+  // Issue 29: `-o curves.vtk` wrote JSON under a name that promises another format.
+  throw CliError("-o " + p.string() + ": the extension \"" + e +
+                 "\" names no output format (known: .json, .csv, .obj, .svg, .step/.stp, .vtp/.vtm, .html/.htm; "
+                 "or give --format)");
 }
 
 void write_runs(const std::vector<IntersectionRun>& runs, OutputFormat format, const std::string& path,
@@ -81,11 +85,17 @@ void write_runs(const std::vector<IntersectionRun>& runs, OutputFormat format, c
 void print_summary(const std::vector<IntersectionRun>& runs) {
   for (const auto& r : runs) {
     const auto& s = r.result.stats;
-    std::cerr << r.spec.name << ": " << r.result.curves.size() << " curve(s), " << s.points << " points, "
-              << s.rejected_steps << " rejected steps, " << s.time_ms << " ms\n";
+    // The points the curves hold (what the output has); the tracer's accepted steps, which count
+    // the points of marches that were joined or dropped too, are the work (issue 29: the two were
+    // printed as one number that disagreed with the curves').
+    std::size_t on_curves = 0;
+    for (const TracedCurve& c : r.result.curves) on_curves += c.points.size();
+    std::cerr << r.spec.name << ": " << r.result.curves.size() << " curve(s), " << on_curves
+              << " points; work: " << s.points << " accepted and " << s.rejected_steps << " rejected steps, "
+              << s.time_ms << " ms\n";
     const StartPointSearch& sp = r.result.start_search;
-    std::cerr << "  start points: " << sp.method << (sp.certified ? ", certified" : ", not certified");
-    if (sp.method == "certified")
+    std::cerr << "  start points: " << to_string(sp.method) << (sp.certified ? ", certified" : ", not certified");
+    if (sp.method == StartSearchMethod::kCertified)
       std::cerr << " (" << sp.boxes << " boxes, " << sp.uncertain_regions.size() << " uncertain regions, " << sp.time_ms << " ms)";
     if (sp.certified && r.result.curves.empty()) std::cerr << "; no intersection";
     std::cerr << (sp.note.empty() ? "" : "; " + sp.note) << "\n";

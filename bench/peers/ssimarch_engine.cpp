@@ -21,7 +21,7 @@ Outcome run_ssimarch(const Scene& scene, const IntersectionSpec& spec, double* m
     out.length += c.length;
     for (const CurvePoint& p : c.points) out.residual = std::max(out.residual, residual(a, b, p.p));
   }
-  if (run.result.start_search.method == "closed-form") out.note = "closed form";
+  if (run.result.start_search.method == StartSearchMethod::kClosedForm) out.note = "closed form";
   return out;
 }
 

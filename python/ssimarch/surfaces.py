@@ -21,7 +21,7 @@ def _surface(kind: str, fields: dict, constants: Optional[Mapping[str, float]]) 
 
 
 def Plane(point, normal, *, u=None, v=None, reference=None, constants=None) -> Surface:
-    """Plane through `point` with `normal`; parameter rectangle u, v (default [-1, 1] each)."""
+    """Plane through `point` with `normal`; parameter rectangle u, v (default: unbounded, clipped to the other surface)."""
     return _surface("plane", dict(point=point, normal=normal, u=u, v=v, reference=reference), constants)
 
 
@@ -31,13 +31,13 @@ def Sphere(center=(0.0, 0.0, 0.0), radius=1.0, *, axis=None, reference=None, con
 
 
 def Cylinder(point, axis, radius, *, range=None, reference=None, constants=None) -> Surface:  # noqa: A002
-    """Circular cylinder about the line point + t axis; `range` its axial extent (default [-1, 1])."""
+    """Circular cylinder about the line point + t axis; `range` its axial extent (default: unbounded)."""
     return _surface("cylinder", dict(point=point, axis=axis, radius=radius, range=range, reference=reference),
                     constants)
 
 
 def Cone(apex, axis, half_angle, *, range=None, reference=None, constants=None) -> Surface:  # noqa: A002
-    """Circular cone, half angle in radians; `range` the signed axial extent from the apex (default [0, 1])."""
+    """Circular cone, half angle in radians; `range` the signed axial extent from the apex (default: unbounded, both nappes)."""
     return _surface("cone", dict(apex=apex, axis=axis, half_angle=half_angle, range=range, reference=reference),
                     constants)
 

@@ -16,7 +16,7 @@
 #include "ssimarch/analytic/ruled_section.hpp"
 #include "ssimarch/problem/closed_form_tolerances.hpp"
 #include "ssimarch/singular/locate.hpp"
-#include "ssimarch/topology/singular_registry.hpp"
+#include "ssimarch/trace/singular_registry.hpp"
 
 namespace ssimarch {
 
@@ -61,7 +61,7 @@ SingularPointReport contact_point(const Vec3& p) {
   SingularPointReport r;
   r.p = p;
   r.x = p;
-  r.type = "isolated";
+  r.type = SingularType::kIsolated;
   return r;
 }
 
@@ -84,7 +84,7 @@ double distance_to(const TracedCurve& c, const Vec3& p) {
 // The singular points where branches of the section meet (the double roots of the discriminant),
 // with the curves through each. A root of multiplicity 2 is a node whose record the closed form
 // gives exactly (ruled_crossing.hpp); any other (a tacnode or higher contact: Delta'' = 0) is
-// classified as the tracer does it (topology/singular_registry.hpp: local curve, type,
+// classified as the tracer does it (trace/singular_registry.hpp: local curve, type,
 // half-branches). False when one is not a singular point to within kClosedFormCrossing: the caller
 // then traces.
 bool crossing_reports(const Problem& problem, const RuledCurves& curves, const RuledSection& section,
@@ -110,7 +110,7 @@ bool crossing_reports(const Problem& problem, const RuledCurves& curves, const R
     std::optional<SingularPointReport> report = ruled_node(problem, curves, theta, section.scale);
     if (!report) {
       const SingularNode& node = registry.node(registry.add(at));
-      report = make_report(node.location, node.kind, node.branches);
+      report = make_report(node);
     }
     const auto& c = out->result.curves;
     for (std::size_t i = 0; i < c.size(); ++i)
@@ -237,7 +237,7 @@ std::optional<ClosedFormResult> closed_form_intersection(const Problem& problem,
     return std::nullopt;
   }
   for (const TracedCurve& c : out.result.curves) out.result.stats.points += static_cast<long>(c.points.size());
-  out.result.start_search.method = "closed-form";
+  out.result.start_search.method = StartSearchMethod::kClosedForm;
   out.result.start_search.certified = true;
   out.result.start_search.note = "exact " + out.pair + " section (docs/math/closed_form_quadrics.md); no search";
   out.result.stats.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

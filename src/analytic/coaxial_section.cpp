@@ -65,8 +65,13 @@ std::vector<AxialRoot> axial_roots(double q0, double q1, double q2, double scale
   const double hstar = -q1 / (2 * q2) * scale, f = a.at(hstar) - b.at(hstar);
   const double grad = std::hypot(a.slope(hstar), 2 * std::sqrt(std::max(b.at(hstar), 0.0)));
   const double gap = grad > 0 ? std::fabs(f) / grad : (f == 0 ? 0.0 : std::numeric_limits<double>::infinity());
-  if (gap <= gap_tolerance) return {{hstar, true}};
   const double disc = q1 * q1 - 4 * q2 * q0;
+  // Within the gap tolerance the surfaces touch along one circle, unless they cross by more than
+  // rounding in two circles farther apart than the tolerance (issue 26: the geometry decides, as
+  // in plane sections).
+  const double rounding = kClosedFormGapRounding * std::numeric_limits<double>::epsilon() * scale;
+  const double separation = disc > 0 ? std::sqrt(disc) / std::fabs(q2) * scale : 0.0;
+  if (gap <= gap_tolerance && !(disc > 0 && gap > rounding && separation > gap_tolerance)) return {{hstar, true}};
   if (disc < 0) return {};
   const double s = -0.5 * (q1 + std::copysign(std::sqrt(disc), q1));  // no cancellation
   return {{s / q2 * scale, false}, {q0 / s * scale, false}};
@@ -98,7 +103,12 @@ std::optional<std::vector<Conic>> coaxial_section(RevolutionForm a, RevolutionFo
     // poles nearest the root are within the gap tolerance of it and of each other.
     const double pa = ma.to_pole(h), pb = mb.to_pole(h);
     const double r2 = ma.at(h);
-    if (std::max({std::fabs(pa), std::fabs(pb), std::fabs(pa - pb)}) <= gap_tolerance) {
+    const double to_poles = std::max({std::fabs(pa), std::fabs(pb), std::fabs(pa - pb)});
+    const double rounding = kClosedFormGapRounding * std::numeric_limits<double>::epsilon() * scale;
+    // A circle about the poles farther from them than the tolerance, the surfaces crossing by more
+    // than rounding, is that circle (two spheres overlapping by 1e-12 meet in a circle of 1e-6).
+    const bool resolved_circle = r2 > 0 && std::sqrt(r2) > gap_tolerance && to_poles > rounding;
+    if (to_poles <= gap_tolerance && !resolved_circle) {
       c.type = ConicType::kPoint;
       c.center = a.origin + (h + 0.5 * (pa + pb)) * a.axis;
     } else if (r2 > 0) {

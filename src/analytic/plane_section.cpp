@@ -3,6 +3,7 @@
 #include "ssimarch/analytic/plane_section.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include "nearest_root.hpp"
 #include "ssimarch/problem/closed_form_tolerances.hpp"
@@ -45,9 +46,24 @@ Conic make(ConicType type, const Vec3& c, const Vec3& e0, const Vec3& e1, double
 // The plane touches the quadric: the distance it must move along its normal to become tangent
 // (the constant k = c - b^T A+ b of the centred conic, a quadratic in that distance, vanishes) is
 // within the gap tolerance. `Ainv`: A's inverse, or its pseudo-inverse on the non-zero eigenvalue.
-bool touches(const PlaneConic& pc, const Eigen::Matrix2d& Ainv) {
+double tangency_distance(const PlaneConic& pc, const Eigen::Matrix2d& Ainv) {
   const double k0 = pc.c - pc.b.dot(Ainv * pc.b), k1 = pc.c1 - pc.b1.dot(Ainv * pc.b), k2 = pc.c2 - pc.b1.dot(Ainv * pc.b1);
-  return std::fabs(internal::nearest_root(k0, k1, k2)) <= pc.gap_tolerance;
+  return std::fabs(internal::nearest_root(k0, k1, k2));
+}
+bool touches(const PlaneConic& pc, const Eigen::Matrix2d& Ainv) {
+  return tangency_distance(pc, Ainv) <= pc.gap_tolerance;
+}
+
+// A plane that cuts within the gap tolerance of tangency still cuts a curve whose size the
+// geometry decides (issue 26: a sphere 1 - 1e-12 above a plane meets it in a circle of radius
+// 1.4e-6, a million times the tolerance, which was reported as a contact point): the section is
+// the curve when the plane is farther than rounding (kClosedFormGapRounding eps scale) from
+// tangency, so the sign of the cut is known, and the curve reaches farther than the tolerance from
+// its centre, so its points are not the contact point's. `reach`: the smaller semi-axis (or half
+// the distance of two parallel lines), model units.
+bool resolved_cut(const PlaneConic& pc, const Eigen::Matrix2d& Ainv, double reach) {
+  const double rounding = kClosedFormGapRounding * std::numeric_limits<double>::epsilon() * pc.scale;
+  return tangency_distance(pc, Ainv) > rounding && reach > pc.gap_tolerance;
 }
 
 // Both eigenvalues non-zero: a central conic about x0 (ellipse, hyperbola, point, crossing lines).
@@ -55,10 +71,13 @@ std::vector<Conic> central(const PlaneConic& pc, const Eigen::Vector2d& lam, con
   const Eigen::Vector2d x0 = -pc.A.ldlt().solve(pc.b);
   const double k = pc.c + pc.b.dot(x0);  // lam0 X^2 + lam1 Y^2 + k = 0 in the eigenbasis
   const Vec3 c = pc.world(x0), w0 = pc.direction(R.col(0)), w1 = pc.direction(R.col(1));
-  const bool touching = touches(pc, R * lam.cwiseInverse().asDiagonal() * R.transpose());
+  const Eigen::Matrix2d Ainv = R * lam.cwiseInverse().asDiagonal() * R.transpose();
+  const bool touching = touches(pc, Ainv);
   if (lam[0] * lam[1] > 0) {
-    if (touching) return {make(ConicType::kPoint, c, w0, w1, 0, 0, Contact::kTangential)};
-    if (k / lam[0] > 0) return {};
+    const bool cuts = k / lam[0] < 0;
+    if (touching && !(cuts && resolved_cut(pc, Ainv, pc.scale * std::sqrt(-k / lam[0]))))
+      return {make(ConicType::kPoint, c, w0, w1, 0, 0, Contact::kTangential)};
+    if (!cuts) return {};
     // |lam0| >= |lam1|: the semi-axis along w1 is the major one.
     const double major = pc.scale * std::sqrt(-k / lam[1]), minor = pc.scale * std::sqrt(-k / lam[0]);
     const bool circle = std::fabs(major - minor) <= kEps * major;
@@ -90,9 +109,11 @@ std::vector<Conic> parabolic(const PlaneConic& pc, double lam, const Eigen::Matr
     return {make(ConicType::kParabola, pc.world(R * Eigen::Vector2d(X0, Y0)), opens * w1, w0, focal, 0,
                  Contact::kTransversal)};
   }
-  if (touches(pc, R.col(0) * R.col(0).transpose() / lam))
+  const Eigen::Matrix2d Ainv = R.col(0) * R.col(0).transpose() / lam;
+  const bool cuts = k / lam < 0;
+  if (touches(pc, Ainv) && !(cuts && resolved_cut(pc, Ainv, pc.scale * std::sqrt(-k / lam))))
     return {make(ConicType::kLine, pc.world(R * Eigen::Vector2d(X0, 0)), w1, w0, 0, 0, Contact::kTangential)};
-  if (k / lam > 0) return {};
+  if (!cuts) return {};
   const double d = std::sqrt(-k / lam);
   return {make(ConicType::kLine, pc.world(R * Eigen::Vector2d(X0 + d, 0)), w1, w0, 0, 0, Contact::kTransversal),
           make(ConicType::kLine, pc.world(R * Eigen::Vector2d(X0 - d, 0)), w1, w0, 0, 0, Contact::kTransversal)};

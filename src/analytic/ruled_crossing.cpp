@@ -131,7 +131,7 @@ std::optional<SingularPointReport> ruled_node(const Problem& problem, const Rule
   SingularPointReport r;
   r.p = coefficient(branches[0], 0);
   r.x = problem.wrap(VecX(r.p));
-  r.type = "node";
+  r.type = SingularType::kNode;
   r.ak = "A1";
   r.multiplicity = 2;
   r.milnor = 1;

@@ -1,6 +1,11 @@
 // Viewer pages (html_writer.hpp).
 #include "ssimarch/io/html_writer.hpp"
 
+#include <optional>
+
+#include "ssimarch/surface/frame.hpp"
+#include "ssimarch/surface/unbounded.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <set>
@@ -99,9 +104,17 @@ nlohmann::json trace_page_data(const nlohmann::json& result, const Scene* scene,
         for (const Vec3& p : spec->starts) list.push_back({p.x(), p.y(), p.z()});
       }
     }
+    // An unbounded surface (surface/unbounded.hpp) is drawn over the bounded ones, as the trace
+    // clips it; over its nominal rectangle the picture would hide where the curves are.
+    std::optional<Box> bounded;
     for (const std::string& name : names) {
       const Surface& s = scene->surface(name);
-      surfaces[name] = mesh_json(s, surface_mesh(s, mesh));
+      if (!has_unbounded_direction(s)) bounded = bounded ? box_union(*bounded, s.box()) : s.box();
+    }
+    for (const std::string& name : names) {
+      const Surface& s = scene->surface(name);
+      const Surface drawn = bounded ? clipped_to(s, *bounded) : s;
+      surfaces[name] = mesh_json(drawn, surface_mesh(drawn, mesh));
     }
   }
   return {{"kind", "trace"},

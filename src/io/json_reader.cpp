@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "ssimarch/core/error.hpp"
+#include "ssimarch/core/input_files.hpp"
 
 namespace ssimarch {
 
@@ -124,6 +125,7 @@ std::string read_text_file(const std::filesystem::path& path, std::string_view w
     throw InputError(path.string(), "is a directory, not a " + std::string(what));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path.string(), "cannot be opened for reading");
+  note_input_file(path);
   std::string text;
   char chunk[1 << 16];
   while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {

@@ -10,6 +10,8 @@
 #include <mutex>
 #include <set>
 
+#include "ssimarch/core/input_files.hpp"
+
 namespace ssimarch {
 
 namespace fs = std::filesystem;
@@ -89,6 +91,7 @@ std::ostream& OutputFiles::open(const fs::path& destination) {
     return std::cout;
   }
   if (fs::is_directory(destination)) throw OutputError(destination.string() + ": is a directory, not a file");
+  refuse_input_as_output(destination);
   if (replaceable(destination)) f->temporary = temporary_for(destination);
   const fs::path& target = f->temporary.empty() ? destination : f->temporary;
   errno = 0;
@@ -120,6 +123,14 @@ void OutputFiles::commit() {
     track(f->temporary, false);
   }
   committed_ = true;
+}
+
+void refuse_input_as_output(const fs::path& destination) {
+  std::error_code ec;
+  if (!fs::is_regular_file(destination, ec)) return;  // a device or pipe is written in place, replaces nothing
+  if (const auto input = input_file_at(destination))
+    throw OutputError(destination.string() + ": is an input of this run (" + input->string() +
+                      "); it is not replaced: write the output to another file");
 }
 
 void remove_pending_outputs() noexcept {

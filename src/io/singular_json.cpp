@@ -27,7 +27,7 @@ nlohmann::json singular_points_to_json(const std::vector<SingularPointReport>& p
     }
     out.push_back(json{{"xyz", json::array({s.p.x(), s.p.y(), s.p.z()})},
                        {"params", array_of(s.x)},
-                       {"type", s.type},
+                       {"type", to_string(s.type)},
                        {"ak", s.ak},
                        {"multiplicity", s.multiplicity},
                        {"milnor", s.milnor},
@@ -35,6 +35,40 @@ nlohmann::json singular_points_to_json(const std::vector<SingularPointReport>& p
                        {"curves", s.curves}});
   }
   return out;
+}
+
+nlohmann::json singular_analysis_to_json(const SingularAnalysis& point) {
+  using nlohmann::json;
+  const Classification& kind = point.kind;
+  json branches = json::array();
+  for (const HalfBranch& b : point.branches) {
+    json terms = json::array();
+    for (const PuiseuxTerm& t : b.expansion.terms)
+      terms.push_back({{"exponent", t.exponent}, {"coefficient", t.coefficient}});
+    branches.push_back({{"tangent", array_of(b.tangent_3d)},
+                        {"param_tangent", array_of(b.param_tangent)},
+                        {"expansion",
+                         {{"coefficient", b.leading_coefficient},
+                          {"exponent", b.leading_exponent},
+                          {"normal", array_of(b.normal_3d)},
+                          {"terms", terms}}},
+                        {"branch", b.branch},
+                        {"continuation", b.continuation},
+                        {"exit", b.exit_ok ? array_of(b.exit_point) : json(nullptr)}});
+  }
+  json cone = json::array();
+  for (const auto& l : kind.tangent_cone)
+    cone.push_back({{"direction", array_of(point.curve.direction_3d(l.direction))}, {"multiplicity", l.multiplicity}});
+  return {{"xyz", array_of(point.location.point)},
+          {"params", array_of(point.location.x)},
+          {"type", std::string(to_string(kind.type))},
+          {"ak", kind.ak},
+          {"multiplicity", kind.multiplicity},
+          {"milnor", kind.milnor >= 0 ? json(kind.milnor) : json(nullptr)},
+          {"tangent_cone", cone},
+          {"gap", point.location.gap},
+          {"sine", point.location.sine},
+          {"half_branches", branches}};
 }
 
 }  // namespace ssimarch

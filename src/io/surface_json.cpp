@@ -66,6 +66,9 @@ Surface plane(const json& j, const Constants& c, const std::string& where) {
   const Vec3 p = json_vec3(f.at("point"), c, f.path("point"));
   const Vec3 n = direction(f.at("normal"), c, f.path("normal"));
   ParamDomain d{interval_or(f, "u", c, {-1, 1}), interval_or(f, "v", c, {-1, 1})};
+  // Without "u" / "v" the plane is unbounded that way (surface/unbounded.hpp; issue 29).
+  d.unbounded_u = !f.has("u");
+  d.unbounded_v = !f.has("v");
   const auto ref = reference(f, c, n);
   return build(where, [&] { return Plane(p, n, d, ref); });
 }
@@ -86,7 +89,11 @@ Surface cylinder(const json& j, const Constants& c, const std::string& where) {
   const double r = positive(f.at("radius"), c, f.path("radius"));
   const Interval range = interval_or(f, "range", c, {-1, 1});
   const auto ref = reference(f, c, axis);
-  return build(where, [&] { return Cylinder(p, axis, r, range, ref); });
+  return build(where, [&] {
+    Cylinder s(p, axis, r, range, ref);
+    s.mark_unbounded(false, !f.has("range"));  // infinite along its axis without "range"
+    return s;
+  });
 }
 
 Surface cone(const json& j, const Constants& c, const std::string& where) {
@@ -98,7 +105,11 @@ Surface cone(const json& j, const Constants& c, const std::string& where) {
     throw InputError(f.path("half_angle"), "must be in (0, pi/2) radians, got " + format_number(a));
   const Interval range = interval_or(f, "range", c, {0, 1});
   const auto ref = reference(f, c, axis);
-  return build(where, [&] { return Cone(apex, axis, a, range, ref); });
+  return build(where, [&] {
+    Cone s(apex, axis, a, range, ref);
+    s.mark_unbounded(false, !f.has("range"));  // both nappes, infinite, without "range"
+    return s;
+  });
 }
 
 Surface torus(const json& j, const Constants& c, const std::string& where) {
@@ -139,6 +150,8 @@ Surface paraboloid(const json& j, const Constants& c, const std::string& where) 
     fu = fv = positive(fl, c, fp);
   }
   ParamDomain d{interval_or(f, "u", c, {-1, 1}), interval_or(f, "v", c, {-1, 1})};
+  d.unbounded_u = !f.has("u");
+  d.unbounded_v = !f.has("v");
   const auto ref = reference(f, c, axis);
   return build(where, [&] { return Paraboloid(vtx, axis, fu, fv, d, ref); });
 }
@@ -173,9 +186,10 @@ Surface parametric(const json& j, const Constants& c, const std::string& where) 
     if (!p.is_array()) throw InputError(pp, "expected an array of parameter names such as [\"u\"], got " + json_kind(p));
     for (std::size_t i = 0; i < p.size(); ++i) {
       const json& e = p[i];
-      if (e == "u") d.periodic_u = true;
-      else if (e == "v") d.periodic_v = true;
-      else throw InputError(index_path(pp, i), "expected \"u\" or \"v\", got " + e.dump());
+      if (e != "u" && e != "v") throw InputError(index_path(pp, i), "expected \"u\" or \"v\", got " + e.dump());
+      bool& flag = e == "u" ? d.periodic_u : d.periodic_v;
+      if (flag) throw InputError(index_path(pp, i), e.dump() + " is named twice");
+      flag = true;
     }
   }
   return ExprParametric::compile(src, d, c, xp);

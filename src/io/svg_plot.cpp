@@ -80,7 +80,7 @@ void draw(SvgCanvas& svg, const Panel& p, double ox, int size) {
 template <class Map>
 void mark_singular_points(const TraceResult& r, Panel* p, Map map) {
   for (const auto* list : {&r.singular_points, &r.isolated_points})
-    for (const SingularPointReport& s : *list) p->marks.push_back({s.type, map(s)});
+    for (const SingularPointReport& s : *list) p->marks.push_back({std::string(to_string(s.type)), map(s)});
 }
 
 }  // namespace

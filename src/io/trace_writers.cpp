@@ -107,10 +107,10 @@ static json start_search_to_json(const StartPointSearch& s) {
   for (const UncertainRegion& u : s.uncertain_regions) {
     json box = json::array();
     for (const Interval& i : u.box) box.push_back({i.lo, i.hi});
-    regions.push_back(json{{"system", u.system}, {"reason", u.reason}, {"box", box}});
+    regions.push_back(json{{"system", u.system}, {"reason", to_string(u.reason)}, {"box", box}});
   }
-  return json{{"method", s.method}, {"certified", s.certified}, {"boxes", s.boxes}, {"time_ms", s.time_ms},
-              {"uncertain_regions", regions}, {"note", s.note}};
+  return json{{"method", to_string(s.method)}, {"certified", s.certified},     {"boxes", s.boxes},
+              {"time_ms", s.time_ms},          {"uncertain_regions", regions}, {"note", s.note}};
 }
 
 json to_json(const IntersectionRun& run) {

@@ -62,7 +62,7 @@ std::vector<TraceOptionRange> make_ranges() {
       field<&O::max_correction_ratio>("max_correction_ratio", at_least(0, true)),
       field<&O::max_points>("max_points", between(2, 1e15, false)),
       field<&O::max_length>("max_length", unbounded_length),
-      // The sampling search costs n^2 corrector runs (topology/start_points.cpp; docs/reliability.md).
+      // The sampling search costs n^2 corrector runs (start/start_points.cpp; docs/reliability.md).
       field<&O::start_samples>("start_samples",
                                between(2, 200, false,
                                        "each of the n^2 corrector runs costs up to about 0.3 ms (200: about 12 s; "

@@ -392,7 +392,7 @@ MarchResult Tracer::march_until_event(const CurvePoint& start_point, Direction d
     // passes that point first (a start moved half a step off a node lies beyond it), and the
     // caller must register the passage, or the node's half-branches stay unused and are traced
     // again (issue 11: every branch exactly once). The caller closes the loop at the located
-    // point when the target lies before it (topology/through_singular.cpp, closes_before).
+    // point when the target lies before it (trace/through_singular.cpp, closes_before).
     if (watch) {
       Event e = watch_event(m.cur, previous_rank, previous_middle, m.state.here, a);
       if (e.kind == EventKind::kSingularSuspected) {

@@ -2,9 +2,7 @@
 
 #include <limits>
 
-#include "ssimarch/singular/classify.hpp"
-#include "ssimarch/singular/half_branches.hpp"
-#include "ssimarch/singular/locate.hpp"
+#include "ssimarch/singular/analysis.hpp"
 
 namespace ssimarch {
 
@@ -30,11 +28,15 @@ CurveGeometry smooth_branch(const LocalCurve& curve, const HalfBranch& b) {
 
 std::optional<BranchGeometry> singular_branch_geometry(const Problem& problem, const VecX& x, const Vec3* toward,
                                                        double reach) {
-  const SingularLocation s = locate_singular_point(problem, x);
-  if (s.status != LocateStatus::kConverged || (s.point - problem.point(x)).norm() > reach) return std::nullopt;
-  const LocalCurve curve = local_curve(problem, s.x);
-  if (curve.status != LocalCurveStatus::kOk) return std::nullopt;
-  const std::vector<HalfBranch> branches = half_branches(problem, curve, classify(curve.h));
+  SingularAnalysisOptions options;
+  options.half_branches = false;  // after the reach test
+  SingularAnalysis a = analyse_singular_point(problem, x, options);
+  const SingularLocation& s = a.location;
+  if (s.status != LocateStatus::kConverged || (s.point - problem.point(x)).norm() > reach || !a.analysed())
+    return std::nullopt;
+  with_half_branches(problem, &a);
+  const LocalCurve& curve = a.curve;
+  const std::vector<HalfBranch>& branches = a.branches;
   if (branches.empty()) return std::nullopt;
   const HalfBranch* best = &branches.front();
   double best_cos = -std::numeric_limits<double>::infinity();

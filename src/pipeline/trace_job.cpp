@@ -13,7 +13,7 @@
 #include "ssimarch/pipeline/branch_geometry.hpp"
 #include "ssimarch/pipeline/face_clip.hpp"
 #include "ssimarch/singular/locate.hpp"
-#include "ssimarch/topology/trace_all.hpp"
+#include "ssimarch/trace/trace_all.hpp"
 
 namespace ssimarch {
 
@@ -71,7 +71,9 @@ void report_coincidence(const IntersectionSpec& spec, IntersectionRun* run_ptr) 
   // A closed form answers only distinct surfaces (closed_form.hpp: coincident ones are traced).
   // Surfaces in disjoint boxes share no region (and the tracer said so without work): skipping the
   // sampling here makes the empty pairs of a model's all-pairs batch cheap (issue 17).
-  if (!run.result.curves.empty() || run.result.start_search.method == "closed-form" || run.problem.disjoint()) return;
+  if (!run.result.curves.empty() || run.result.start_search.method == StartSearchMethod::kClosedForm ||
+      run.problem.disjoint())
+    return;
   // Coincident surfaces share a region, not a curve: say so rather than report "0 curves". The
   // distance test allows for the corrector's tolerance and the rounding of the model's size.
   const double tolerance = std::max(1e3 * spec.options.trace.tolerance, 1e-12 * run.problem.scale());

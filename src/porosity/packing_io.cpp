@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "ssimarch/core/error.hpp"
+#include "ssimarch/core/input_files.hpp"
 
 #include "ssimarch/porosity/packing.hpp"
 
@@ -165,6 +166,10 @@ Packing read_packing_csv(std::istream& in, const std::string& name, const InputL
     std::string h = header[k];
     if (h == "diameter") h = "d";
     if (h == "length") h = "l";
+    if (col.count(h) &&
+        (h == "x" || h == "y" || h == "z" || h == "d" || h == "ux" || h == "uy" || h == "uz" || h == "l"))
+      err.fatal(ln, "the header names column '" + h + "' twice (fields " + std::to_string(col[h] + 1) + " and " +
+                        std::to_string(k + 1) + ")");
     col[h] = k;
   }
   for (const char* req : {"x", "y", "z", "d"})
@@ -184,6 +189,12 @@ Packing read_packing_csv(std::istream& in, const std::string& name, const InputL
     const auto f = split(t, ',');
     if (f.size() < ncol) {
       err.add(ln, "expected " + std::to_string(ncol) + " fields, found " + std::to_string(f.size()));
+      continue;
+    }
+    if (std::any_of(f.begin() + static_cast<std::ptrdiff_t>(ncol), f.end(),
+                    [](const std::string& x) { return !trim(x).empty(); })) {
+      err.add(ln, "expected " + std::to_string(ncol) + " fields (the header's columns), found " +
+                      std::to_string(f.size()) + ": a row with more fields than the header has its columns shifted");
       continue;
     }
     auto get = [&](const char* c, double& v) {
@@ -219,6 +230,7 @@ Packing read_lammps_dump(std::istream& in, const std::string& name, const InputL
   bool have = false;
   long natoms = -1;
   double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
+  bool box = false;
   auto next = [&](std::string& s) {
     if (!reader.next(s)) return false;
     ln = reader.line_number();
@@ -247,6 +259,7 @@ Packing read_lammps_dump(std::istream& in, const std::string& name, const InputL
         lo[k] = *a;
         hi[k] = *b;
       }
+      box = true;
     } else if (t.rfind("ITEM: ATOMS", 0) == 0) {
       if (natoms < 0) err.fatal(ln, "'ITEM: ATOMS' before 'ITEM: NUMBER OF ATOMS'");
       const auto cols = split(t.substr(11), ' ');
@@ -262,14 +275,18 @@ Packing read_lammps_dump(std::istream& in, const std::string& name, const InputL
         else if (col.count(a + "s")) { cx[k] = a + "s"; scaled = true; }
         else err.fatal(ln, "ATOMS columns lack '" + a + "' (or " + a + "u, " + a + "s)");
       }
+      if (scaled && !box)
+        err.fatal(
+            ln, "scaled coordinates (xs, ys, zs) but no 'ITEM: BOX BOUNDS' before 'ITEM: ATOMS': their box is unknown");
       const bool has_r = col.count("radius") > 0, has_d = col.count("diameter") > 0;
       if (!has_r && !has_d) err.fatal(ln, "ATOMS columns lack 'radius' (or 'diameter'): only sphere dumps are supported");
       Packing snap;
       for (long i = 0; i < natoms; ++i) {
         if (!next(line)) err.fatal(ln, "file ends after " + std::to_string(i) + " of " + std::to_string(natoms) + " atoms");
         const auto f = split(trim(line), ' ');
-        if (f.size() < cols.size()) {
-          err.add(ln, "expected " + std::to_string(cols.size()) + " fields, found " + std::to_string(f.size()));
+        if (f.size() != cols.size()) {
+          err.add(ln, "expected " + std::to_string(cols.size()) + " fields (the ATOMS columns), found " +
+                          std::to_string(f.size()));
           continue;
         }
         Particle p;
@@ -305,8 +322,30 @@ Packing read_lammps_dump(std::istream& in, const std::string& name, const InputL
 }
 
 Packing read_packing(const std::filesystem::path& path, const InputLimits& limits, unsigned threads) {
+  note_input_file(path);
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw InputError(path.string(), "is a directory, not a packing file");
+  if (std::filesystem::is_regular_file(path, ec)) {
+    // Compressed dumps (LIGGGHTS and LAMMPS write *.gz) are named as such, not misread as text.
+    unsigned char magic[4] = {0, 0, 0, 0};
+    std::ifstream probe(path, std::ios::binary);
+    probe.read(reinterpret_cast<char*>(magic), sizeof magic);
+    const bool gzip = magic[0] == 0x1f && magic[1] == 0x8b,
+               zstd = magic[0] == 0x28 && magic[1] == 0xb5 && magic[2] == 0x2f;
+    const bool bzip2 = magic[0] == 'B' && magic[1] == 'Z' && magic[2] == 'h', xz = magic[0] == 0xfd && magic[1] == '7';
+    if (gzip || zstd || bzip2 || xz)
+      throw InputError(path.string(), std::string("is ") +
+                                          (gzip    ? "gzip"
+                                           : zstd  ? "zstd"
+                                           : bzip2 ? "bzip2"
+                                                   : "xz") +
+                                          "-compressed: decompress it first (e.g. " +
+                                          (gzip    ? "gunzip -k"
+                                           : zstd  ? "unzstd"
+                                           : bzip2 ? "bunzip2 -k"
+                                                   : "unxz -k") +
+                                          " FILE) and give the decompressed file");
+  }
   // Regular files: the streaming block reader (packing_share.cpp); devices and pipes: line by line.
   if (std::filesystem::is_regular_file(path, ec)) return read_packing_share(path, limits, nullptr, threads);
   std::ifstream in(path, std::ios::binary);

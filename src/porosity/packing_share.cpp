@@ -11,6 +11,7 @@
 #include <system_error>
 
 #include "ssimarch/core/error.hpp"
+#include "ssimarch/core/input_files.hpp"
 #include "ssimarch/porosity/packing.hpp"
 
 #include "particle_row_check.hpp"
@@ -109,7 +110,7 @@ struct RowErrors {
 // Where the numbers of a row are: CSV columns or LAMMPS ATOMS columns, and how to read them.
 struct Layout {
   char sep = ',';
-  bool lammps = false, sc = false, scaled = false, radius = false;
+  bool lammps = false, sc = false, scaled = false, radius = false, box = false;
   std::size_t ncol = 0;
   int col[8] = {-1, -1, -1, -1, -1, -1, -1, -1};  // x y z d ux uy uz l (d: radius or diameter)
   std::string name[8];
@@ -158,6 +159,10 @@ bool fast_row(std::string_view line, const Layout& L, double* v) {
       if (r.ec != std::errc() || r.ptr != e) return false;
     }
   }
+  // A field past the header's (a shifted column, issue 29): slow_row names it. Trailing blanks, and
+  // in CSV trailing empty fields (a separator at the end of the row), are no field.
+  for (; p < end; ++p)
+    if (!trimmed(*p) && (L.lammps || *p != L.sep)) return false;
   return true;
 }
 
@@ -170,6 +175,12 @@ bool slow_row(std::string_view line, const Layout& L, long ln, std::vector<std::
     err.add(ln, "expected " + std::to_string(L.ncol) + " fields, found " + std::to_string(f.size()));
     return false;
   }
+  for (std::size_t k = L.ncol; k < f.size(); ++k)
+    if (!trim(f[k]).empty()) {
+      err.add(ln, "expected " + std::to_string(L.ncol) + " fields (the header's columns), found " +
+                      std::to_string(f.size()) + ": a row with more fields than the header has its columns shifted");
+      return false;
+    }
   const int nvalues = L.sc ? 8 : 4;
   for (int k = 0; k < nvalues; ++k) {
     const auto x = number(f[static_cast<std::size_t>(L.col[k])]);
@@ -228,7 +239,13 @@ Layout csv_layout(const std::filesystem::path& path, const InputLimits& limits) 
     if (h == "diameter") h = "d";
     if (h == "length") h = "l";
     for (int j = 0; j < 8; ++j)
-      if (h == keys[j]) L.col[j] = static_cast<int>(k);
+      if (h == keys[j]) {
+        if (L.col[j] >= 0)
+          throw InputError(name + ":" + std::to_string(ln), "the header names column '" + std::string(keys[j]) +
+                                                                "' twice (fields " + std::to_string(L.col[j] + 1) +
+                                                                " and " + std::to_string(k + 1) + ")");
+        L.col[j] = static_cast<int>(k);
+      }
   }
   const std::string where = name + ":" + std::to_string(ln);
   for (int j = 0; j < 4; ++j)
@@ -277,6 +294,7 @@ Layout lammps_layout(const std::filesystem::path& path, std::uint64_t at, long a
         L.lo[k] = *a;
         L.hi[k] = *b;
       }
+      L.box = true;
     } else if (t.rfind("ITEM: ATOMS", 0) == 0) {
       split(t.substr(11), ' ', f);
       L.ncol = f.size();
@@ -295,6 +313,8 @@ Layout lammps_layout(const std::filesystem::path& path, std::uint64_t at, long a
           }
         if (L.col[k] < 0) fatal("ATOMS columns lack '" + a + "' (or " + a + "u, " + a + "s)");
       }
+      if (L.scaled && !L.box)
+        fatal("scaled coordinates (xs, ys, zs) but no 'ITEM: BOX BOUNDS' before 'ITEM: ATOMS': their box is unknown");
       L.radius = find("radius") >= 0;
       L.col[3] = L.radius ? find("radius") : find("diameter");
       L.name[3] = L.radius ? "radius" : "diameter";
@@ -434,6 +454,7 @@ bool starts_lammps(const std::filesystem::path& path, const InputLimits& limits)
 
 Packing read_packing_share(const std::filesystem::path& path, const InputLimits& limits,
                            const ProfileCommunicator* comm, unsigned threads) {
+  note_input_file(path);
   const std::string name = path.string();
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) throw InputError(name, "is not a regular file (a share is a byte range)");

@@ -1,5 +1,7 @@
 #include "ssimarch/problem/problem.hpp"
 
+#include "ssimarch/surface/unbounded.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -73,8 +75,20 @@ double parametric_extent(const Surface& s) {
 
 }  // namespace
 
+namespace {
+
+// A surface unbounded in a direction is clipped to the other surface's box, or both to a stated
+// box when both are unbounded (surface/unbounded.hpp; issue 29: a default must never cut the
+// intersection).
+Surface bounded_against(const Surface& s, const Surface& other) {
+  if (!has_unbounded_direction(s)) return s;
+  return clipped_to(s, has_unbounded_direction(other) ? unbounded_pair_region(s, other) : other.box());
+}
+
+}  // namespace
+
 Problem::Problem(Surface first, Surface second, PairKind kind)
-    : first_(std::move(first)), second_(std::move(second)), kind_(kind) {
+    : first_(bounded_against(first, second)), second_(bounded_against(second, first)), kind_(kind) {
   switch (kind_) {
     case PairKind::kParametricParametric: {
       if (!first_.is_parametric() || !second_.is_parametric())

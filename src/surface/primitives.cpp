@@ -111,7 +111,7 @@ Paraboloid::Paraboloid(const Vec3& vertex, const Vec3& axis, double focal_u, dou
   require_interval(rectangle.v, "paraboloid", "v");
   ku_ = 1.0 / (4 * fu_);
   kv_ = 1.0 / (4 * fv_);
-  domain_ = {rectangle.u, rectangle.v, false, false};
+  domain_ = {rectangle.u, rectangle.v, false, false, rectangle.unbounded_u, rectangle.unbounded_v};
   // World coordinate i = o_i + (t e0_i + k_u t^2 e2_i)|_{t=u} + (t e1_i + k_v t^2 e2_i)|_{t=v}:
   // a sum of two one-variable quadratics, each extreme at an end or at its stationary point.
   auto range = [](double lin, double quad, const Interval& t) {
@@ -136,7 +136,7 @@ Plane::Plane(const Vec3& point, const Vec3& normal, const ParamDomain& rectangle
     : frame_(Frame::from_axis(point, normal, reference, "plane")) {
   require_interval(rectangle.u, "plane", "u");
   require_interval(rectangle.v, "plane", "v");
-  domain_ = {rectangle.u, rectangle.v, false, false};
+  domain_ = {rectangle.u, rectangle.v, false, false, rectangle.unbounded_u, rectangle.unbounded_v};
   Vec3 p = frame_.to_world(rectangle.u.lo, rectangle.v.lo, 0.0);
   Box b{{p.x(), p.x()}, {p.y(), p.y()}, {p.z(), p.z()}};
   for (double u : {rectangle.u.lo, rectangle.u.hi})

@@ -11,7 +11,7 @@
 #include "ssimarch/analytic/closed_form.hpp"
 #include "ssimarch/analytic/quadric_form.hpp"
 #include "ssimarch/surface/primitives.hpp"
-#include "ssimarch/topology/trace_all.hpp"
+#include "ssimarch/trace/trace_all.hpp"
 
 namespace ssimarch {
 namespace {
@@ -72,7 +72,7 @@ TEST(QuadricPencil, PeersEllipsoidsAreTwoEllipsesThroughTwoNodes) {
   EXPECT_NEAR(total_length(r.result.curves), 21.2912863011, 1e-9);  // shared/peers/cases.jsonl
   ASSERT_EQ(r.result.singular_points.size(), 2u);
   for (const SingularPointReport& s : r.result.singular_points) {
-    EXPECT_EQ(s.type, "node");
+    EXPECT_EQ(s.type, SingularType::kNode);
     EXPECT_NEAR((s.p.cwiseAbs() - Vec3(0, 1.6, 0)).norm(), 0, 1e-12);
     EXPECT_EQ(s.curves.size(), 2u);
   }

@@ -1,6 +1,6 @@
 // The nodes of ruled sections reported from the closed form (analytic/ruled_crossing.hpp) against
 // the general machinery on the same pairs: the point located by singular/locate and classified
-// with its half-branches by topology/singular_registry (local curve of degree 10, Milnor number,
+// with its half-branches by trace/singular_registry (local curve of degree 10, Milnor number,
 // Puiseux expansions) — same type, position to 1e-12, same tangents up to order, same expansions.
 #include "ssimarch/analytic/ruled_crossing.hpp"
 
@@ -11,7 +11,7 @@
 #include "ssimarch/analytic/closed_form.hpp"
 #include "ssimarch/singular/locate.hpp"
 #include "ssimarch/surface/primitives.hpp"
-#include "ssimarch/topology/singular_registry.hpp"
+#include "ssimarch/trace/singular_registry.hpp"
 
 namespace ssimarch {
 namespace {
@@ -23,7 +23,7 @@ SingularPointReport general_report(const Problem& P, const Vec3& guess, Vec3* lo
   *located = at.point;
   SingularRegistry registry(P, 1e-6 * P.scale());
   const SingularNode& node = registry.node(registry.add(at));
-  return make_report(node.location, node.kind, node.branches);
+  return make_report(node);
 }
 
 double term(const std::vector<SingularPointReport::HalfBranch::Term>& e, double exponent) {
@@ -43,7 +43,7 @@ void expect_nodes_as_classified(const Problem& P, std::size_t nodes) {
     // Start the general search off the point, so that it finds the point itself.
     const SingularPointReport gen = general_report(P, cf.p + Vec3(2e-3, -1e-3, 1.5e-3), &located);
     EXPECT_LE((located - cf.p).norm(), 1e-12 * std::max(1.0, P.scale()));
-    EXPECT_EQ(cf.type, "node");
+    EXPECT_EQ(cf.type, SingularType::kNode);
     EXPECT_EQ(gen.type, cf.type);
     EXPECT_EQ(gen.ak, cf.ak);
     EXPECT_EQ(gen.multiplicity, cf.multiplicity);

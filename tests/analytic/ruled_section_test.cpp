@@ -9,7 +9,7 @@
 
 #include "ssimarch/analytic/closed_form.hpp"
 #include "ssimarch/surface/primitives.hpp"
-#include "ssimarch/topology/trace_all.hpp"
+#include "ssimarch/trace/trace_all.hpp"
 
 namespace ssimarch {
 namespace {
@@ -60,7 +60,7 @@ TEST(RuledSection, TwoEqualCylindersAreTwoEllipsesCrossingAtTwoNodes) {
   }
   ASSERT_EQ(r.result.singular_points.size(), 2u);
   for (const SingularPointReport& s : r.result.singular_points) {
-    EXPECT_EQ(s.type, "node");
+    EXPECT_EQ(s.type, SingularType::kNode);
     EXPECT_NEAR(std::fabs(s.p.y()), 1, 1e-10);
     EXPECT_NEAR(std::hypot(s.p.x(), s.p.z()), 0, 1e-10);
     EXPECT_EQ(s.curves.size(), 2u);
@@ -78,7 +78,7 @@ TEST(RuledSection, VivianiIsOneClosedCurveThroughItsNode) {
   // integral_0^{4 pi} sqrt(1 + cos^2(s/2)) ds = 4 sqrt(2) E(1/2) (Viviani's curve).
   EXPECT_NEAR(r.result.curves[0].length, 15.280791156174, 1e-9);
   ASSERT_EQ(r.result.singular_points.size(), 1u);
-  EXPECT_EQ(r.result.singular_points[0].type, "node");
+  EXPECT_EQ(r.result.singular_points[0].type, SingularType::kNode);
   EXPECT_NEAR((r.result.singular_points[0].p - Vec3(0, -2, 0)).norm(), 0, 1e-10);
 }
 

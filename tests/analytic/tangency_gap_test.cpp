@@ -51,8 +51,9 @@ TEST(TangencyGap, SpherePlaneNearContactIsTheExactCircle) {
 
 TEST(TangencyGap, SpherePlaneWithinTheToleranceIsOneContactPoint) {
   const Vec3 centre(0.3, -0.2, 1.1), n = Vec3(1, 2, 2).normalized();
-  // Gap 0, half the tolerance into the sphere, half the tolerance short of it: the tangent point.
-  for (double g : {0.0, 0.5 * kTolerance, -0.5 * kTolerance}) {
+  // Gap 0, and half the tolerance short of the sphere: the tangent point (the surfaces are within
+  // the tolerance of each other there and nowhere cross).
+  for (double g : {0.0, -0.5 * kTolerance}) {
     SCOPED_TRACE(g);
     const auto r = solve(Sphere(centre, 1), Plane(centre - (1 - g) * n, n, ParamDomain{{-3, 3}, {-3, 3}}));
     EXPECT_TRUE(r.result.curves.empty());
@@ -63,6 +64,31 @@ TEST(TangencyGap, SpherePlaneWithinTheToleranceIsOneContactPoint) {
   const auto miss = solve(Sphere(centre, 1), Plane(centre - (1 + 10 * kTolerance) * n, n, ParamDomain{{-3, 3}, {-3, 3}}));
   EXPECT_TRUE(miss.result.curves.empty());
   EXPECT_TRUE(miss.result.isolated_points.empty());
+}
+
+// Issue 26: a plane that cuts the sphere by a gap within the tolerance but above rounding meets it
+// in a circle of radius sqrt(g (2R - g)), here 1e-6 to 1.4e-6: a million tolerances, not a point.
+// Its radius comes from coefficients of size ~R^2 whose rounding is ~1e-14, a few per cent of
+// g: the circle's points are within the tolerance of both surfaces all the same.
+TEST(TangencyGap, ACutWithinTheToleranceIsTheCircleItCuts) {
+  const Vec3 centre(0.3, -0.2, 1.1), n = Vec3(1, 2, 2).normalized();
+  for (double g : {0.5 * kTolerance, kTolerance}) {
+    SCOPED_TRACE(g);
+    const Sphere sphere(centre, 1);
+    const Plane plane(centre - (1 - g) * n, n, ParamDomain{{-3, 3}, {-3, 3}});
+    const auto r = solve(sphere, plane);
+    EXPECT_TRUE(r.result.isolated_points.empty());
+    ASSERT_EQ(r.conics.size(), 1u);
+    EXPECT_EQ(r.conics[0].type, ConicType::kCircle);
+    const double radius = std::sqrt(g * (2 - g));
+    EXPECT_NEAR(r.conics[0].a, radius, 0.05 * radius);
+    ASSERT_EQ(r.result.curves.size(), 1u);
+    EXPECT_TRUE(r.result.curves[0].closed);
+    for (const CurvePoint& p : r.result.curves[0].points) {
+      EXPECT_LE(std::fabs((p.p - centre).norm() - 1), kTolerance);
+      EXPECT_LE(std::fabs((p.p - (centre - (1 - g) * n)).dot(n)), kTolerance);
+    }
+  }
 }
 
 // The same criterion for two spheres (the coaxial closed form): a gap of 1e-10 is a circle of the
@@ -96,9 +122,20 @@ TEST(TangencyGap, SphereInANarrowerCylinderIsTwoCircles) {
     EXPECT_EQ(c.contact, Contact::kTransversal);
     EXPECT_NEAR(std::fabs(c.center.z()), std::sqrt(g * (2 * R - g)), radius_tolerance(R, std::sqrt(2 * R * g)));
   }
-  const auto equal = solve(Sphere(Vec3::Zero(), R), Cylinder(Vec3::Zero(), Vec3::UnitZ(), R - 0.5 * kTolerance, {-3, 3}));
-  ASSERT_EQ(equal.conics.size(), 1u);
-  EXPECT_EQ(equal.conics[0].contact, Contact::kTangential);
+  // The equal cylinder (and one narrower by less than rounding): the double circle of contact.
+  for (double d : {0.0, 1e-15}) {
+    const auto equal = solve(Sphere(Vec3::Zero(), R), Cylinder(Vec3::Zero(), Vec3::UnitZ(), R - d, {-3, 3}));
+    ASSERT_EQ(equal.conics.size(), 1u) << d;
+    EXPECT_EQ(equal.conics[0].contact, Contact::kTangential) << d;
+  }
+  // Issue 26: half a tolerance narrower, the cylinder still cuts the sphere in two circles
+  // 2 sqrt(2 R g) = 2.8e-6 apart, a million tolerances: two circles, as the geometry says.
+  const double half = 0.5 * kTolerance;
+  const auto close = solve(Sphere(Vec3::Zero(), R), Cylinder(Vec3::Zero(), Vec3::UnitZ(), R - half, {-3, 3}));
+  ASSERT_EQ(close.conics.size(), 2u);
+  for (const Conic& c : close.conics) EXPECT_EQ(c.contact, Contact::kTransversal);
+  EXPECT_NEAR(std::fabs(close.conics[0].center.z() - close.conics[1].center.z()), 2 * std::sqrt(half * (2 * R - half)),
+              0.05 * std::sqrt(half * R));
 }
 
 }  // namespace

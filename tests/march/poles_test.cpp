@@ -13,7 +13,7 @@
 #include "ssimarch/problem/curve_jet.hpp"
 #include "ssimarch/surface/degenerate_edges.hpp"
 #include "ssimarch/surface/primitives.hpp"
-#include "ssimarch/topology/trace_all.hpp"
+#include "ssimarch/trace/trace_all.hpp"
 #include "testing/nurbs_sphere.hpp"
 
 namespace ssimarch {

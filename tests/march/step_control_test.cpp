@@ -7,7 +7,7 @@
 #include "testing/surface_pairs.hpp"
 #include "march/exact_curves.hpp"
 #include "ssimarch/problem/curve_jet.hpp"
-#include "ssimarch/topology/trace_all.hpp"
+#include "ssimarch/trace/trace_all.hpp"
 #include "ssimarch/surface/sphere.hpp"
 
 namespace ssimarch {

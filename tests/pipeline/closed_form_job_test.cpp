@@ -51,7 +51,7 @@ TEST(ClosedFormJob, AgreesWithTheTracedAnswer) {
     const Pair p = both(scene, name);
     ASSERT_EQ(p.exact.conics.size(), p.exact.result.curves.size());
     EXPECT_TRUE(p.traced.conics.empty());
-    EXPECT_EQ(p.exact.result.start_search.method, "closed-form");
+    EXPECT_EQ(p.exact.result.start_search.method, StartSearchMethod::kClosedForm);
     ASSERT_EQ(p.exact.result.curves.size(), p.traced.result.curves.size());
     double le = 0, lt = 0;
     for (std::size_t c = 0; c < p.exact.result.curves.size(); ++c) {
@@ -84,7 +84,7 @@ TEST(ClosedFormJob, PointsAreExactAndTheOptionTurnsItOff) {
     EXPECT_NEAR(q.p.x() * q.p.x() + q.p.y() * q.p.y(), 1, 1e-14);
     EXPECT_NEAR(q.p.z(), 0.5 * q.p.x(), 1e-14);
   }
-  EXPECT_EQ(p.traced.result.start_search.method == "closed-form", false);
+  EXPECT_EQ(p.traced.result.start_search.method == StartSearchMethod::kClosedForm, false);
 }
 
 }  // namespace

@@ -192,4 +192,55 @@ TEST_F(porosity_Cli, GeneratorOptionsAreBoundedAndItsPromiseHolds) {
   EXPECT_EQ(ok.out.find("max overlap"), std::string::npos) << ok.out;
 }
 
+// Issue 29: inputs that were read wrongly or silently, each a clean error naming file, line or flag.
+TEST_F(porosity_Cli, StrictInputsAreRefusedWithTheRule) {
+  auto write = [&](const char* name, const std::string& text) {
+    std::ofstream(p(name)) << text;
+    return p(name);
+  };
+  const std::string ok = write("ok.csv", "x,y,z,d\n0,0,1,1\n");
+  // A row with a field past the header's: a shifted id column must not be read as coordinates.
+  CliRun extra = run("porosity " + write("extra.csv", "x,y,z,d\n0,0,1,1\n7,0,0,1,1\n") + " --container-radius 3");
+  EXPECT_EQ(extra.status, 2) << extra.out;
+  EXPECT_NE(extra.out.find("extra.csv:3"), std::string::npos) << extra.out;
+  EXPECT_NE(extra.out.find("more fields than the header"), std::string::npos) << extra.out;
+  // A trailing separator is no field.
+  EXPECT_EQ(
+      run("porosity " + write("trailing.csv", "x,y,z,d\n0,0,1,1,\n") + " --container-radius 3 -o " + p("t.csv")).status,
+      0);
+  CliRun twice = run("porosity " + write("twice.csv", "x,y,z,d,x\n0,0,1,1,0\n") + " --container-radius 3");
+  EXPECT_EQ(twice.status, 2);
+  EXPECT_NE(twice.out.find("names column 'x' twice (fields 1 and 5)"), std::string::npos) << twice.out;
+  CliRun scaled =
+      run("porosity " +
+          write("scaled.dump",
+                "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n1\nITEM: ATOMS id xs ys zs radius\n1 0.5 0.5 0.5 0.5\n") +
+          " --container-radius 3");
+  EXPECT_EQ(scaled.status, 2);
+  EXPECT_NE(scaled.out.find("no 'ITEM: BOX BOUNDS'"), std::string::npos) << scaled.out;
+  CliRun gz = run("porosity " + write("bed.dump.gz", std::string("\x1f\x8b\x08\x00rest", 8)) + " --container-radius 3");
+  EXPECT_EQ(gz.status, 2);
+  EXPECT_NE(gz.out.find("is gzip-compressed"), std::string::npos) << gz.out;
+  for (const char* flag : {"--radii", "--bins", "--axial"}) {
+    CliRun zero = run("porosity " + ok + " --container-radius 3 " + flag + " 0");
+    EXPECT_EQ(zero.status, 2) << flag;
+    EXPECT_NE(zero.out.find(std::string(flag) + ": must be a positive number, got 0"), std::string::npos) << zero.out;
+  }
+}
+
+// Issue 29: an output that names an input is refused before anything is written; the input stays.
+TEST_F(porosity_Cli, AnOutputNeverReplacesTheInput) {
+  std::ofstream(p("bed.csv")) << "x,y,z,d\n0,0,1,1\n";
+  CliRun r = run("porosity " + p("bed.csv") + " --container-radius 3 -o " + p("bed.csv"));
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_NE(r.out.find("is an input of this run"), std::string::npos) << r.out;
+  EXPECT_EQ(lines(p("bed.csv")), (std::vector<std::string>{"x,y,z,d", "0,0,1,1"}));
+  // Another spelling of the same file, and a plot onto it, too.
+  CliRun plot = run("porosity " + p("bed.csv") + " --container-radius 3 -o " + p("out.csv") + " --plot " +
+                    dir_.string() + "/./bed.csv");
+  EXPECT_EQ(plot.status, 2) << plot.out;
+  EXPECT_FALSE(fs::exists(p("out.csv")));
+  EXPECT_EQ(lines(p("bed.csv")).size(), 2u);
+}
+
 }  // namespace

@@ -62,9 +62,9 @@ TRACE_CHILD = textwrap.dedent("""
     print("start", flush=True)
     t0 = time.monotonic()
     try:
-        # Seconds: a step of R/20000 along Viviani's curve (150 000 points; at R/4000 an idle
+        # About ten seconds: a step of R/66000 along Viviani's curve (500 000 points; at R/4000 an idle
         # machine finished within the test's 0.3 s wait).
-        ssimarch.trace(sys.argv[1], only="viviani", step_length=0.0001, max_points=10000000)
+        ssimarch.trace(sys.argv[1], only="viviani", step_length=0.00003, max_points=10000000)
         print("finished", time.monotonic() - t0, flush=True)
     except KeyboardInterrupt:
         print("interrupted", time.monotonic() - t0, flush=True)

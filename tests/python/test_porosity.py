@@ -178,3 +178,19 @@ def test_de_klerk_is_the_published_formula():
     expected = np.where(x <= 0.637, 2.14 * x**2 - 2.53 * x + 1,
                         eb + 0.29 * np.exp(-0.6 * x) * np.cos(2.3 * np.pi * (x - 0.16)) + 0.15 * np.exp(-0.9 * x))
     np.testing.assert_allclose(porosity.de_klerk(x, eb), expected, rtol=1e-14)
+
+
+def test_overlapping_particles_are_a_warning_and_strict_is_the_warning_filter():
+    # Issue 29: two overlapping spheres gave -0.146 with no word. The union issue (30) will count
+    # the common volume once; until then the double count is said, as the CLI says it.
+    two = np.array([[0.0, 0.0, 0.0, 1.0], [0.3, 0.0, 0.0, 1.0]])
+    with pytest.warns(RuntimeWarning, match="pair of particles overlap.*counted twice"):
+        porosity.bulk(two, R)
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        with pytest.raises(RuntimeWarning):
+            porosity.radial(two, R, 10)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        porosity.bulk(ONE, R)  # one sphere: no warning

@@ -5,7 +5,7 @@ import * as THREE from 'three';
 import { Line2 } from 'three/addons/lines/Line2.js';
 import { LineGeometry } from 'three/addons/lines/LineGeometry.js';
 import { LineMaterial } from 'three/addons/lines/LineMaterial.js';
-import { branchColor, colormap, cssColor, robustRange, surfaceColors } from './colors.js';
+import { branchColor, colormap, robustRange, surfaceColors } from './colors.js';
 import { ParamPanel } from './param_panel.js';
 import { Labels } from './labels.js';
 import { checkbox, el, fmt, vec } from './dom.js';

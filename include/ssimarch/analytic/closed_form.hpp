@@ -12,7 +12,7 @@
 
 #include "ssimarch/analytic/conic.hpp"
 #include "ssimarch/march/options.hpp"
-#include "ssimarch/march/result.hpp"
+#include "ssimarch/trace/result.hpp"
 #include "ssimarch/problem/problem.hpp"
 
 namespace ssimarch {

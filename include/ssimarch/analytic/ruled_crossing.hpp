@@ -8,14 +8,14 @@
 // curve in the ruling coordinates (theta, t), hence in space (the rulings parametrise the
 // cylinder or cone regularly away from the apex, which is not on the curve). Their jets in theta
 // give the tangents and the Puiseux (here Taylor) expansions of the four half-branches exactly,
-// in the frame and form of the general classifier (topology/singular_registry.hpp): no local
+// in the frame and form of the general classifier (trace/singular_registry.hpp): no local
 // curve, no classification, no circle search.
 #pragma once
 
 #include <optional>
 
 #include "ssimarch/analytic/ruled_section.hpp"
-#include "ssimarch/march/result.hpp"
+#include "ssimarch/trace/result.hpp"
 #include "ssimarch/problem/problem.hpp"
 
 namespace ssimarch {

@@ -42,6 +42,11 @@ class OutputFiles {
   bool committed_ = false;
 };
 
+/// Throws OutputError when `destination` is the same file as one this run has read
+/// (core/input_files.hpp): an output never replaces an input. OutputFiles::open checks it; a
+/// command checks it early too, before the work, once its inputs are read.
+void refuse_input_as_output(const std::filesystem::path& destination);
+
 /// Removes the temporaries of every OutputFiles not yet committed (for a watchdog that ends the
 /// process when the run exceeds its time budget; thread-safe).
 void remove_pending_outputs() noexcept;

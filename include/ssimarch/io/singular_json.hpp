@@ -5,7 +5,8 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
-#include "ssimarch/march/result.hpp"
+#include "ssimarch/singular/analysis.hpp"
+#include "ssimarch/trace/result.hpp"
 
 namespace ssimarch {
 
@@ -14,5 +15,12 @@ namespace ssimarch {
 /// expansion is the leading term w = coefficient X^exponent of the half-branch's offset from its
 /// tangent line at distance X (model units).
 nlohmann::json singular_points_to_json(const std::vector<SingularPointReport>& points);
+
+/// One analysed singular point as `ssimarch singular --json` writes it (docs/singular.md):
+/// {"xyz", "params", "type", "ak", "multiplicity", "milnor", "tangent_cone": [{"direction",
+/// "multiplicity"}], "gap", "sine", "half_branches": [{"tangent", "param_tangent", "expansion":
+/// {"coefficient", "exponent", "normal", "terms"}, "branch", "continuation", "exit"}]}; "milnor" is
+/// null where infinite or beyond the local jet, "exit" null where no exit point was found.
+nlohmann::json singular_analysis_to_json(const SingularAnalysis& point);
 
 }  // namespace ssimarch

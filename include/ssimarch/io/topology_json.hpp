@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "ssimarch/topology/curve_network.hpp"
+#include "ssimarch/network/curve_network.hpp"
 
 namespace ssimarch {
 

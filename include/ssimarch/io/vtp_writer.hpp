@@ -22,7 +22,7 @@ namespace ssimarch {
 /// Field data: "intersection_names".
 VtkPolyData curves_poly_data(const std::vector<IntersectionRun>& runs);
 
-/// The vertices of each run's curve network (topology/curve_network.hpp), one vertex cell each.
+/// The vertices of each run's curve network (network/curve_network.hpp), one vertex cell each.
 /// Point data: "kind" (0 singular point, 1 isolated point, 2 boundary end, 3 interior end),
 /// "type" (the singular point's type, e.g. "node", or the kind's name for ends), "params",
 /// "intersection". Field data: "kind_names", "intersection_names".

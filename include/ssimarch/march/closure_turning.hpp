@@ -36,7 +36,7 @@ namespace ssimarch {
 /// pole of the parametrisation), so the turning is not determined by the points (an atan2 in
 /// (-pi, pi] cannot tell a turn of 3 rad from one of -3.28). Cusps at singular points (a turn
 /// near pi) are corners of a piecewise regular curve (Def. 2), allowed there by
-/// topology/rotation_index.cpp. About 115 degrees: well above the tracer's max_turn_angle
+/// network/rotation_index.cpp. About 115 degrees: well above the tracer's max_turn_angle
 /// (0.6 rad in space), well below pi.
 inline constexpr double kRotationMaxChordTurn = 2.0;  // rad
 

@@ -44,7 +44,7 @@ std::optional<CurvePoint> leave_pole(const Problem& problem, const Pole& pole, c
 /// Unknowns whose 3D point is near q, a point just beyond the pole (|q - P| small): the pole's
 /// surface in the chart of the meridian leaving P towards q, the other surface (parametric) by
 /// its nearest point; not corrected. For continuations through a pole other than the tracer's
-/// (the curves of tangential contact, topology/tangential_contact.hpp).
+/// (the curves of tangential contact, trace/tangential_contact.hpp).
 UnknownVec unknowns_beyond_pole(const Problem& problem, const Pole& pole, const UnknownVec& x, const Vec3& q);
 
 }  // namespace ssimarch

@@ -1,5 +1,6 @@
-// What a trace returns: curves as polylines of points on both surfaces, why each end stopped,
-// and the work it took.
+// What a march returns: curves as polylines of points on both surfaces, why each end stopped,
+// and the work it took. What a whole trace returns (start-point search, singular points) is
+// owned by the stages that make it: start/start_search.hpp, trace/result.hpp.
 #pragma once
 
 #include <array>
@@ -42,7 +43,7 @@ struct TracedCurve {
   Termination end_end = Termination::kClosedLoop;
   std::string start_message, end_message;  // details, e.g. the singular point's rank ratio
   // A curve of tangential contact: the surfaces touch all along it (every point singular;
-  // traced by topology/tangential_contact.hpp, not marched).
+  // traced by trace/tangential_contact.hpp, not marched).
   bool tangential_contact = false;
 };
 
@@ -67,62 +68,6 @@ struct TraceStats {
     surface_evaluations[1] += e[1];
   }
   TraceStats& operator+=(const TraceStats& o);
-};
-
-/// A box of the unknowns in which the certified start-point search decided nothing: it may hold
-/// a start point that was not found (docs/topology.md).
-struct UncertainRegion {
-  std::vector<Interval> box;  // one interval per unknown of H
-  std::string system;         // the square system searched, e.g. "boundary u = 0", "turning du = 0"
-  std::string reason;         // "budget spent" or "singular or non-isolated root"
-};
-
-/// How the start points were found, and what is guaranteed (docs/topology.md).
-struct StartPointSearch {
-  std::string method = "sampling";  // "certified", "sampling" or "given"
-  bool certified = false;   // every branch in the domain has a start point (every box decided)
-  long boxes = 0;           // boxes examined by the certified search
-  double time_ms = 0;
-  std::vector<UncertainRegion> uncertain_regions;
-  std::string note;         // why sampling was used, or what the certificate does not cover
-};
-
-/// A singular point met by the trace (or hunted), as found by singular/ (docs/singular.md).
-struct SingularPointReport {
-  VecX x;                 // the unknowns of H
-  Vec3 p = Vec3::Zero();  // the 3D point
-  std::string type;       // "node", "cusp", "tacnode", ... (singular/classify.hpp)
-  std::string ak;         // "A1", "D4", ...; empty where none applies
-  int multiplicity = 0;
-  int milnor = -1;        // -1 where infinite or beyond the local jet
-  struct HalfBranch {
-    Vec3 tangent = Vec3::Zero();  // unit 3D tangent leaving the point
-    VecX param_tangent;           // the same in the unknowns (per unit length)
-    // Leading term of the offset from the tangent line along `normal`, w = coefficient X^exponent
-    // (model units; exponent 0: straight within resolution), measured before the expansion's
-    // refinement: the same frame and sign as expansion[0].
-    double coefficient = 0, exponent = 0;
-    int continuation = -1;  // index of the half-branch that continues this one through the point
-    // Puiseux expansion of the offset along `normal` (unit, 3D): w = sum coefficient X^exponent,
-    // X >= 0 the distance along the tangent, up to exponent 6 (singular/puiseux.hpp).
-    struct Term {
-      double exponent = 0, coefficient = 0;
-    };
-    std::vector<Term> expansion;
-    Vec3 normal = Vec3::Zero();
-  };
-  std::vector<HalfBranch> half_branches;
-  std::vector<int> curves;  // indices of the curves through the point
-};
-
-struct TraceResult {
-  std::vector<TracedCurve> curves;
-  std::vector<SingularPointReport> singular_points;  // met by the curves (thesis ch. 5-6)
-  std::vector<SingularPointReport> isolated_points;  // no real branch through them (hunted)
-  TraceStats stats;
-  StartPointSearch start_search;
-  std::vector<std::string> warnings;  // e.g. a start point that could not be put on the curve
-  int failed_starts = 0;              // given start points that could not be put on the curve
 };
 
 }  // namespace ssimarch

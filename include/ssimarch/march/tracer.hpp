@@ -2,8 +2,8 @@
 // predictor, a corrector and a step rule until an event (thesis ch. 4; docs/marching.md):
 // the curve closed, reached the domain edge, came to a suspected singular point or to a curve
 // traced before, exhausted a budget, or could take no step at a regular point. Whole-curve and
-// whole-problem tracing (start points, both directions, skipping traced curves) live in
-// topology/.
+// whole-problem tracing live in the stages above: start points in start/, both directions,
+// skipping traced curves and singular points in trace/, the curve network in network/.
 //
 // Properties:
 //  (1) every accepted point is within options.tolerance (model units) of both surfaces;

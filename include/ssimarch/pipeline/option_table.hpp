@@ -23,7 +23,7 @@ struct TraceJobOptions {
   bool bspline = false;                    // a certified B-spline and p-curves per curve (geometry/curve_spline.hpp)
   CurveSplineOptions spline;               // its tolerance
   bool closed_form = true;  // answer primitive pairs with a closed form exactly (analytic/closed_form.hpp)
-  bool hunt_isolated_points = true;        // TraceAllOptions::hunt_isolated_points (topology/trace_all.hpp)
+  bool hunt_isolated_points = true;  // TraceAllOptions::hunt_isolated_points (trace/trace_all.hpp)
 };
 
 /// A value as the user wrote it: a JSON number, or text (a name such as "taylor", or a number

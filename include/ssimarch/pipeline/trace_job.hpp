@@ -10,10 +10,10 @@
 
 #include "ssimarch/analytic/conic.hpp"
 #include "ssimarch/geometry/curve_geometry.hpp"
-#include "ssimarch/march/result.hpp"
+#include "ssimarch/trace/result.hpp"
 #include "ssimarch/pipeline/coincidence.hpp"
 #include "ssimarch/pipeline/scene.hpp"
-#include "ssimarch/topology/curve_network.hpp"
+#include "ssimarch/network/curve_network.hpp"
 
 namespace ssimarch {
 

@@ -46,6 +46,8 @@ struct GeneratorReport {
   double height = 0.0;       ///< container height used (RSA) or top of the bed (spheres)
   double max_overlap = 0.0;  ///< largest overlap depth found between particles, model length
   long unstable = 0;         ///< spheres whose roll broke its termination bound (left where they were; 0 unless a bug)
+  long roll_passes = 0;      ///< roll passes of all spheres (drop-and-roll): the work, a few dozen per sphere
+  long max_roll_passes = 0;  ///< the most passes one sphere took
 };
 
 /// Both throw InputError, located by the option's field name (e.g. "diameter"), for impossible options.

@@ -2,7 +2,7 @@
 // in one place beside problem/singular_tolerances.hpp, each with its unit and why it has its
 // value. Like those, they decide "tangential" (a double root, a touching point) and "degenerate"
 // (a member of a pencil of rank < 3); all are relative, so scale-free. The last one is the
-// primitives' implicit forms standing in for their parametric forms (topology/patch_exclusion).
+// primitives' implicit forms standing in for their parametric forms (start/patch_exclusion).
 #pragma once
 
 #include <algorithm>
@@ -105,7 +105,7 @@ inline constexpr double kTrigRootCluster = 1e-4;
 /// same stored frame, which is orthonormal to a few ulps, so f(F(u, v)) is a few 1e-16 of the
 /// size (the implicit forms are normalised to a distance to first order). The interval search of
 /// a parametric-parametric pair excludes a patch of F whose enclosure of f_G misses
-/// [-slack, slack] (topology/patch_exclusion.hpp); 1e-9 leaves six orders above that rounding
+/// [-slack, slack] (start/patch_exclusion.hpp); 1e-9 leaves six orders above that rounding
 /// and costs nothing in exclusion (a patch is excluded when it misses G by far more).
 /// Dimensionless; default 1e-9.
 inline constexpr double kImplicitFormSlack = 1e-9;

@@ -18,6 +18,7 @@
 #include <string_view>
 #include <vector>
 
+#include "ssimarch/problem/singular_tolerances.hpp"
 #include "ssimarch/singular/local_jet.hpp"
 
 namespace ssimarch {
@@ -45,7 +46,7 @@ std::string_view to_string(SingularType t);
 struct ClassifyOptions {
   // Coefficients of h below zero_tolerance * (largest |coefficient| of degree >= 2) are zero
   // (relative; thesis §5.2.5 coefficient tests, done as exact zero tests with a tolerance relative to the coefficient scale).
-  double zero_tolerance = 1e-8;
+  double zero_tolerance = kClassifyZeroTolerance;
 };
 
 /// A real line of the tangent cone: unit direction in (s, t) and multiplicity as a root of the

@@ -62,7 +62,7 @@ struct HuntOptions {
   std::function<bool(const VecX&)> consider;
   // Starts x0 for which this returns true, given the grid step per unknown of the box being
   // sampled, are not tried: x0's cell provably holds no singular point (an interval test,
-  // topology/patch_exclusion.hpp); empty: every start.
+  // start/patch_exclusion.hpp); empty: every start.
   std::function<bool(const VecX& x0, const VecX& step)> holds_none;
   // Called with each new singular point as soon as it is found (before the next start), so that
   // `skip` can account for what the caller derived from it.

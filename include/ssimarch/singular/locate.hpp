@@ -13,6 +13,7 @@
 #pragma once
 
 #include "ssimarch/problem/problem.hpp"
+#include "ssimarch/problem/singular_tolerances.hpp"
 #include "ssimarch/singular/local_curve.hpp"
 
 namespace ssimarch {
@@ -22,8 +23,9 @@ struct LocateOptions {
   int max_inner_iterations = 600;  // Gauss-Newton steps on one polynomial
   double trust_radius = 0.1;     // largest move per expansion, as a fraction of Problem::scale(); also
                                  // at most the polynomial's radius of faithfulness (root test)
-  double gap_tolerance = 1e-10;  // model units (times max(1, scale)): |h| at a point where the surfaces meet
-  double sine_tolerance = 1e-6;  // |grad h| = sine of the angle between the normals at a singular point
+  double gap_tolerance =
+      kLocateGapTolerance;  // model units (times max(1, scale)): |h| at a point where the surfaces meet
+  double sine_tolerance = kLocateSineTolerance;  // |grad h| = sine of the angle between the normals at a singular point
 };
 
 enum class LocateStatus {

@@ -32,6 +32,11 @@ class Cone {
   double half_angle() const { return alpha_; }
   const Interval& range() const { return domain_.v; }
   const ParamDomain& domain() const { return domain_; }
+  /// Marks parameter directions as unbounded (ParamDomain::unbounded_u/v; surface/unbounded.hpp).
+  void mark_unbounded(bool u, bool v) {
+    domain_.unbounded_u = u;
+    domain_.unbounded_v = v;
+  }
   const Box& box() const { return box_; }
 
   template <class T>

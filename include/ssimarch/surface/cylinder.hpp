@@ -26,6 +26,11 @@ class Cylinder {
   double radius() const { return r_; }
   const Interval& range() const { return domain_.v; }
   const ParamDomain& domain() const { return domain_; }
+  /// Marks parameter directions as unbounded (ParamDomain::unbounded_u/v; surface/unbounded.hpp).
+  void mark_unbounded(bool u, bool v) {
+    domain_.unbounded_u = u;
+    domain_.unbounded_v = v;
+  }
   const Box& box() const { return box_; }
 
   template <class T>

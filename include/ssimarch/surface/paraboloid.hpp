@@ -30,6 +30,11 @@ class Paraboloid {
   double focal_u() const { return fu_; }
   double focal_v() const { return fv_; }
   const ParamDomain& domain() const { return domain_; }
+  /// Marks parameter directions as unbounded (ParamDomain::unbounded_u/v; surface/unbounded.hpp).
+  void mark_unbounded(bool u, bool v) {
+    domain_.unbounded_u = u;
+    domain_.unbounded_v = v;
+  }
   const Box& box() const { return box_; }
 
   template <class T>

@@ -20,6 +20,11 @@ class Plane {
   const Frame& frame() const { return frame_; }
   const Vec3& normal() const { return frame_.e2; }
   const ParamDomain& domain() const { return domain_; }
+  /// Marks parameter directions as unbounded (ParamDomain::unbounded_u/v; surface/unbounded.hpp).
+  void mark_unbounded(bool u, bool v) {
+    domain_.unbounded_u = u;
+    domain_.unbounded_v = v;
+  }
   const Box& box() const { return box_; }
 
   template <class T>

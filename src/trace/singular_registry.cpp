@@ -1,0 +1,93 @@
+#include "ssimarch/trace/singular_registry.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "ssimarch/trace/tangential_contact.hpp"
+
+namespace ssimarch {
+
+int SingularRegistry::add(const SingularLocation& s) {
+  for (std::size_t i = 0; i < nodes_.size(); ++i)
+    if ((nodes_[i].location.point - s.point).norm() <= merge_) return static_cast<int>(i);
+  SingularAnalysisOptions without_branches;
+  without_branches.half_branches = false;
+  SingularNode n;
+  static_cast<SingularAnalysis&>(n) = analyse_singular_point(problem_, s, without_branches);
+  n.location.x = problem_.wrap(s.x);
+  // A point of a curve of tangential contact: a march along a transversal branch met it where
+  // the branch crosses that curve, but the location converged to the nearest contact point;
+  // move to the crossing (docs/math/tangential_contact.md §3).
+  if (n.analysed() && n.kind.type == SingularType::kTangentialContact) {
+    if (auto c = crossing_near(problem_, n.location.x, 0.1 * problem_.scale())) {
+      for (std::size_t i = 0; i < nodes_.size(); ++i)
+        if ((nodes_[i].location.point - c->point).norm() <= merge_) return static_cast<int>(i);
+      SingularLocation at = *c;
+      at.x = problem_.wrap(c->x);
+      static_cast<SingularAnalysis&>(n) = analyse_singular_point(problem_, at, without_branches);
+    }
+  }
+  with_half_branches(problem_, &n);
+  n.used.assign(n.branches.size(), false);
+  nodes_.push_back(std::move(n));
+  return static_cast<int>(nodes_.size()) - 1;
+}
+
+int SingularRegistry::arriving_half_branch(int index, const CurvePoint& last) const {
+  const SingularNode& n = nodes_[static_cast<std::size_t>(index)];
+  const Vec3 d = last.p - n.location.point;
+  int best = -1;
+  double best_score = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < n.branches.size(); ++i) {
+    const HalfBranch& b = n.branches[i];
+    const double X = d.dot(b.tangent_3d);
+    if (!(X > 0) || b.line < 0) continue;
+    // Offset from the tangent line along the line's normal rot90(direction) (half_branches.cpp).
+    const Vec2& dir = n.kind.tangent_cone[static_cast<std::size_t>(b.line)].direction;
+    const Vec3 normal = n.curve.direction_3d(Vec2(-dir[1], dir[0]));
+    const double gamma = b.offset_exponent > 0 ? b.offset_exponent : 2.0;
+    const Vec3 predicted = n.location.point + X * b.tangent_3d + b.offset_coefficient * std::pow(X, gamma) * normal;
+    const double score = (last.p - predicted).norm();
+    if (score < best_score) best_score = score, best = static_cast<int>(i);
+  }
+  return best;
+}
+
+void SingularRegistry::mark(int index, int half, int curve) {
+  SingularNode& n = nodes_[static_cast<std::size_t>(index)];
+  if (half >= 0) n.used[static_cast<std::size_t>(half)] = true;
+  if (std::find(n.curves.begin(), n.curves.end(), curve) == n.curves.end()) {
+    n.curves.push_back(curve);
+    std::sort(n.curves.begin(), n.curves.end());
+  }
+}
+
+SingularPointReport make_report(const SingularAnalysis& a, bool with_branches) {
+  SingularPointReport r;
+  r.x = a.location.x;
+  r.p = a.location.point;
+  r.type = a.kind.type;
+  r.ak = a.kind.ak;
+  r.multiplicity = a.kind.multiplicity;
+  r.milnor = a.kind.milnor;
+  for (const HalfBranch& b : with_branches ? a.branches : std::vector<HalfBranch>{}) {
+    SingularPointReport::HalfBranch h{
+        b.tangent_3d, b.param_tangent, b.leading_coefficient, b.leading_exponent, b.continuation, {}, b.normal_3d};
+    for (const PuiseuxTerm& t : b.expansion.terms) h.expansion.push_back({t.exponent, t.coefficient});
+    r.half_branches.push_back(std::move(h));
+  }
+  return r;
+}
+
+std::vector<SingularPointReport> SingularRegistry::reports() const {
+  std::vector<SingularPointReport> out;
+  for (const SingularNode& n : nodes_) {
+    SingularPointReport r = make_report(n);
+    r.curves = n.curves;
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+}  // namespace ssimarch

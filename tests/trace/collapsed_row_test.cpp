@@ -1,0 +1,107 @@
+// Viviani's curve on an exact rational B-spline sphere, whose pole rows are collapsed edges of
+// its patch and which has no implicit form (docs/math/singular_local_curve.md §7; issue 10
+// "Not done yet"): traced with default options it is one closed curve of the closed-form length,
+// with its node found, located and classified; the curve passes both poles, regular points of it
+// where the patch's chart collapses. With the node itself on a pole row it is classified there.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "ssimarch/singular/classify.hpp"
+#include "ssimarch/singular/half_branches.hpp"
+#include "ssimarch/singular/locate.hpp"
+#include "ssimarch/surface/bspline_surface.hpp"
+#include "ssimarch/surface/primitives.hpp"
+#include "ssimarch/trace/trace_all.hpp"
+#include "testing/nurbs_sphere.hpp"
+
+namespace ssimarch {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+using testing::nurbs_sphere;
+
+// Viviani's curve on the sphere of radius 2 and the cylinder (x - 1)^2 + y^2 = 1:
+// (1 + cos t, sin t, 2 sin(t/2)), t in [0, 4 pi), length 2 int_0^{2 pi} sqrt(1 + cos^2 s) ds
+// (Simpson's rule, 20000 panels: far below the tolerances used); the node (2, 0, 0), the poles
+// (0, 0, -+2) of the z-axis sphere regular points of it.
+double viviani_length() {
+  const int n = 20000;
+  const double step = 2 * kPi / n;
+  double sum = 0;
+  for (int i = 0; i <= n; ++i) {
+    const double c = std::cos(i * step);
+    sum += (i == 0 || i == n ? 1 : (i % 2 ? 4 : 2)) * std::sqrt(1 + c * c);
+  }
+  return 2 * sum * step / 3;
+}
+
+void expect_viviani_with_its_node(const TraceResult& r, const char* label) {
+  ASSERT_EQ(r.curves.size(), 1u) << label;
+  EXPECT_TRUE(r.curves[0].closed) << label;
+  EXPECT_NEAR(r.curves[0].length / viviani_length() - 1, 0.0, 1e-8) << label;
+  const Vec3 node(2, 0, 0);
+  ASSERT_EQ(r.singular_points.size(), 1u) << label;
+  const SingularPointReport& s = r.singular_points[0];
+  EXPECT_EQ(s.type, SingularType::kNode) << label;
+  EXPECT_LT((s.p - node).norm(), 1e-10) << label;
+  EXPECT_EQ(s.half_branches.size(), 4u) << label;
+  EXPECT_EQ(s.curves, std::vector<int>{0}) << label;
+  EXPECT_TRUE(std::any_of(r.curves[0].points.begin(), r.curves[0].points.end(), [&](const CurvePoint& q) {
+    return (q.p - node).norm() <= 1e-10;
+  })) << label;
+}
+
+TEST(CollapsedRow, VivianiOnARationalSphereThroughItsPolesKeepsItsNode) {
+  const Surface sphere = nurbs_sphere(2, 2);
+  const Cylinder cylinder(Vec3(1, 0, 0), Vec3::UnitZ(), 1, {-3, 3});
+  expect_viviani_with_its_node(trace_all(Problem(sphere, cylinder, PairKind::kParametricImplicit), {}),
+                               "implicit cylinder");
+  expect_viviani_with_its_node(trace_all(Problem(sphere, cylinder, PairKind::kParametricParametric), {}),
+                               "parametric cylinder");
+}
+
+// The same sphere turned so that its pole +2 e_x is the node: the singular point lies exactly on
+// a collapsed edge row of the patch, where the height over the cylinder vanishes to order 2 in
+// the distance from the row (every generator lies in the common tangent plane). Located from the
+// pole's parameters, it is classified in the cylinder's chart: a node with the tangents
+// (0, +-1, +-1)/sqrt2 of (1 + cos t, sin t, 2 sin(t/2)) at t = 0, 2 pi, each half-branch continued
+// straight on.
+TEST(CollapsedRow, VivianiNodeOnARationalSpheresPoleIsClassified) {
+  const Problem P(nurbs_sphere(2, 0), Cylinder(Vec3(1, 0, 0), Vec3::UnitZ(), 1, {-3, 3}),
+                  PairKind::kParametricImplicit);
+  VecX x(2);
+  x << 0.3, 1.0;  // on the pole row v = 1, any u
+  const SingularLocation s = locate_singular_point(P, x);
+  ASSERT_EQ(s.status, LocateStatus::kConverged);
+  EXPECT_LT((s.point - Vec3(2, 0, 0)).norm(), 1e-10);
+  const LocalCurve c = local_curve(P, s.x);
+  ASSERT_EQ(c.status, LocalCurveStatus::kOk);
+  const Classification kind = classify(c.h);
+  EXPECT_EQ(kind.type, SingularType::kNode);
+  EXPECT_EQ(kind.ak, "A1");
+  const std::vector<HalfBranch> hb = half_branches(P, c, kind);
+  ASSERT_EQ(hb.size(), 4u);
+  const Vec3 t1 = Vec3(0, 1, 1).normalized(), t2 = Vec3(0, 1, -1).normalized();
+  for (const HalfBranch& b : hb) {
+    EXPECT_NEAR(std::max(std::fabs(b.tangent_3d.dot(t1)), std::fabs(b.tangent_3d.dot(t2))), 1.0, 1e-9);
+    ASSERT_GE(b.continuation, 0);
+    EXPECT_NEAR(b.tangent_3d.dot(hb[static_cast<std::size_t>(b.continuation)].tangent_3d), -1.0, 1e-9);
+    EXPECT_TRUE(b.exit_ok);
+  }
+}
+
+// Traced with default options: the pole passage carries the curve through the pole, the hunt
+// finds the node there and inserts it into both passages of the curve: one closed curve.
+TEST(CollapsedRow, VivianiNodeOnARationalSpheresPoleIsTracedOnce) {
+  const Problem P(nurbs_sphere(2, 0), Cylinder(Vec3(1, 0, 0), Vec3::UnitZ(), 1, {-3, 3}),
+                  PairKind::kParametricImplicit);
+  expect_viviani_with_its_node(trace_all(P, {}), "node on the pole");
+}
+
+}  // namespace
+}  // namespace ssimarch
