@@ -10,6 +10,15 @@ from ._ssimarch import (Curve, InputError, Intersection, Surface, Topology, Trac
 from .surfaces import (BSpline, Bezier, Capsule, Cone, Cylinder, Ellipsoid, ImplicitSurface, Paraboloid,
                        ParametricSurface, Plane, Sphere, Torus)
 
+from ._arguments import guarded as _guarded
+
+# Keyword typos, wrong types and NaN inputs named as the CLI names them (ssimarch/_arguments.py).
+trace = _guarded(trace, "trace")
+curve_geometry = _guarded(curve_geometry, "curve_geometry")
+for _name in ("radial", "axial", "bulk", "bins", "map", "pack", "de_klerk"):
+    if hasattr(porosity, _name):
+        setattr(porosity, _name, _guarded(getattr(porosity, _name), "porosity." + _name))
+
 # `import ssimarch.porosity` and `from ssimarch.porosity import radial` find the extension's submodule.
 _sys.modules[__name__ + ".porosity"] = porosity
 

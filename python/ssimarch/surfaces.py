@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from typing import Any, Mapping, Optional, Sequence
 
+from ._arguments import non_finite
 from ._ssimarch import InputError, Surface
 
 __all__ = ["Plane", "Sphere", "Cylinder", "Cone", "Torus", "Ellipsoid", "Paraboloid", "Capsule",
@@ -17,7 +18,11 @@ __all__ = ["Plane", "Sphere", "Cylinder", "Cone", "Torus", "Ellipsoid", "Parabol
 
 def _surface(kind: str, fields: dict, constants: Optional[Mapping[str, float]]) -> Surface:
     """The surface {kind: fields}; keyword arguments left at None are left out (the scene default)."""
-    return Surface({kind: {k: v for k, v in fields.items() if v is not None}}, constants)
+    given = {k: v for k, v in fields.items() if v is not None}
+    found = non_finite(given, kind)
+    if found:
+        raise InputError(found)
+    return Surface({kind: given}, constants)
 
 
 def Plane(point, normal, *, u=None, v=None, reference=None, constants=None) -> Surface:
@@ -94,6 +99,10 @@ def _net(control_points, weights) -> dict:
     net = np.asarray(control_points, dtype=np.float64)
     if net.ndim != 3 or net.shape[2] != 3 or net.shape[0] < 1 or net.shape[1] < 1:
         raise InputError(f"control_points: expected an array of shape (rows, columns, 3), got shape {net.shape}")
+    found = non_finite(net, "control_points") or (non_finite(np.asarray(weights, dtype=np.float64), "weights")
+                                                  if weights is not None else None)
+    if found:
+        raise InputError(found)
     out = {"control_points": net.tolist()}
     if weights is not None:
         w = np.asarray(weights, dtype=np.float64)

@@ -293,3 +293,33 @@ def test_python_surfaces_round_trip_through_the_cli(cli, tmp_path):
     mine = ssimarch.trace(a, b)
     assert strip_timing(json.loads(mine.to_json())) == strip_timing(json.loads(out))
     assert len(mine["a-b"].curves) >= 1
+
+
+def test_arguments_are_named_as_the_cli_names_flags():
+    # Issue 29: pybind11's "incompatible function arguments", a JSON parser's text and NaN results
+    # were what a user saw; every one now names the argument (or key) and the rule.
+    one = np.array([[0.0, 0.0, 0.0, 1.0]])
+    with pytest.raises(ssimarch.InputError, match=r"unknown keyword 'tolerence' \(did you mean 'tolerance'\?\)"):
+        ssimarch.porosity.radial(one, 2.0, 10, tolerence=1e-9)
+    with pytest.raises(ssimarch.InputError, match=r"points=2.5 is a float, expected an integer"):
+        ssimarch.porosity.radial(one, 2.0, points=2.5)
+    with pytest.raises(ssimarch.InputError, match=r"threads=-1: expected a count or index"):
+        ssimarch.porosity.radial(one, 2.0, 10, threads=-1)
+    with pytest.raises(ssimarch.InputError, match=r"particles\[0,1\]: not a finite number \(nan\)"):
+        ssimarch.porosity.bulk(np.array([[0.0, np.nan, 0.0, 1.0]]), 2.0)
+    with pytest.raises(ssimarch.InputError, match=r"control_points\[0,0,0\]: not a finite number \(nan\)"):
+        ssimarch.Bezier([[[math.nan, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 0]]])
+    with pytest.raises(ssimarch.InputError, match=r"sphere.radius: not a finite number \(inf\)"):
+        ssimarch.Sphere([0, 0, 0], math.inf)
+    scene = {"surfaces": {"s": {"sphere": {"center": [0, 0, 0], "radius": math.nan}},
+                          "p": {"plane": {"point": [0, 0, 0], "normal": [0, 0, 1]}}},
+             "intersections": [{"name": "c", "surfaces": ["s", "p"]}]}
+    with pytest.raises(ssimarch.InputError, match=r"<dict>: surfaces.s.sphere.radius: not a finite number \(nan\)"):
+        ssimarch.trace(scene)
+    a, b = ssimarch.Sphere([0, 0, 0], 2.0), ssimarch.Plane([0, 0, 1], [0, 0, 1])
+    with pytest.raises(ssimarch.InputError, match=r"toward\[0\]: not a finite number \(nan\)"):
+        ssimarch.curve_geometry(a, b, at=[[1.7, 0, 1]], toward=[math.nan, 0, 0])
+    # An unbounded plane (no u, v) meets the sphere in its whole circle (issue 29: 0 curves before).
+    run = ssimarch.trace(a, b)["a-b"]
+    assert len(run.curves) == 1 and run.curves[0].closed
+    assert run.curves[0].length == pytest.approx(2 * math.pi * math.sqrt(3), rel=1e-9)
