@@ -123,6 +123,12 @@ std::string read_text_file(const std::filesystem::path& path, std::string_view w
   if (!std::filesystem::exists(path, ec)) throw InputError(path.string(), "no such file");
   if (std::filesystem::is_directory(path, ec))
     throw InputError(path.string(), "is a directory, not a " + std::string(what));
+  // A device (/dev/zero, /dev/urandom, a terminal) is refused before a byte is read (issue 29: a
+  // STEP surface pointing at /dev/zero read 1 GiB first); a pipe is read, up to the size limit.
+  if (std::filesystem::is_character_file(path, ec) || std::filesystem::is_block_file(path, ec) ||
+      std::filesystem::is_socket(path, ec))
+    throw InputError(path.string(),
+                     "is a device or socket, not a " + std::string(what) + ": give a regular file (or a pipe)");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path.string(), "cannot be opened for reading");
   note_input_file(path);

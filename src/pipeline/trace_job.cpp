@@ -1,6 +1,8 @@
 #include "ssimarch/pipeline/trace_job.hpp"
 
 #include <algorithm>
+#include <sstream>
+#include <limits>
 #include <atomic>
 
 #include "ssimarch/analytic/closed_form.hpp"
@@ -93,6 +95,29 @@ void report_coincidence(const IntersectionSpec& spec, IntersectionRun* run_ptr) 
 
 }  // namespace
 
+namespace {
+
+// The B-spline's tolerance against what double precision certifies for this model (issue 29: 1e-300
+// halved pieces without end): the measured distances are between points computed to the rounding
+// of the coordinates, kSplineToleranceRounding eps x the model size, so a tolerance below that is
+// never met and the halving would stop only at its depth limit, having used all that memory.
+constexpr double kSplineToleranceRounding = 64;  // units of DBL_EPSILON x the model size
+
+void check_spline_tolerance(const Scene& scene, const IntersectionSpec& spec, const Problem& problem) {
+  const double t = spec.options.spline.tolerance;
+  if (!spec.options.bspline || t == 0 || problem.disjoint()) return;
+  const double floor = kSplineToleranceRounding * std::numeric_limits<double>::epsilon() * problem.scale();
+  if (t < floor) {
+    std::ostringstream m;
+    m.precision(3);
+    m << t << " is below what double precision can certify for this model (size " << problem.scale() << "): at least "
+      << floor << " (64 eps times the model size), or 0 for the automatic 1e-9 times the size";
+    throw InputError(scene.source + ": " + spec.name + ".options.bspline_tolerance", m.str());
+  }
+}
+
+}  // namespace
+
 IntersectionRun run_intersection(const Scene& scene, const IntersectionSpec& spec) {
   IntersectionRun run{spec, scene.problem(spec), {}, {}, {}, {}, {}, {}};
   // The options against the model before any work (march/model_size.hpp): the key at fault
@@ -100,6 +125,7 @@ IntersectionRun run_intersection(const Scene& scene, const IntersectionSpec& spe
   std::string key, error;
   if (!run.problem.disjoint() && !fits_model(spec.options.trace, run.problem.scale(), &key, &error))
     throw InputError(scene.source + ": " + spec.name + (key == "model size" ? "" : ".options." + key), error);
+  check_spline_tolerance(scene, spec, run.problem);
   find_curves(spec, &run);
   // CAD faces: the curves cut to their trimming loops (docs/cad.md).
   auto region = [&](std::size_t k) {

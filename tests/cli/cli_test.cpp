@@ -293,7 +293,7 @@ namespace {
 TEST(Cli, InputsAreReadUpToALimitTheUserCanRaise) {
   CliRun zero = run("trace /dev/zero");
   EXPECT_EQ(zero.status, 2);
-  EXPECT_THAT(zero.err, HasSubstr("/dev/zero: larger than 64 MiB, the limit for a scene file"));
+  EXPECT_THAT(zero.err, HasSubstr("/dev/zero: is a device or socket, not a scene file"));
   const std::string big = write_file("big.json", std::string(3 << 20, ' ') + "{\"surfaces\": {}}");
   CliRun small = run("trace " + big + " --max-input-mb 2");
   EXPECT_EQ(small.status, 2);
@@ -404,6 +404,13 @@ TEST(Cli, AnOutputNeverReplacesTheSceneAndItsExtensionNamesAFormat) {
     "b": {"sphere": {"center": [0,0,0], "radius": 1}}}})json"));
   EXPECT_EQ(periodic.status, 2);
   EXPECT_THAT(periodic.err, HasSubstr("surfaces.a.periodic[1]: \"u\" is named twice"));
+}
+
+// Issue 29: a B-spline tolerance below what double precision certifies ran without end.
+TEST(Cli, ABsplineToleranceBelowRoundingIsRefused) {
+  CliRun r = run("trace " + kExamples + "viviani.json -q --bspline true --bspline-tolerance 1e-300");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("viviani.options.bspline_tolerance: 1e-300 is below what double precision can certify"));
 }
 
 TEST(Cli, FacesOfAFileWithoutFacesIsAnError) {
