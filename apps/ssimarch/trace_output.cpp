@@ -10,6 +10,7 @@
 #include "ssimarch/io/svg_plot.hpp"
 #include "ssimarch/io/trace_writers.hpp"
 #include "ssimarch/io/vtp_writer.hpp"
+#include "ssimarch/march/tracer.hpp"
 #include "viewer_page.hpp"
 
 namespace ssimarch::cli {
@@ -97,7 +98,7 @@ void print_summary(const std::vector<IntersectionRun>& runs) {
     std::cerr << "  start points: " << to_string(sp.method) << (sp.certified ? ", certified" : ", not certified");
     if (sp.method == StartSearchMethod::kCertified)
       std::cerr << " (" << sp.boxes << " boxes, " << sp.uncertain_regions.size() << " uncertain regions, " << sp.time_ms << " ms)";
-    if (sp.certified && r.result.curves.empty()) std::cerr << "; no intersection";
+    if (sp.certified && r.result.curves.empty() && r.result.isolated_points.empty()) std::cerr << "; no intersection";
     std::cerr << (sp.note.empty() ? "" : "; " + sp.note) << "\n";
     for (std::size_t i = 0; i < r.result.curves.size(); ++i) {
       const auto& c = r.result.curves[i];
@@ -110,6 +111,8 @@ void print_summary(const std::vector<IntersectionRun>& runs) {
         if (!c.end_message.empty()) std::cerr << "    end: " << c.end_message << "\n";
       }
     }
+    for (const SingularPointReport& p : r.result.isolated_points)
+      std::cerr << "  isolated point: " << describe_point(p.p) << " (" << to_string(p.type) << ")\n";
     for (const auto& w : r.result.warnings) std::cerr << "  warning: " << w << "\n";
   }
 }

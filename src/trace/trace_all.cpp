@@ -341,6 +341,33 @@ void erase_curve(std::size_t i, std::vector<TracedCurve>* curves, SingularRegist
   }
 }
 
+// A "curve" whose points are all one point (a march that could take no step from its start: a
+// cone's apex on a sphere's pole, OpenCASCADE bug21494_1) is a point where the surfaces meet and no
+// branch leaves: an isolated point, reported once among the isolated points and not as a curve
+// (issue 29: one representation of an isolated point). Its class is the analysis's where the local
+// curve can be built, else `isolated` with no local data (a degenerate chart, an apex).
+void points_are_not_curves(const Problem& P, double merge, std::vector<TracedCurve>* curves, SingularRegistry* registry,
+                           std::vector<SingularPointReport>* isolated) {
+  for (std::size_t i = curves->size(); i-- > 0;) {
+    const TracedCurve& c = (*curves)[i];
+    const auto away = [&](const CurvePoint& q) { return (q.p - c.points[0].p).norm() > merge; };
+    if (c.points.empty() || c.tangential_contact || std::any_of(c.points.begin(), c.points.end(), away)) continue;
+    const CurvePoint at = c.points[0];
+    erase_curve(i, curves, registry);
+    const auto known = [&](const SingularPointReport& r) { return (r.p - at.p).norm() <= merge; };
+    if (std::any_of(isolated->begin(), isolated->end(), known)) continue;
+    SingularAnalysisOptions here;
+    here.locate = false;
+    here.half_branches = false;
+    const SingularAnalysis a = analyse_singular_point(P, VecX(at.x), here);
+    SingularPointReport r = a.analysed() ? make_report(a, false) : SingularPointReport{};
+    r.x = at.x;
+    r.p = at.p;
+    if (!a.analysed() || r.type == SingularType::kRegular) r.type = SingularType::kIsolated;
+    isolated->push_back(std::move(r));
+  }
+}
+
 // An isolated point (a contact with no real branch) that a curve shorter than the resolution
 // radius leaves and returns to: no branch arrives at an isolated point, so the curve is a loop
 // around the contact within the tracer's resolution. The surfaces meet there to the tolerance
@@ -557,6 +584,7 @@ TraceResult trace_all(const Tracer& unbounded, const std::vector<Vec3>& starts, 
   const std::vector<Vec3> contacts =
       reg ? absorb_contact_loops(&result.curves, reg, radius, registry_tol, &result.isolated_points)
           : std::vector<Vec3>{};
+  points_are_not_curves(P, registry_merge, &result.curves, reg, &result.isolated_points);
   for (TracedCurve& c : result.curves) explain_bound(bound, &c);
   // The circular-arc estimates summed while marching fall short where the curvature varies
   // (docs/marching.md, "Length."): one pass over each finished curve's points adds that.

@@ -139,5 +139,27 @@ TEST(OcctCases, Bug21494ApexOnThePoleIsAnIsolatedPointInEveryForm) {
   }
 }
 
+// bug21494_1 (issue 29: one representation of an isolated point): the cone opening away from the
+// sphere touches it only at its apex on the sphere's pole. Closed form, traced and both
+// parametric: no curve (a march from the apex takes no step; its one point is not a curve) and
+// the one isolated point (0, 0, 10).
+TEST(OcctCases, Bug21494ApexTouchingThePoleIsOneIsolatedPointNeverACurve) {
+  const Scene scene = parse_scene(R"json({"surfaces": {
+      "cone": {"cone": {"apex": [0, 0, 10], "axis": [0, 0, 1], "half_angle": "atan(1.5)", "range": [0, 10]}},
+      "sphere": {"sphere": {"center": [0, 0, 0], "radius": 10}}},
+    "intersections": [{"name": "closed_form", "surfaces": ["cone", "sphere"]},
+                      {"name": "traced", "surfaces": ["cone", "sphere"], "options": {"closed_form": false}},
+                      {"name": "parametric", "surfaces": ["cone", "sphere"], "as": ["parametric", "parametric"]}]})json",
+                                  "bug21494_1.json");
+  for (const IntersectionSpec& spec : scene.intersections) {
+    SCOPED_TRACE(spec.name);
+    const TraceResult r = run_intersection(scene, spec).result;
+    EXPECT_TRUE(r.curves.empty());
+    ASSERT_EQ(r.isolated_points.size(), 1u);
+    EXPECT_LT((r.isolated_points[0].p - Vec3(0, 0, 10)).norm(), 1e-10);
+    EXPECT_EQ(r.isolated_points[0].type, SingularType::kIsolated);
+  }
+}
+
 }  // namespace
 }  // namespace ssimarch
