@@ -6,6 +6,7 @@
 
 #include "ssimarch/io/singular_json.hpp"
 #include "ssimarch/io/topology_json.hpp"
+#include "ssimarch/march/tracer.hpp"
 namespace ssimarch {
 
 using nlohmann::json;
@@ -113,6 +114,41 @@ static json start_search_to_json(const StartPointSearch& s) {
               {"time_ms", s.time_ms},          {"uncertain_regions", regions}, {"note", s.note}};
 }
 
+namespace {
+
+// The options the trace used (issue 25: the output reported the requested step_length 0, not the
+// step used): the automatic lengths resolved against the model as the tracer resolves them (its
+// constructor, march/tracer.cpp), and which of them were automatic. A problem whose surfaces'
+// boxes are disjoint was never traced: its options stand as requested.
+json options_json(const IntersectionRun& run) {
+  const TraceOptions& asked = run.spec.options.trace;
+  TraceOptions used = asked;
+  if (!run.problem.disjoint()) {
+    try {
+      used = Tracer(run.problem, asked).options();
+    } catch (const InputError&) {
+      // run_intersection checked them against the model first; nothing to resolve here
+    }
+  }
+  json automatic = json::array();
+  for (const auto& [key, value] : {std::pair<const char*, double>{"step_length", asked.step_length},
+                                   {"min_step_length", asked.min_step_length},
+                                   {"min_step", asked.min_step},
+                                   {"deviation", asked.deviation}})
+    if (value == 0) automatic.push_back(key);
+  return json{{"predictor", std::string(to_string(asked.predictor))},
+              {"corrector", std::string(to_string(asked.corrector))},
+              {"step", std::string(to_string(asked.step))},
+              {"step_length", used.step_length},
+              {"min_step_length", used.min_step_length},
+              {"min_step", used.min_step},
+              {"deviation", used.deviation},
+              {"tolerance", used.tolerance},
+              {"automatic", std::move(automatic)}};
+}
+
+}  // namespace
+
 json to_json(const IntersectionRun& run) {
   json curves = json::array();
   for (std::size_t ci = 0; ci < run.result.curves.size(); ++ci) {
@@ -153,12 +189,7 @@ json to_json(const IntersectionRun& run) {
               {"pair_kind", std::string(to_string(run.spec.kind))},
               {"unknowns", names},
               {"parametric_first", run.spec.swapped ? s[1] : s[0]},
-              {"options",
-               {{"predictor", std::string(to_string(run.spec.options.trace.predictor))},
-                {"corrector", std::string(to_string(run.spec.options.trace.corrector))},
-                {"step", std::string(to_string(run.spec.options.trace.step))},
-                {"step_length", run.spec.options.trace.step_length},
-                {"tolerance", run.spec.options.trace.tolerance}}},
+              {"options", options_json(run)},
               {"curves", std::move(curves)},
               {"singular_points", singular_points_to_json(run.result.singular_points)},
               {"isolated_points", singular_points_to_json(run.result.isolated_points)},

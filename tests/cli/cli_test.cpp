@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -44,6 +45,13 @@ TEST(Cli, TraceWritesJsonWithTheExactLength) {
   EXPECT_TRUE(c["closed"].get<bool>());
   EXPECT_NEAR(c["length"].get<double>() / 15.2807911561 - 1, 0.0, 1e-6);
   EXPECT_THAT(r.err, HasSubstr("viviani: 1 curve(s)"));
+  // The options used, automatic ones resolved (issue 25): no step_length 0 in the output.
+  const auto& o = j["intersections"][0]["options"];
+  EXPECT_GT(o["step_length"].get<double>(), 0);
+  EXPECT_GT(o["deviation"].get<double>(), 0);
+  EXPECT_GT(o["min_step"].get<double>(), 0);
+  EXPECT_LE(o["min_step"].get<double>(), o["min_step_length"].get<double>());
+  EXPECT_NE(std::find(o["automatic"].begin(), o["automatic"].end(), "deviation"), o["automatic"].end());
 }
 
 TEST(Cli, TraceFormatsAndOverrides) {
