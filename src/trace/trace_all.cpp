@@ -498,17 +498,67 @@ bool isolated_start(const Tracer& tracer, const StartSingularity& s, double merg
 
 }  // namespace
 
+namespace {
+
+// The start points in the order they are traced. Regular start points first: a start that had to
+// be moved off a singular point lies within a step of it, where closing the loop again is delicate
+// (thesis ch. 6: start away from singular points); such starts are usually on curves traced by then
+// and skipped. A start left on a pole (no regular point next to it: the curve through the pole is a
+// curve of tangential contact, or ends there) comes last: the curves through the pole are traced by
+// then. A start the search put on a singular point is moved next to it as a matter of course: only a
+// start the user gave is worth a warning (`warnings` null otherwise; issue 29: 26 warnings on
+// correct results).
+std::vector<VecX> ordered_starts(const Tracer& tracer, const std::vector<VecX>& seeds, const std::vector<Pole>& poles,
+                                 std::vector<std::string>* warnings) {
+  std::vector<VecX> regular, moved, at_pole;
+  for (const VecX& seed : seeds) {
+    VecX x = regular_start(tracer, seed, warnings);
+    const bool was_moved = (x - seed).norm() != 0;
+    (was_moved ? moved : pole_at(poles, x, 1e-9) ? at_pole : regular).push_back(std::move(x));
+  }
+  regular.insert(regular.end(), moved.begin(), moved.end());
+  regular.insert(regular.end(), at_pole.begin(), at_pole.end());
+  return regular;
+}
+
+// Whether the start x lies on a curve traced before, by the geometry, not by a distance tied to the
+// step (issue 26). The points of a curve are known to the tolerance along the normals but to
+// tolerance / sin(theta) across the curve in the common tangent plane (theta: the angle between the
+// surfaces' normals), so near a tangency two points of one curve may be that far apart. Next to a
+// singular point (a suspect rank ratio) the branches through it come within the resolution radius
+// of each other and are one component, traced from the point's half-branches: there the chord
+// decides.
+bool on_a_traced_curve(const Tracer& tracer, const VecX& x, const std::vector<TracedCurve>& curves, double radius) {
+  const Problem& P = tracer.problem();
+  if (Problem::rank_ratio(P.linearize(x)) < kSuspectSingularRankRatio)
+    return near_traced_curve(P.point(x), curves, radius);
+  return on_traced_curve(P.point(x), curves, radius, position_accuracy(P, x, tracer.options().tolerance));
+}
+
+// Every half-branch leaving a singular point that no curve followed yet is traced once (nodes may
+// be added meanwhile, so the registry is read anew each pass).
+void trace_unused_half_branches(const Tracer& tracer, SingularRegistry* registry, TraceResult* result) {
+  for (std::size_t n = 0; n < registry->nodes().size(); ++n)
+    for (std::size_t k = 0; k < registry->nodes()[n].branches.size(); ++k) {
+      if (registry->nodes()[n].used[k] || !registry->nodes()[n].branches[k].exit_ok) continue;
+      const int index = static_cast<int>(result->curves.size());
+      TracedCurve c =
+          trace_from_half_branch(tracer, registry, static_cast<int>(n), static_cast<int>(k), index, &result->stats);
+      for (auto& p : c.points) p.x = tracer.problem().wrap(p.x);
+      result->curves.push_back(std::move(c));
+    }
+}
+
+}  // namespace
+
 TraceResult trace_all(const Tracer& unbounded, const std::vector<Vec3>& starts, const TraceAllOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
   const Problem& P = unbounded.problem();
   TraceResult result;
   if (P.disjoint()) {  // no intersection is a result (issue 11 item 6)
-    result.start_search = {StartSearchMethod::kDisjointBoxes,
-                           true,
-                           0,
-                           0,
-                           {},
-                           "no intersection: the boxes of the two implicit surfaces do not overlap"};
+    result.start_search.method = StartSearchMethod::kDisjointBoxes;
+    result.start_search.certified = true;
+    result.start_search.note = "no intersection: the boxes of the two implicit surfaces do not overlap";
     result.warnings.push_back(result.start_search.note);
     return result;
   }
@@ -523,36 +573,10 @@ TraceResult trace_all(const Tracer& unbounded, const std::vector<Vec3>& starts, 
   const double registry_tol = kOnSingularPointDistance * std::max(1.0, P.scale());
   SingularRegistry* reg = options.through_singular_points ? &registry : nullptr;
   const double radius = kResolutionFraction * tracer.spacing();
-  // Regular start points first: a start that had to be moved off a singular point lies within a
-  // step of it, where closing the loop again is delicate (thesis ch. 6: start away from singular
-  // points); such starts are usually on curves traced by then and skipped.
-  // A start left on a pole (no regular point next to it: the curve through the pole is a curve of
-  // tangential contact, or ends there) comes last: the curves through the pole are traced by then.
-  std::vector<VecX> starts_regular, starts_moved, starts_at_pole;
   const std::vector<Pole> poles = problem_poles(P);
-  // A start the search put on a singular point is moved next to it as a matter of course: only a
-  // start the user gave is worth a warning (issue 29: 26 warnings on correct results).
-  std::vector<std::string>* moved_warnings = starts.empty() ? nullptr : &result.warnings;
-  for (const VecX& seed : seeds) {
-    VecX x = regular_start(tracer, seed, moved_warnings);
-    const bool moved = (x - seed).norm() != 0;
-    (moved ? starts_moved : pole_at(poles, x, 1e-9) ? starts_at_pole : starts_regular).push_back(std::move(x));
-  }
-  starts_regular.insert(starts_regular.end(), starts_moved.begin(), starts_moved.end());
-  starts_regular.insert(starts_regular.end(), starts_at_pole.begin(), starts_at_pole.end());
-  for (const VecX& x : starts_regular) {
+  for (const VecX& x : ordered_starts(tracer, seeds, poles, starts.empty() ? nullptr : &result.warnings)) {
     throw_if_interrupted();  // Ctrl-C between curves (core/interrupt.hpp)
-    // On a curve traced before by the geometry, not by a distance tied to the step (issue 26). The
-    // points of a curve are known to the tolerance along the normals but to tolerance / sin(theta)
-    // across the curve in the common tangent plane (theta: the angle between the surfaces' normals),
-    // so near a tangency two points of one curve may be that far apart. Next to a singular point
-    // (a suspect rank ratio) the branches through it come within the resolution radius of each
-    // other and are one component, traced from the point's half-branches: there the chord decides.
-    const bool suspect = Problem::rank_ratio(P.linearize(x)) < kSuspectSingularRankRatio;
-    if (suspect
-            ? near_traced_curve(P.point(x), result.curves, radius)
-            : on_traced_curve(P.point(x), result.curves, radius, position_accuracy(P, x, tracer.options().tolerance)))
-      continue;
+    if (on_a_traced_curve(tracer, x, result.curves, radius)) continue;
     if (reg && trace_contact_from(tracer, x, &result.curves, reg)) continue;  // a curve of tangential contact
     if (reg) {
       if (const std::optional<StartSingularity> s = singularity_at_start(P, x)) {
@@ -570,16 +594,7 @@ TraceResult trace_all(const Tracer& unbounded, const std::vector<Vec3>& starts, 
   if (reg && options.hunt_isolated_points)
     hunt_tangencies(tracer, result.start_search, reg, &result.curves, &result.isolated_points);
   if (reg) attach_crossings(reg, &result.curves, radius);
-  // Every half-branch leaving a singular point is traced once (nodes may be added meanwhile).
-  for (std::size_t n = 0; reg && n < registry.nodes().size(); ++n)
-    for (std::size_t k = 0; k < registry.nodes()[n].branches.size(); ++k) {
-      if (registry.nodes()[n].used[k] || !registry.nodes()[n].branches[k].exit_ok) continue;
-      const int index = static_cast<int>(result.curves.size());
-      TracedCurve c =
-          trace_from_half_branch(tracer, &registry, static_cast<int>(n), static_cast<int>(k), index, &result.stats);
-      for (auto& p : c.points) p.x = P.wrap(p.x);
-      result.curves.push_back(std::move(c));
-    }
+  if (reg) trace_unused_half_branches(tracer, reg, &result);
   drop_stubs(&result.curves, reg, radius);
   const std::vector<Vec3> contacts =
       reg ? absorb_contact_loops(&result.curves, reg, radius, registry_tol, &result.isolated_points)
