@@ -52,6 +52,18 @@ std::vector<Particle> particles_of(const py::object& obj) {
       p.diameter = m(i, 6);
       p.length = m(i, 7);
     }
+    // The rules of the packing readers (issue 29: a negative diameter was reported as a slab height
+    // range), each naming the row: a positive diameter, a length >= 0, a non-zero axis, made unit.
+    const std::string row = "particles[" + std::to_string(i) + "]";
+    const int d = c.shape(1) == 4 ? 3 : 6;
+    if (!(p.diameter > 0))
+      throw InputError(row + "[" + std::to_string(d) + "]",
+                       "the diameter must be > 0, got " + std::to_string(p.diameter));
+    if (c.shape(1) == 8) {
+      if (!(p.length >= 0)) throw InputError(row + "[7]", "the length must be >= 0, got " + std::to_string(p.length));
+      if (!(p.axis.norm() > 0)) throw InputError(row + "[3:6]", "the axis (ux, uy, uz) must not be zero");
+      p.axis.normalize();
+    }
   }
   return out;
 }

@@ -194,3 +194,16 @@ def test_overlapping_particles_are_a_warning_and_strict_is_the_warning_filter():
     with warnings.catch_warnings():
         warnings.simplefilter("error", RuntimeWarning)
         porosity.bulk(ONE, R)  # one sphere: no warning
+
+
+def test_particle_rows_follow_the_readers_rules():
+    # Issue 29: a negative diameter was reported as a slab height range.
+    with pytest.raises(ssimarch.InputError, match=r"particles\[1\]\[3\]: the diameter must be > 0, got -1"):
+        porosity.bulk(np.array([[0.0, 0.0, 0.0, 1.0], [0.0, 0.0, 2.0, -1.0]]), 2.0)
+    rod = np.array([[0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0]])
+    with pytest.raises(ssimarch.InputError, match=r"particles\[0\]\[3:6\]: the axis"):
+        porosity.bulk(rod, 2.0)
+    # A non-unit axis is the same rod as its unit one.
+    a = porosity.bulk(np.array([[0.0, 0.0, 0.0, 0.0, 0.0, 3.0, 1.0, 1.0]]), 2.0)
+    b = porosity.bulk(np.array([[0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0]]), 2.0)
+    assert a == pytest.approx(b, abs=1e-12)
