@@ -193,8 +193,7 @@ Packing read_packing_csv(std::istream& in, const std::string& name, const InputL
     }
     if (std::any_of(f.begin() + static_cast<std::ptrdiff_t>(ncol), f.end(),
                     [](const std::string& x) { return !trim(x).empty(); })) {
-      err.add(ln, "expected " + std::to_string(ncol) + " fields (the header's columns), found " +
-                      std::to_string(f.size()) + ": a row with more fields than the header has its columns shifted");
+      err.add(ln, internal::more_fields_than_columns(ncol, f.size()));
       continue;
     }
     auto get = [&](const char* c, double& v) {

@@ -177,8 +177,7 @@ bool slow_row(std::string_view line, const Layout& L, long ln, std::vector<std::
   }
   for (std::size_t k = L.ncol; k < f.size(); ++k)
     if (!trim(f[k]).empty()) {
-      err.add(ln, "expected " + std::to_string(L.ncol) + " fields (the header's columns), found " +
-                      std::to_string(f.size()) + ": a row with more fields than the header has its columns shifted");
+      err.add(ln, internal::more_fields_than_columns(L.ncol, f.size()));
       return false;
     }
   const int nvalues = L.sc ? 8 : 4;

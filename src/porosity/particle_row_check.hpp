@@ -11,6 +11,13 @@ namespace ssimarch::internal {
 
 /// Validates one particle read from a row (sc: a spherocylinder row, whose axis it normalises);
 /// returns an empty string when fine, else the reason.
+/// The error of a row with more (non-empty) fields than the header or ATOMS line names (issue 29: a
+/// shifted id column was read as coordinates), the same in every reader.
+inline std::string more_fields_than_columns(std::size_t columns, std::size_t found) {
+  return "expected " + std::to_string(columns) + " fields (the header's columns), found " + std::to_string(found) +
+         ": a row with more fields than the header has its columns shifted";
+}
+
 inline std::string validate_particle(Particle& p, bool sc) {
   for (int k = 0; k < 3; ++k)
     if (!std::isfinite(p.centre[k])) return "centre coordinate is not finite";

@@ -1,13 +1,12 @@
 #include "ssimarch/problem/problem.hpp"
 
-#include "ssimarch/surface/unbounded.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/problem/poles_and_trims.hpp"
+#include "ssimarch/surface/unbounded.hpp"
 
 namespace ssimarch {
 
@@ -73,22 +72,27 @@ double parametric_extent(const Surface& s) {
   return std::isfinite(e) && e > 0 ? e : 1.0;
 }
 
-}  // namespace
-
-namespace {
-
 // A surface unbounded in a direction is clipped to the other surface's box, or both to a stated
 // box when both are unbounded (surface/unbounded.hpp; issue 29: a default must never cut the
-// intersection).
-Surface bounded_against(const Surface& s, const Surface& other) {
-  if (!has_unbounded_direction(s)) return s;
-  return clipped_to(s, has_unbounded_direction(other) ? unbounded_pair_region(s, other) : other.box());
+// intersection). Bounded surfaces, the common case, are left as they are (no copy).
+void bound_unbounded(Surface* a, Surface* b) {
+  const bool ua = has_unbounded_direction(*a), ub = has_unbounded_direction(*b);
+  if (ua && ub) {
+    const Box region = unbounded_pair_region(*a, *b);
+    *a = clipped_to(*a, region);
+    *b = clipped_to(*b, region);
+  } else if (ua) {
+    *a = clipped_to(*a, b->box());
+  } else if (ub) {
+    *b = clipped_to(*b, a->box());
+  }
 }
 
 }  // namespace
 
 Problem::Problem(Surface first, Surface second, PairKind kind)
-    : first_(bounded_against(first, second)), second_(bounded_against(second, first)), kind_(kind) {
+    : first_(std::move(first)), second_(std::move(second)), kind_(kind) {
+  bound_unbounded(&first_, &second_);
   switch (kind_) {
     case PairKind::kParametricParametric: {
       if (!first_.is_parametric() || !second_.is_parametric())

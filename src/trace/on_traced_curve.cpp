@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ssimarch/geometry/curve_geometry.hpp"
 #include "ssimarch/trace/trace_tolerances.hpp"
 
 namespace ssimarch {
@@ -15,23 +16,14 @@ Vec3 hermite(const Vec3& a, const Vec3& da, const Vec3& b, const Vec3& db, doubl
   return (2 * s3 - 3 * s2 + 1) * a + (s3 - 2 * s2 + s) * da + (-2 * s3 + 3 * s2) * b + (s3 - s2) * db;
 }
 
-double chord_distance(const Vec3& p, const Vec3& a, const Vec3& b) {
-  const Vec3 seg = b - a;
-  const double L2 = seg.squaredNorm();
-  const double t = L2 > 0 ? std::clamp((p - a).dot(seg) / L2, 0.0, 1.0) : 0.0;
-  return (p - (a + t * seg)).norm();
-}
-
 bool usable_tangent(const Vec3& t) { return t.allFinite() && std::fabs(t.norm() - 1) < 1e-6; }
 
-}  // namespace
-
-double hermite_arc_distance(const Vec3& p, const Vec3& a, const Vec3& ta, const Vec3& b, const Vec3& tb) {
-  // End derivatives of magnitude c / cos^2(phi / 4) (phi: the turning angle): the cubic through a
-  // circular arc's ends with Goldapp's (4/3) tan(phi / 4) control distance, whose radial error
-  // is below 3e-4 (phi / (pi/2))^6 of the radius, so any curve the tracer follows with steps that
-  // turn little is matched to far below the sagitta.
-  const double phi = std::atan2(ta.cross(tb).norm(), ta.dot(tb));
+// hermite_arc_distance with the segment's turning angle phi = angle(ta, tb) known.
+double hermite_arc_distance(const Vec3& p, const Vec3& a, const Vec3& ta, const Vec3& b, const Vec3& tb, double phi) {
+  // End derivatives of magnitude c / cos^2(phi / 4): the cubic through a circular arc's ends with
+  // Goldapp's (4/3) tan(phi / 4) control distance, whose radial error is below
+  // 3e-4 (phi / (pi/2))^6 of the radius, so any curve the tracer follows with steps that turn
+  // little is matched to far below the sagitta.
   const double cq = std::cos(phi / 4);
   const double m = (b - a).norm() / (cq * cq);
   const Vec3 da = m * ta, db = m * tb;
@@ -64,6 +56,19 @@ double hermite_arc_distance(const Vec3& p, const Vec3& a, const Vec3& ta, const 
   return std::min({best_d, f1, f2});
 }
 
+}  // namespace
+
+double chord_distance(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Vec3 seg = b - a;
+  const double L2 = seg.squaredNorm();
+  const double t = L2 > 0 ? std::clamp((p - a).dot(seg) / L2, 0.0, 1.0) : 0.0;
+  return (p - (a + t * seg)).norm();
+}
+
+double hermite_arc_distance(const Vec3& p, const Vec3& a, const Vec3& ta, const Vec3& b, const Vec3& tb) {
+  return hermite_arc_distance(p, a, ta, b, tb, normal_angle(ta, tb));
+}
+
 bool on_traced_curve(const Vec3& p, const std::vector<TracedCurve>& curves, double radius, double tolerance) {
   for (const TracedCurve& c : curves)
     for (std::size_t i = 0; i + 1 < c.points.size(); ++i) {
@@ -71,10 +76,10 @@ bool on_traced_curve(const Vec3& p, const std::vector<TracedCurve>& curves, doub
       if (chord_distance(p, a.p, b.p) > radius) continue;
       if (!usable_tangent(a.t) || !usable_tangent(b.t)) return true;
       const double chord = (b.p - a.p).norm();
-      const double turn = std::atan2(a.t.cross(b.t).norm(), a.t.dot(b.t));
+      const double turn = normal_angle(a.t, b.t);
       if (turn > kOnCurveMaxTurn) return true;
       const double sagitta = chord * turn / 8;
-      if (hermite_arc_distance(p, a.p, a.t, b.p, b.t) <= on_curve_distance(tolerance, sagitta)) return true;
+      if (hermite_arc_distance(p, a.p, a.t, b.p, b.t, turn) <= on_curve_distance(tolerance, sagitta)) return true;
     }
   return false;
 }

@@ -5,6 +5,7 @@
 #include "ssimarch/problem/singular_tolerances.hpp"
 #include "ssimarch/singular/analysis.hpp"
 #include "ssimarch/singular/detection.hpp"
+#include "ssimarch/trace/on_traced_curve.hpp"
 #include "ssimarch/start/certified_start_points.hpp"
 #include "ssimarch/start/patch_exclusion.hpp"
 
@@ -16,12 +17,8 @@ namespace {
 bool near_contact_curve(const Vec3& p, const std::vector<TracedCurve>& curves, double radius) {
   for (const TracedCurve& c : curves) {
     if (!c.tangential_contact) continue;
-    for (std::size_t i = 0; i + 1 < c.points.size(); ++i) {
-      const Vec3 a = c.points[i].p, seg = c.points[i + 1].p - a;
-      const double L2 = seg.squaredNorm();
-      const double tau = L2 > 0 ? std::clamp((p - a).dot(seg) / L2, 0.0, 1.0) : 0.0;
-      if ((p - (a + tau * seg)).norm() <= radius) return true;
-    }
+    for (std::size_t i = 0; i + 1 < c.points.size(); ++i)
+      if (chord_distance(p, c.points[i].p, c.points[i + 1].p) <= radius) return true;
   }
   return false;
 }

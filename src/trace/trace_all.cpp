@@ -440,11 +440,10 @@ struct StartSingularity {
   SingularAnalysis analysis;  // without half-branches: the type decides whether they are needed
   double distance = 0;        // from point(x), model units
 };
-// How far apart two points of the curve near x, each within `tolerance` of both surfaces, may be
+// How far apart two points of the curve at the linearisation L, each within `tolerance` of both surfaces, may be
 // across the curve: tolerance / sin(theta), theta the angle between the normals (at most the
 // problem's scale: a point where the normals are parallel is known to no better).
-double position_accuracy(const Problem& P, const VecX& x, double tolerance) {
-  const Linearization L = P.linearize(x);
+double position_accuracy(const Problem& P, const Linearization& L, double tolerance) {
   const double sine = L.normal_first.cross(L.normal_second).norm();
   return std::min(tolerance / std::max(sine, tolerance / P.scale()), P.scale());
 }
@@ -530,9 +529,9 @@ std::vector<VecX> ordered_starts(const Tracer& tracer, const std::vector<VecX>& 
 // decides.
 bool on_a_traced_curve(const Tracer& tracer, const VecX& x, const std::vector<TracedCurve>& curves, double radius) {
   const Problem& P = tracer.problem();
-  if (Problem::rank_ratio(P.linearize(x)) < kSuspectSingularRankRatio)
-    return near_traced_curve(P.point(x), curves, radius);
-  return on_traced_curve(P.point(x), curves, radius, position_accuracy(P, x, tracer.options().tolerance));
+  const Linearization L = P.linearize(x);
+  if (Problem::rank_ratio(L) < kSuspectSingularRankRatio) return near_traced_curve(L.point, curves, radius);
+  return on_traced_curve(L.point, curves, radius, position_accuracy(P, L, tracer.options().tolerance));
 }
 
 // Every half-branch leaving a singular point that no curve followed yet is traced once (nodes may

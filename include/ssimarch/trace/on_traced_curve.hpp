@@ -25,6 +25,9 @@ namespace ssimarch {
 /// kOnCurveMaxTurn (trace/trace_tolerances.hpp) fall back to the chord within `radius`.
 bool on_traced_curve(const Vec3& p, const std::vector<TracedCurve>& curves, double radius, double tolerance);
 
+/// Distance from p to the segment [a, b] (the chord of two traced points).
+double chord_distance(const Vec3& p, const Vec3& a, const Vec3& b);
+
 /// Distance from p to the cubic Hermite arc of the segment (a, ta) -> (b, tb) (unit tangents in
 /// the direction of travel), minimised over the arc's parameter.
 double hermite_arc_distance(const Vec3& p, const Vec3& a, const Vec3& ta, const Vec3& b, const Vec3& tb);
