@@ -45,8 +45,9 @@ const Case kCases[] = {
     {"cylinder_plane_tangent", 4, 1, "cases.jsonl"},
     {"occt_bug21494_2", 2 * M_PI * 120 / 13, 2, "OCCT tests/lowalgos/intss/bug21494_2: circle r = 120/13 + apex point"},
     {"occt_bug24694_7", 20 * M_PI, 1, "OCCT tests/lowalgos/intss/bug24694_7: equator, tangential"},
-    {"occt_bug28222_2", 2 * 77.0906952055927526, 2, "OCCT tests/lowalgos/intss/bug28222_2: two loops, reference_lengths.py"},
-    {"occt_bug33244", 13.9504584900, 2, "OCCT tests/lowalgos/intss/bug33244 (trimmed |h| <= 3): reference_lengths.py"},
+    {"occt_bug28222_2", 2 * 77.0906952055927526, 2,
+     "OCCT tests/lowalgos/intss/bug28222_2: two loops, reference_lengths.py"},
+    {"occt_bug33244", 13.9478623648, 2, "OCCT tests/lowalgos/intss/bug33244 (trimmed |h| <= 3): reference_lengths.py"},
 };
 
 enum Engine { kOcctAnalytic, kOcctBspline, kSisl, kSsimarch, kSsimarchTraced, kEngines };

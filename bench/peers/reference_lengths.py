@@ -3,8 +3,10 @@
 
 occt_bug33244 (two cones of OpenCASCADE's tests/lowalgos/intss/bug33244, each trimmed to |h| <= 3
 from its apex): cone 1 is parameterised by (theta, h); for each theta the cone-2 equation is a
-quadratic in h whose real roots are the curve's points; the length is the polyline length on 2^18
-angles per root branch, each cut exactly (bisection) where it leaves a trim. Also writes the
+quadratic in h whose real roots are the curve's points (solved in the cancellation-free form: the
+leading coefficient nearly vanishes); the length is the polyline length on 2^18 angles per root
+branch, each cut exactly (bisection) where it leaves a trim: 13.9478623648 (a 30-digit mpmath
+quadrature between the exact trim crossings gives 13.94786236484130). Also writes the
 scene's apex coordinates.
 
 occt_bug28222_2 (tests/lowalgos/intss/bug28222_2, two cylinders with perpendicular axes at distance
@@ -58,8 +60,16 @@ def points(theta):
     disc = b * b - 4 * a * c
     if disc < 0:
         return []
-    r = [(-b + s * math.sqrt(disc)) / (2 * a) for s in (1, -1)]
-    return [(h, A1 + h * w) for h in r]
+    # The two cones' half-angles agree to 4e-11, so a is nearly 0 and changes sign with theta:
+    # (-b +- sqrt(disc)) / 2a loses every digit of the finite root to cancellation and swaps the
+    # roots' order where a does (the first version of this script, 13.9504584900, was off by
+    # 2.6e-3 for that). Numerical Recipes §5.6: q = -(b + sign(b) sqrt(disc))/2, roots c/q (finite)
+    # and q/a, in that order.
+    q = -0.5 * (b + math.copysign(math.sqrt(disc), b))
+    if q == 0:
+        return []
+    r = [c / q, q / a if a != 0 else math.inf]
+    return [(h, A1 + h * w) for h in r if math.isfinite(h)]
 
 def inside(h, p):
     A2, d2, _ = C2

@@ -244,6 +244,38 @@ LocalJet branch_equation(const BranchGerm& g) {
   return l;
 }
 
+// A smooth pole in the other surface's tangent plane (m = 2) along which no branch leaves (psi_2
+// keeps one sign: the meridians of D all curve away from O the same way, a sphere's pole resting
+// on a plane): the height of D over O to second order, the quadratic form q(s, t) with
+// q(d(w)) = psi_2(w) / |(s, t)_C(w)|^2 at every meridian w, (s, t)_C the chart direction in which
+// the meridian leaves P0 (least squares over the row's samples). q definite makes P0 an isolated
+// point of the intersection (docs/math/singular_local_curve.md §7); nullopt where q is not
+// definite within kRowOrderZero of its size or does not fit the samples.
+std::optional<LocalJet> definite_height(const Problem& pr, int slot, const Surface& D, const Row& row,
+                                        const LocalCurve& c, const OtherChart& o) {
+  using J = Jet<2, 2>;
+  const Interval& range_w = range(D, 1 - row.across);
+  Eigen::MatrixXd A(kRowSamples, 3);
+  Eigen::VectorXd b(kRowSamples);
+  const J::MultiIndex c1{0, 1}, c2{0, 2};
+  for (int i = 0; i < kRowSamples; ++i) {
+    const Vec3T<J> Dj = row_jet<2>(D, row, range_w.lo + range_w.width() * (i + 0.5) / kRowSamples);
+    J s, t, phi;
+    height_over_chart<2>(pr, slot, Dj, c, o, &s, &t, &phi);
+    const Vec2 d(s.coef(c1), t.coef(c1));
+    if (!(d.norm() > 0) || !d.allFinite()) return std::nullopt;
+    const Vec2 u = d.normalized();
+    A.row(i) << u[0] * u[0], u[0] * u[1], u[1] * u[1];
+    b[i] = phi.coef(c2) / d.squaredNorm();
+  }
+  const Eigen::Vector3d q = A.colPivHouseholderQr().solve(b);
+  const double size = q.cwiseAbs().maxCoeff();
+  if (!(size > 0) || !q.allFinite() || (A * q - b).cwiseAbs().maxCoeff() > 1e-6 * size) return std::nullopt;
+  if (!(4 * q[0] * q[2] - q[1] * q[1] > kRowOrderZero * size * size)) return std::nullopt;
+  const LocalJet S = LocalJet::variable(0, 0.0), T = LocalJet::variable(1, 0.0);
+  return q[0] * S * S + q[1] * S * T + q[2] * T * T;
+}
+
 // The other surface's chart at P0 (regular there, P0 on it).
 bool other_chart(const Problem& pr, int slot, const VecX& x, const Row& row, LocalCurve* c, OtherChart* o) {
   const Surface& O = slot == 0 ? pr.second() : pr.first();
@@ -314,16 +346,22 @@ LocalCurve collapsed_row_curve(const Problem& pr, const VecX& x, int slot) {
   std::function<double(double)> psi;
   const int m = row_order(pr, slot, D, *row, c, o, &psi);
   if (m == 0) return c;
-  for (double w : row_roots(D, *row, psi)) {
+  const std::vector<double> roots = row_roots(D, *row, psi);
+  for (double w : roots) {
     const std::optional<BranchGerm> g = branch_at(pr, slot, *row, m, w, c, o);
     if (!g) return c;
     bool known = false;
     for (const BranchGerm& h : germs) known = known || same_branch(h, *g, rho);
     if (!known) germs.push_back(*g);
   }
-  if (germs.empty()) return c;
-  c.h = LocalJet(1.0);
-  for (const BranchGerm& g : germs) c.h *= branch_equation(g);
+  if (germs.empty()) {
+    const std::optional<LocalJet> q = roots.empty() && m == 2 ? definite_height(pr, slot, D, *row, c, o) : std::nullopt;
+    if (!q) return c;
+    c.h = *q;
+  } else {
+    c.h = LocalJet(1.0);
+    for (const BranchGerm& g : germs) c.h *= branch_equation(g);
+  }
   c.point = {o.point.x, o.point.y, o.point.z};
   // The unknowns: the degenerate surface's lifted by nearest points (its parameters are not
   // functions of the point at P0), the other's from its chart (parametric) or none.

@@ -287,7 +287,10 @@ std::vector<HalfBranch> half_branches_at(const Problem& problem, const LocalCurv
 
 std::vector<HalfBranch> half_branches(const Problem& problem, const LocalCurve& curve, const Classification& kind,
                                       const HalfBranchOptions& options) {
-  if (kind.type == SingularType::kRegular || kind.type == SingularType::kIsolated) return {};
+  // A regular point of the curve has no half-branches, except where a parametrisation of the pair
+  // is degenerate (a lifted chart: the pole of a B-spline sphere, where J_H loses rank though the
+  // curve is smooth): the walk that stopped there passes it along its two halves (issue 27).
+  if (kind.type == SingularType::kIsolated || (kind.type == SingularType::kRegular && !curve.lifted())) return {};
   // Near a point of high multiplicity the curve is nearly singular (|grad h| ~ r^(m-1)): widen
   // the circle until every exit point is regular enough to march from.
   std::vector<HalfBranch> out;

@@ -604,8 +604,10 @@ TraceResult trace_all(const Tracer& unbounded, const std::vector<Vec3>& starts, 
   // (docs/marching.md, "Length."): one pass over each finished curve's points adds that.
   for (TracedCurve& c : result.curves) c.length += arc_length_shortfall(c.points, c.closed);
   if (reg) result.singular_points = registry.reports();
+  // A regular point is no singular point of the curve: the registry holds one only where a
+  // parametrisation is degenerate on the curve (a B-spline sphere's pole), for the walk to pass.
   std::erase_if(result.singular_points, [&](const SingularPointReport& r) {
-    return std::find(contacts.begin(), contacts.end(), r.p) != contacts.end();
+    return r.type == SingularType::kRegular || std::find(contacts.begin(), contacts.end(), r.p) != contacts.end();
   });
   result.stats.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return result;

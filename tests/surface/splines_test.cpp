@@ -197,6 +197,39 @@ TEST(BSplineSurface, NurbsQuarterAndFullCircleCylindersLieOnTheCylinder) {
       }
 }
 
+// Issue 27: a patch whose two u edges are one curve (the full circle of rational arcs) is periodic
+// in u and evaluates beyond its domain at the reduced parameter, jets included: F(u - 1) = F(u)
+// and its derivatives (the last span's polynomial continued would move along the circle at
+// another speed); the quarter circle, open, is not periodic and extrapolates as before.
+TEST(BSplineSurface, AClosedSeamIsPeriodicJetsIncluded) {
+  const double r = 1.3, c = std::sqrt(0.5);
+  const Vec3 sq[9] = {{r, 0, 0},   {r, r, 0},  {0, r, 0},  {-r, r, 0}, {-r, 0, 0},
+                      {-r, -r, 0}, {0, -r, 0}, {r, -r, 0}, {r, 0, 0}};
+  ControlNet full;
+  WeightNet wf;
+  for (int i = 0; i < 9; ++i) {
+    full.push_back({sq[i], sq[i] + Vec3(0, 0, 2)});
+    wf.push_back({i % 2 ? c : 1.0, i % 2 ? c : 1.0});
+  }
+  const BSplineSurface closed(2, 1, {0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1}, {0, 0, 1, 1}, full, wf);
+  EXPECT_TRUE(closed.domain().periodic_u);
+  EXPECT_FALSE(closed.domain().periodic_v);
+  using J = Jet<2, 3>;
+  for (double u : {-0.3, -0.01, 1.01, 1.7, 2.4}) {
+    const double reduced = u - std::floor(u);
+    const Vec3T<J> a = closed.point(J::variable(0, u), J::variable(1, 0.4));
+    const Vec3T<J> b = closed.point(J::variable(0, reduced), J::variable(1, 0.4));
+    for (int k = 0; k < 3; ++k)
+      for (int i = 0; i < J::kSize; ++i) EXPECT_NEAR(a[k][i], b[k][i], 1e-12) << "u = " << u << ", coefficient " << i;
+    const Vec3 p(a.x.value(), a.y.value(), a.z.value());
+    EXPECT_NEAR(std::hypot(p.x(), p.y()), r, 1e-14) << "u = " << u;
+  }
+  const ControlNet quarter = {
+      {Vec3(r, 0, 0), Vec3(r, 0, 1)}, {Vec3(r, r, 0), Vec3(r, r, 1)}, {Vec3(0, r, 0), Vec3(0, r, 1)}};
+  const BSplineSurface open(2, 1, {0, 0, 0, 1, 1, 1}, {0, 0, 1, 1}, quarter, {{1, 1}, {c, c}, {1, 1}});
+  EXPECT_FALSE(open.domain().periodic_u);
+}
+
 TEST(BSplineSurface, RejectsInvalidInput) {
   const ControlNet net = test_net(4, 3);
   const std::vector<double> U{0, 0, 0, 0.5, 1, 1, 1}, V{0, 0, 0, 1, 1, 1};

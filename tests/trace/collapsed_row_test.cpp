@@ -103,5 +103,42 @@ TEST(CollapsedRow, VivianiNodeOnARationalSpheresPoleIsTracedOnce) {
   expect_viviani_with_its_node(trace_all(P, {}), "node on the pole");
 }
 
+// Issue 27: the rational sphere resting on a plane with its pole at the contact point (as
+// OpenCASCADE's GeomConvert lays a sphere out: poles on the axis). Every meridian curves away
+// from the plane the same way, so no branch leaves the pole row: one isolated point, in either
+// order, never a curve (it was a "curve" of length 2e-6 from the pole's plain chart).
+TEST(CollapsedRow, RationalSpherePoleRestingOnAPlaneIsOneIsolatedPoint) {
+  const BSplineSurface s = nurbs_sphere(1, 2);
+  const Plane plane(Vec3(0, 0, -1), Vec3::UnitZ(), {{-2, 2}, {-2, 2}});
+  for (bool sphere_first : {true, false}) {
+    const TraceResult r = sphere_first ? trace_all(Problem(s, plane, PairKind::kParametricParametric), {})
+                                       : trace_all(Problem(plane, s, PairKind::kParametricParametric), {});
+    EXPECT_TRUE(r.curves.empty()) << "sphere first: " << sphere_first;
+    ASSERT_EQ(r.isolated_points.size(), 1u) << "sphere first: " << sphere_first;
+    EXPECT_LT((r.isolated_points[0].p - Vec3(0, 0, -1)).norm(), 1e-9);
+    EXPECT_EQ(r.isolated_points[0].type, SingularType::kIsolated);
+  }
+}
+
+// A curve crossing the rational sphere's pole where the march's watch stops (the cone of
+// examples/occt_sphere_cone_node.json moved so that the sphere of radius 2 is centred at the
+// origin: the curve passes the south pole (0, 0, -2) transversally and has its node at the
+// contact point): the pole is a regular point of the curve that the walk passes along its two
+// halves, not an end, and not reported as a singular point. One closed curve, its node only, of
+// the primitive sphere's length.
+TEST(CollapsedRow, CurveThroughARationalSpheresPoleIsOneClosedCurve) {
+  const Vec3 c(-std::sqrt(2.0) + 1, 0, 1 + std::sqrt(2.0));  // the example's sphere centre
+  const Cone cone(-c, Vec3::UnitZ(), kPi / 4, {0, 5});
+  const TraceResult ref = trace_all(Problem(Sphere(Vec3::Zero(), 2), cone, PairKind::kParametricParametric), {});
+  ASSERT_EQ(ref.curves.size(), 1u);
+  const TraceResult r = trace_all(Problem(nurbs_sphere(2, 2), cone, PairKind::kParametricParametric), {});
+  ASSERT_EQ(r.curves.size(), 1u);
+  EXPECT_TRUE(r.curves[0].closed);
+  EXPECT_NEAR(r.curves[0].length / ref.curves[0].length - 1, 0.0, 1e-8);
+  ASSERT_EQ(r.singular_points.size(), 1u);
+  EXPECT_EQ(r.singular_points[0].type, SingularType::kNode);
+  EXPECT_LT((r.singular_points[0].p - (Vec3(1, 0, 1) - c)).norm(), 1e-9);
+}
+
 }  // namespace
 }  // namespace ssimarch

@@ -2,7 +2,12 @@
 //
 //   F(u,v) = sum_ij w_ij P_ij N_i^p(u) N_j^q(v) / sum_ij w_ij N_i^p(u) N_j^q(v)
 // with knot vectors U (n_u + p + 1 knots) and V (n_v + q + 1 knots), any (clamped or not).
-// Domain [U[p], U[n_u]] x [V[q], V[n_v]], not periodic. Evaluated by de Boor in homogeneous
+// Domain [U[p], U[n_u]] x [V[q], V[n_v]]. A direction whose two edges are one curve (the seam of
+// a closed surface of revolution as CAD writes it: a full circle of rational arcs) is periodic:
+// the parameter is reduced into the domain before evaluating, so F(u + width, v) = F(u, v)
+// holds as a tracer that wraps across the seam assumes (issue 27: evaluated outside the
+// domain, the last span's polynomial continued the circle at another speed, and a curve
+// crossing a NURBS sphere's seam drifted off the surface). Evaluated by de Boor in homogeneous
 // coordinates, first along v on the p + 1 rows active in u, then along u, all in the number
 // type T; the knot span is chosen from primal(u), primal(v) (style.md 3.4), so a jet at a knot
 // gives the derivatives of the piece to the right of it (of the last piece at the domain end).
@@ -11,6 +16,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -41,8 +47,9 @@ class BSplineSurface {
 
   template <class T>
   Vec3T<T> point(const T& u, const T& v) const {
-    if (rational_) return eval<T, 4>(u, v);
-    return eval<T, 3>(u, v);
+    const T uu = into_period(u, domain_.u, domain_.periodic_u), vv = into_period(v, domain_.v, domain_.periodic_v);
+    if (rational_) return eval<T, 4>(uu, vv);
+    return eval<T, 3>(uu, vv);
   }
 
  private:
@@ -50,6 +57,15 @@ class BSplineSurface {
     std::vector<double> knots_u, knots_v;
     std::vector<std::array<double, 4>> homogeneous;  // row-major, (w x, w y, w z, w)
   };
+
+  // t moved by a whole number of periods into [lo, hi] (unchanged inside it, and where the
+  // direction is not periodic); derivatives of a jet are those at the moved point.
+  template <class T>
+  static T into_period(const T& t, const Interval& range, bool periodic) {
+    const double x = primal(t);
+    if (!periodic || (range.lo <= x && x <= range.hi) || !std::isfinite(x)) return t;
+    return t - T(std::floor((x - range.lo) / range.width()) * range.width());
+  }
 
   template <class T, std::size_t D>
   Vec3T<T> eval(const T& u, const T& v) const {
@@ -72,6 +88,8 @@ class BSplineSurface {
     if constexpr (D == 4) return {q[0] / q[3], q[1] / q[3], q[2] / q[3]};
     else return {q[0], q[1], q[2]};
   }
+
+  bool edges_coincide(int parameter) const;
 
   int p_ = 0, q_ = 0, nu_ = 0, nv_ = 0;
   bool rational_ = false;
