@@ -14,6 +14,7 @@
 #include "ssimarch/analytic/quadric_pencil.hpp"
 #include "ssimarch/analytic/ruled_crossing.hpp"
 #include "ssimarch/analytic/ruled_section.hpp"
+#include "ssimarch/march/model_size.hpp"
 #include "ssimarch/problem/closed_form_tolerances.hpp"
 #include "ssimarch/singular/locate.hpp"
 #include "ssimarch/trace/singular_registry.hpp"
@@ -220,7 +221,7 @@ std::optional<ClosedFormResult> closed_form_intersection(const Problem& problem,
   add_trims(problem.second(), &region);
   const double deviation = options.deviation > 0 ? options.deviation : 1e-4 * scale;
   const double max_chord = options.step_length > 0 ? options.step_length : scale / 10;
-  const double gap = contact_gap_tolerance(options.tolerance, scale);
+  const double gap = contact_gap_tolerance(resolved_tolerance(options, scale), scale);
   if (const auto whole = section(problem.first(), problem.second(), scale, gap, &out.pair)) {
     for (const Conic& conic : *whole) {
       for (const Conic& piece : clip_to_slabs(conic, region)) {

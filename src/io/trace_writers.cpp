@@ -6,6 +6,7 @@
 
 #include "ssimarch/io/singular_json.hpp"
 #include "ssimarch/io/topology_json.hpp"
+#include "ssimarch/march/model_size.hpp"
 #include "ssimarch/march/tracer.hpp"
 namespace ssimarch {
 
@@ -123,6 +124,7 @@ namespace {
 json options_json(const IntersectionRun& run) {
   const TraceOptions& asked = run.spec.options.trace;
   TraceOptions used = asked;
+  used.tolerance = resolved_tolerance(asked, run.problem.scale());
   if (!run.problem.disjoint()) {
     try {
       used = Tracer(run.problem, asked).options();
@@ -134,7 +136,8 @@ json options_json(const IntersectionRun& run) {
   for (const auto& [key, value] : {std::pair<const char*, double>{"step_length", asked.step_length},
                                    {"min_step_length", asked.min_step_length},
                                    {"min_step", asked.min_step},
-                                   {"deviation", asked.deviation}})
+                                   {"deviation", asked.deviation},
+                                   {"tolerance", asked.tolerance}})
     if (value == 0) automatic.push_back(key);
   return json{{"predictor", std::string(to_string(asked.predictor))},
               {"corrector", std::string(to_string(asked.corrector))},

@@ -8,6 +8,10 @@
 
 namespace ssimarch {
 
+double resolved_tolerance(const TraceOptions& options, double scale) {
+  return options.tolerance == 0 ? kAutomaticToleranceRatio * scale : options.tolerance;
+}
+
 double step_floor(double scale, double tolerance) {
   return std::max(8 * tolerance, 64 * std::numeric_limits<double>::epsilon() * scale);
 }
@@ -29,17 +33,21 @@ bool fits_model(const TraceOptions& o, double scale, std::string* key, std::stri
     return fail("model size", model + " is outside [" + text(kMinModelSize) + ", " + text(kMaxModelSize) +
                                   "], the sizes whose products double precision represents; scale the scene");
   const double eps = std::numeric_limits<double>::epsilon();
-  const double tol_lo = std::max(1e-15, eps * scale), tol_hi = kMaxToleranceRatio * scale;
-  if (!(o.tolerance >= tol_lo && o.tolerance <= tol_hi))
-    return fail("tolerance", text(o.tolerance) + " is outside [" + text(tol_lo) + ", " + text(tol_hi) + "], the usable range for " +
-                                 model + " in double precision (rounding of the coordinates to a thousandth of the model)");
-  const double floor = step_floor(scale, o.tolerance);
+  const double tol_lo = eps * scale, tol_hi = kMaxToleranceRatio * scale;
+  const double tolerance = resolved_tolerance(o, scale);
+  if (!(tolerance >= tol_lo && tolerance <= tol_hi))
+    return fail("tolerance", text(tolerance) + " is outside [" + text(tol_lo) + ", " + text(tol_hi) +
+                                 "], the usable range for " + model +
+                                 " in double precision (from the rounding of the coordinates to a thousandth of the " +
+                                 "model); 0 = automatic, " + text(kAutomaticToleranceRatio) + " times the size");
+  const double floor = step_floor(scale, tolerance);
   const std::pair<const char*, double> lengths[] = {
       {"step_length", o.step_length}, {"min_step_length", o.min_step_length}, {"min_step", o.min_step}, {"max_length", o.max_length}};
   for (const auto& [k, v] : lengths)
     if (v != 0 && v < floor)
       return fail(k, text(v) + " is below " + text(floor) + ", the shortest step for " + model + " and tolerance " +
-                         text(o.tolerance) + " (max(8 tolerance, 64 eps size)); usable: >= " + text(floor) + " (or 0 = automatic)");
+                         text(tolerance) + " (max(8 tolerance, 64 eps size)); usable: >= " + text(floor) +
+                         " (or 0 = automatic)");
   return true;
 }
 

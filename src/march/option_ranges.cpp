@@ -56,7 +56,7 @@ std::vector<TraceOptionRange> make_ranges() {
       field<&O::turn_angle>("turn_angle", between(0, 1.5, true)),
       field<&O::min_step>("min_step", automatic_length()),
       field<&O::taylor_order>("taylor_order", between(1, kMaxCurveJetOrder, false, "the orders of the curve jet")),
-      field<&O::tolerance>("tolerance", at_least(1e-15, false, "smaller cannot be reached in double precision")),
+      field<&O::tolerance>("tolerance", automatic_length()),
       field<&O::max_corrector_iterations>("max_corrector_iterations", between(1, 1000, false)),
       field<&O::max_turn_angle>("max_turn_angle", between(0, 3.14159, true, "below pi")),
       field<&O::max_correction_ratio>("max_correction_ratio", at_least(0, true)),

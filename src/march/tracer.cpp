@@ -82,6 +82,7 @@ Tracer::Tracer(const Problem& problem, TraceOptions options) : problem_(problem)
   if (!options_.is_valid(&error)) throw InputError(std::string(invalid_option_key(options_)), error);
   std::string key;
   if (!fits_model(options_, problem_.scale(), &key, &error)) throw InputError(key, error);
+  options_.tolerance = resolved_tolerance(options_, problem_.scale());
   const bool adaptive = options_.step != StepRule::kConstant;
   // The automatic lengths never fall below the step floor (options.hpp): a step that cannot
   // move the point would loop without end.

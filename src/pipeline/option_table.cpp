@@ -153,7 +153,10 @@ std::vector<Row> make_rows() {
   rows.push_back(number_row(describe("turn_angle", "radians", "0.1", "the `angular` rule's tangent turn per step")));
   rows.push_back(number_row(describe("min_step", "model length", "0 = 1e-7 step_length", "below this the tracer stops at the point and reports why")));
   rows.push_back(number_row(describe("taylor_order", "", "4", "order of the `taylor` predictor")));
-  rows.push_back(number_row(describe("tolerance", "model length", "1e-12", "a point is accepted when its distance from both surfaces is at most this")));
+  rows.push_back(
+      number_row(describe("tolerance", "model length", "0 = 1e-13 extent",
+                          "a point is accepted when its distance from both surfaces is at most this; the automatic "
+                          "value scales with the model, so the same part in millimetres or metres is traced alike")));
   rows.push_back(number_row(describe("max_corrector_iterations", "", "12", "Newton updates per point")));
   rows.push_back(number_row(describe("max_turn_angle", "radians", "0.6", "a step turning the tangent by more is rejected and retried shorter (branch-jump guard)")));
   rows.push_back(number_row(describe("max_correction_ratio", "", "0.5", "a step whose corrected point is farther than this times the step from the prediction is rejected")));

@@ -78,7 +78,8 @@ void report_coincidence(const IntersectionSpec& spec, IntersectionRun* run_ptr) 
     return;
   // Coincident surfaces share a region, not a curve: say so rather than report "0 curves". The
   // distance test allows for the corrector's tolerance and the rounding of the model's size.
-  const double tolerance = std::max(1e3 * spec.options.trace.tolerance, 1e-12 * run.problem.scale());
+  const double tolerance =
+      std::max(1e3 * resolved_tolerance(spec.options.trace, run.problem.scale()), 1e-12 * run.problem.scale());
   run.coincidence = find_coincidence(run.problem, tolerance);
   if (run.coincidence) {
     const std::string& first = spec.surfaces[spec.swapped ? 1 : 0];

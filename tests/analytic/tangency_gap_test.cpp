@@ -1,6 +1,6 @@
 // Tangency by the gap (docs/math/closed_form_quadrics.md, "Tangency by the gap"): a plane section
 // or a coaxial pair is a tangential contact when the surfaces' gap, in model units, is within
-// contact_gap_tolerance (the corrector tolerance, 1e-12 by default), and otherwise the exact
+// contact_gap_tolerance (the corrector tolerance, stated here as 1e-12), and otherwise the exact
 // circle however small. References: the circle of a sphere of radius R cut at depth g has radius
 // sqrt(g (2R - g)); two spheres of radii R1, R2 whose centres are R1 + R2 - g apart meet in the
 // radical plane in a circle of radius sqrt(R1^2 - x^2), x = (d^2 + R1^2 - R2^2) / (2d).
@@ -16,11 +16,13 @@ namespace ssimarch {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-const double kTolerance = TraceOptions{}.tolerance;  // 1e-12 model units
+constexpr double kTolerance = 1e-12;  // model units, stated (the default is relative to the model)
 
 ClosedFormResult solve(Surface a, Surface b) {
   const Problem problem(std::move(a), std::move(b), PairKind::kImplicitImplicit);
-  auto r = closed_form_intersection(problem, TraceOptions{});
+  TraceOptions o;
+  o.tolerance = kTolerance;
+  auto r = closed_form_intersection(problem, o);
   EXPECT_TRUE(r.has_value());
   return r ? *r : ClosedFormResult{};
 }

@@ -249,13 +249,14 @@ TEST(Cli, TraceOptionFlagsAreValidatedWithTheFlagName) {
     const char* args;
     const char* message;
   };
-  for (const Bad& b : {Bad{"--step-length -1", "--step-length: must be a finite number >= 0 (0 = automatic), got -1"},
-                       Bad{"--step-length nan", "--step-length: "}, Bad{"--tolerance -1", "--tolerance: must be a finite number >= 1e-15"},
-                       Bad{"--tolerance nan", "--tolerance: "}, Bad{"--deviation nan", "--deviation: "},
-                       Bad{"--taylor-order 4294967297", "--taylor-order: must be an integer in [1, 8]"},
-                       Bad{"--step-length 1e-320", "--step-length: "},
-                       Bad{"--max-points 1.5", "--max-points: must be an integer"},
-                       Bad{"--geometry guesswork", "--geometry: unknown geometry method \"guesswork\""}}) {
+  for (const Bad& b :
+       {Bad{"--step-length -1", "--step-length: must be a finite number >= 0 (0 = automatic), got -1"},
+        Bad{"--step-length nan", "--step-length: "},
+        Bad{"--tolerance -1", "--tolerance: must be a finite number >= 0 (0 = automatic)"},
+        Bad{"--tolerance nan", "--tolerance: "}, Bad{"--deviation nan", "--deviation: "},
+        Bad{"--taylor-order 4294967297", "--taylor-order: must be an integer in [1, 8]"},
+        Bad{"--step-length 1e-320", "--step-length: "}, Bad{"--max-points 1.5", "--max-points: must be an integer"},
+        Bad{"--geometry guesswork", "--geometry: unknown geometry method \"guesswork\""}}) {
     CliRun r = run("trace " + scene + " -q " + b.args);
     EXPECT_EQ(r.status, 2) << b.args;
     EXPECT_THAT(r.err, HasSubstr(b.message)) << b.args;

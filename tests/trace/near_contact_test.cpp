@@ -23,6 +23,7 @@ TraceResult trace_sphere_above_plane(double gap) {
                   PairKind::kImplicitImplicit);
   TraceOptions o;
   o.max_points = 500;
+  o.tolerance = 1e-12;  // stated: the gaps below are measured against it (the default is relative)
   return trace_all(P, o);
 }
 

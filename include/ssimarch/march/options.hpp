@@ -68,7 +68,9 @@ struct TraceOptions {
 
   // Corrector: a point is accepted when its distance from both surfaces (first-order estimate,
   // |H| for parametric pairs, |g|/|grad g| for implicit ones) is <= tolerance (model units).
-  double tolerance = 1e-12;
+  // 0 = automatic: kAutomaticToleranceRatio * scale() (march/model_size.hpp), so that a model
+  // in millimetres and the same model in metres are traced alike (issue 29).
+  double tolerance = 0.0;
   // Corrector: at most this many updates (Newton steps or projection rounds) per point.
   int max_corrector_iterations = 12;
 
