@@ -12,6 +12,7 @@
 #include "run_budget.hpp"
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/io/step_reader.hpp"
+#include "ssimarch/io/step_units.hpp"
 
 namespace ssimarch::cli {
 
@@ -52,10 +53,20 @@ void run_faces(const FacesArgs& a) {
                              list.size(), a.file);
     g_exit_status = 1;
   }
+  // The unit the coordinates are in: kept as the file has it (no conversion), said here.
+  const StepLengthUnit unit = step_length_unit(model.file());
+  if (unit.several)
+    std::cerr << fmt::format("ssimarch: {} declares more than one length unit; the first, {}, is listed\n", a.file,
+                             unit.name);
   if (a.json) {
-    std::cout << nlohmann::json{{"file", a.file}, {"faces", list}}.dump(2) << "\n";
+    nlohmann::json u{{"name", unit.name}, {"metres", unit.metres}, {"several", unit.several}};
+    std::cout << nlohmann::json{{"file", a.file}, {"length_unit", u}, {"faces", list}}.dump(2) << "\n";
     return;
   }
+  if (unit.metres > 0)
+    std::cout << fmt::format("length unit: {} ({:g} m); coordinates are kept in it\n", unit.name, unit.metres);
+  else
+    std::cout << "length unit: none declared; coordinates are kept as written\n";
   std::cout << fmt::format("{:>5} {:>9} {:>7}  {:<28} {}\n", "face", "entity", "line", "STEP surface", "ssimarch surface, domain");
   for (const auto& j : list) {
     std::string what;

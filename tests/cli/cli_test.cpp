@@ -185,9 +185,13 @@ TEST(Cli, FacesListsAStepFilesFaces) {
   EXPECT_THAT(r.out, HasSubstr("RATIONAL_B_SPLINE_SURFACE    bspline u [0, 2] v [0, 3]"));
   EXPECT_THAT(r.out, HasSubstr("#60"));
   EXPECT_THAT(r.out, HasSubstr("plane u [-2, 2] v [-2, 0]"));
+  // Issue 28: the unit the coordinates are in is said, not converted.
+  EXPECT_THAT(r.out, HasSubstr("length unit: millimetre (0.001 m); coordinates are kept in it"));
   CliRun j = run("faces --json " + file);
   ASSERT_EQ(j.status, 0) << j.err;
   const auto parsed = nlohmann::json::parse(j.out);
+  EXPECT_EQ(parsed["length_unit"]["name"], "millimetre");
+  EXPECT_DOUBLE_EQ(parsed["length_unit"]["metres"].get<double>(), 1e-3);
   ASSERT_EQ(parsed["faces"].size(), 2u);
   EXPECT_EQ(parsed["faces"][0]["entity"], 20);
   EXPECT_EQ(parsed["faces"][1]["surface"], "plane");
