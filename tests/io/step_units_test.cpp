@@ -19,6 +19,13 @@ StepLengthUnit unit_of(const std::string& data) {
   return step_length_unit(parse_step(text, "u.step"));
 }
 
+// The inch, 0.0254 m, alone among the geometry's units.
+void expect_only_the_inch(const StepLengthUnit& unit) {
+  EXPECT_EQ(unit.name, "inch");
+  EXPECT_NEAR(unit.metres, 0.0254, 1e-17);
+  EXPECT_FALSE(unit.several);
+}
+
 TEST(StepUnits, SiUnitsWithTheirPrefixes) {
   const StepLengthUnit mm = unit_of(
       "#1=(LENGTH_UNIT()NAMED_UNIT(*)SI_UNIT(.MILLI.,.METRE.));\n"
@@ -33,33 +40,29 @@ TEST(StepUnits, SiUnitsWithTheirPrefixes) {
 }
 
 TEST(StepUnits, AnInchIsConvertedFromItsSiUnit) {
-  const StepLengthUnit in = unit_of(
+  // The inch (#4) as 25.4 of a millimetre (#1) that is itself a length unit.
+  const std::string inch_over_mm =
       "#1=(LENGTH_UNIT()NAMED_UNIT(*)SI_UNIT(.MILLI.,.METRE.));\n"
       "#2=LENGTH_MEASURE_WITH_UNIT(LENGTH_MEASURE(25.4),#1);\n"
       "#3=DIMENSIONAL_EXPONENTS(1.,0.,0.,0.,0.,0.,0.);\n"
-      "#4=(CONVERSION_BASED_UNIT('INCH',#2)LENGTH_UNIT()NAMED_UNIT(#3));\n");
+      "#4=(CONVERSION_BASED_UNIT('INCH',#2)LENGTH_UNIT()NAMED_UNIT(#3));\n";
+  const StepLengthUnit in = unit_of(inch_over_mm);
   // Without a context both length units count: the first, and "several".
   EXPECT_EQ(in.name, "millimetre");
   EXPECT_TRUE(in.several);
   // As CAD systems write it: the context assigns the inch; the millimetre only defines it.
-  const StepLengthUnit assigned = unit_of(
-      "#1=(LENGTH_UNIT()NAMED_UNIT(*)SI_UNIT(.MILLI.,.METRE.));\n"
-      "#2=LENGTH_MEASURE_WITH_UNIT(LENGTH_MEASURE(25.4),#1);\n"
-      "#3=DIMENSIONAL_EXPONENTS(1.,0.,0.,0.,0.,0.,0.);\n"
-      "#4=(CONVERSION_BASED_UNIT('INCH',#2)LENGTH_UNIT()NAMED_UNIT(#3));\n"
-      "#5=(NAMED_UNIT(*)PLANE_ANGLE_UNIT()SI_UNIT($,.RADIAN.));\n"
-      "#6=UNCERTAINTY_MEASURE_WITH_UNIT(LENGTH_MEASURE(1.E-07),#4,'distance_accuracy_value','');\n"
-      "#7=(GEOMETRIC_REPRESENTATION_CONTEXT(3)GLOBAL_UNCERTAINTY_ASSIGNED_CONTEXT((#6))"
-      "GLOBAL_UNIT_ASSIGNED_CONTEXT((#4,#5))REPRESENTATION_CONTEXT('',''));\n");
-  EXPECT_EQ(assigned.name, "inch");
-  EXPECT_NEAR(assigned.metres, 0.0254, 1e-17);
-  EXPECT_FALSE(assigned.several);
+  const StepLengthUnit assigned =
+      unit_of(inch_over_mm +
+              "#5=(NAMED_UNIT(*)PLANE_ANGLE_UNIT()SI_UNIT($,.RADIAN.));\n"
+              "#6=UNCERTAINTY_MEASURE_WITH_UNIT(LENGTH_MEASURE(1.E-07),#4,'distance_accuracy_value','');\n"
+              "#7=(GEOMETRIC_REPRESENTATION_CONTEXT(3)GLOBAL_UNCERTAINTY_ASSIGNED_CONTEXT((#6))"
+              "GLOBAL_UNIT_ASSIGNED_CONTEXT((#4,#5))REPRESENTATION_CONTEXT('',''));\n");
+  expect_only_the_inch(assigned);
   const StepLengthUnit only = unit_of(
       "#1=(NAMED_UNIT(*)SI_UNIT(.MILLI.,.METRE.));\n"
       "#2=LENGTH_MEASURE_WITH_UNIT(LENGTH_MEASURE(25.4),#1);\n"
       "#4=(CONVERSION_BASED_UNIT('INCH',#2)LENGTH_UNIT()NAMED_UNIT(*));\n");
-  EXPECT_EQ(only.name, "inch");
-  EXPECT_NEAR(only.metres, 0.0254, 1e-17);
+  expect_only_the_inch(only);
 }
 
 // An assembly as Inventor writes one (pythonocc-demos' 11752.stp): the product's placement context
@@ -76,9 +79,7 @@ TEST(StepUnits, TheUnitOfTheContextHoldingTheBrep) {
       "#7=SHAPE_REPRESENTATION('',(),#6);\n"
       "#8=ADVANCED_BREP_SHAPE_REPRESENTATION('',(),#4);\n"
       "#9=CONTEXT_DEPENDENT_SHAPE_REPRESENTATION(#7,#8);\n");
-  EXPECT_EQ(u.name, "inch");
-  EXPECT_NEAR(u.metres, 0.0254, 1e-17);
-  EXPECT_FALSE(u.several);
+  expect_only_the_inch(u);
 }
 
 TEST(StepUnits, NoneDeclaredIsSaid) {
