@@ -228,10 +228,19 @@ std::optional<BranchGerm> branch_at(const Problem& pr, int slot, const Row& row,
   return g;
 }
 
+// Whether two germs are one branch: the same tangent line and the same offsets on the circle of
+// radius rho. A line along the chart's first axis may come out as d or -d (its angle rounds to
+// either end of [0, pi): a loop through a NURBS sphere's pole met by an implicit cylinder, issue 27,
+// was two germs and h their square, a "tangential contact"); in the flipped frame X -> -X, Y -> -Y
+// the offsets are y_k -> (-1)^(k+1) y_k.
 bool same_branch(const BranchGerm& a, const BranchGerm& b, double rho) {
-  if ((a.d - b.d).norm() > kSameBranchRelative) return false;
+  const double s = a.d.dot(b.d) >= 0 ? 1.0 : -1.0;
+  if ((a.d - s * b.d).norm() > kSameBranchRelative) return false;
   double gap = 0;
-  for (std::size_t k = 1; k < a.y.size(); ++k) gap += std::fabs(a.y[k] - b.y[k]) * std::pow(rho, static_cast<double>(k));
+  for (std::size_t k = 1; k < a.y.size(); ++k) {
+    const double flip = s > 0 || k % 2 == 1 ? 1.0 : -1.0;
+    gap += std::fabs(a.y[k] - flip * b.y[k]) * std::pow(rho, static_cast<double>(k));
+  }
   return gap <= kSameBranchRelative * rho;
 }
 

@@ -140,5 +140,24 @@ TEST(CollapsedRow, CurveThroughARationalSpheresPoleIsOneClosedCurve) {
   EXPECT_LT((r.singular_points[0].p - (Vec3(1, 0, 1) - c)).norm(), 1e-9);
 }
 
+// Issue 27: two loops, each through one pole of the rational sphere of radius 2 (the cylinder
+// x^2 + y^2 = x inside it: z^2 = 4 - x). At each pole the two roots w, w + pi of the row give one
+// branch whose tangent line lies along the chart's first axis, which rounds to either end of
+// [0, pi); taken for two branches, their product made the pole a "tangential contact" and the loop
+// was traced four times over. Reference length of a loop: int_0^2pi sqrt(1/4 + (sin t /
+// (4 sqrt(7/2 - cos t / 2)))^2) dt = 3.19724445684831 (mpmath, 30 digits).
+TEST(CollapsedRow, LoopsThroughBothPolesAreTracedOnceEach) {
+  const Cylinder cylinder(Vec3(0.5, 0, 0), Vec3::UnitZ(), 0.5, {-3, 3});
+  for (PairKind kind : {PairKind::kParametricImplicit, PairKind::kParametricParametric}) {
+    const TraceResult r = trace_all(Problem(nurbs_sphere(2, 2), cylinder, kind), {});
+    ASSERT_EQ(r.curves.size(), 2u) << to_string(kind);
+    for (const TracedCurve& c : r.curves) {
+      EXPECT_TRUE(c.closed) << to_string(kind);
+      EXPECT_NEAR(c.length / 3.19724445684831 - 1, 0.0, 1e-8) << to_string(kind);
+    }
+    EXPECT_TRUE(r.singular_points.empty()) << to_string(kind);
+  }
+}
+
 }  // namespace
 }  // namespace ssimarch
