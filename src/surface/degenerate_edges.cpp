@@ -2,13 +2,15 @@
 
 #include <cmath>
 
+#include "edge_samples.hpp"
+
 namespace ssimarch {
 
 namespace {
-double edge_eps(const Surface& surface) {
-  const Box& b = surface.box();
-  const double diagonal = Vec3(b.x.width(), b.y.width(), b.z.width()).norm();
-  return kDegenerateEdgeRelative * (std::isfinite(diagonal) && diagonal > 0 ? diagonal : 1.0);
+double edge_eps(const Surface& surface) { return internal::edge_eps(surface.box()); }
+Vec3 point_of(const Surface& surface, double u, double v) {
+  const Vec3T<double> p = surface.point(u, v);
+  return {p.x, p.y, p.z};
 }
 }  // namespace
 
@@ -16,18 +18,8 @@ bool closes_seam(const Surface& surface, int parameter) {
   if (!surface.is_parametric()) return false;
   const ParamDomain& d = surface.domain();
   if (parameter == 0 ? d.periodic_u : d.periodic_v) return false;
-  const Interval& across = parameter == 0 ? d.u : d.v;
-  const Interval& along = parameter == 0 ? d.v : d.u;
-  const double eps = edge_eps(surface);
-  constexpr int kSamples = 33;
-  for (int i = 0; i < kSamples; ++i) {
-    const double w = along.lo + along.width() * i / (kSamples - 1);
-    const Vec3T<double> a = parameter == 0 ? surface.point(across.lo, w) : surface.point(w, across.lo);
-    const Vec3T<double> b = parameter == 0 ? surface.point(across.hi, w) : surface.point(w, across.hi);
-    const Vec3 diff(a.x - b.x, a.y - b.y, a.z - b.z);
-    if (!diff.allFinite() || diff.norm() > eps) return false;
-  }
-  return true;
+  return internal::edges_agree([&](double u, double v) { return point_of(surface, u, v); }, parameter, d,
+                               edge_eps(surface));
 }
 
 std::vector<DegenerateEdge> degenerate_edges(const Surface& surface) {

@@ -6,9 +6,9 @@
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/surface/bezier_patch.hpp"
 #include "ssimarch/surface/bspline_surface.hpp"
-#include "ssimarch/surface/degenerate_edges.hpp"
 #include "ssimarch/surface/frame.hpp"
 #include "ssimarch/surface/spline_basis.hpp"
+#include "edge_samples.hpp"
 
 namespace ssimarch {
 namespace {
@@ -136,27 +136,17 @@ BSplineSurface::BSplineSurface(int degree_u, int degree_v, std::vector<double> k
   domain_.periodic_v = edges_coincide(1);
 }
 
-// The sampled test of surface/degenerate_edges.cpp's closes_seam, on the patch itself: the two
-// edges across `parameter` agree within kDegenerateEdgeRelative of the control box's diagonal at
-// 33 points, and they are not one point each (a collapsed pair is a pole, not a seam).
+// closes_seam's sampled test (surface/degenerate_edges.cpp), on the patch itself: the two edges
+// across `parameter` agree within kDegenerateEdgeRelative of the control box's diagonal, and they
+// are not one point each (a collapsed pair is a pole, not a seam).
 bool BSplineSurface::edges_coincide(int parameter) const {
-  const Interval& across = parameter == 0 ? domain_.u : domain_.v;
-  const Interval& along = parameter == 0 ? domain_.v : domain_.u;
-  const double diagonal = Vec3(box_.x.width(), box_.y.width(), box_.z.width()).norm();
-  const double eps = kDegenerateEdgeRelative * (std::isfinite(diagonal) && diagonal > 0 ? diagonal : 1.0);
-  auto at = [&](double a, double w) {
-    const Vec3T<double> p = parameter == 0 ? point(a, w) : point(w, a);
+  const double eps = internal::edge_eps(box_);
+  double extent = 0;
+  const auto at = [this](double u, double v) {
+    const Vec3T<double> p = point(u, v);
     return Vec3(p.x, p.y, p.z);
   };
-  constexpr int kSamples = 33;
-  double edge_length = 0;
-  for (int i = 0; i < kSamples; ++i) {
-    const double w = along.lo + along.width() * i / (kSamples - 1);
-    const Vec3 a = at(across.lo, w), b = at(across.hi, w);
-    if (!(a - b).allFinite() || (a - b).norm() > eps) return false;
-    edge_length = std::max(edge_length, (a - at(across.lo, along.lo)).norm());
-  }
-  return edge_length > eps;
+  return internal::edges_agree(at, parameter, domain_, eps, &extent) && extent > eps;
 }
 
 }  // namespace ssimarch
