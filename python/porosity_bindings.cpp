@@ -68,8 +68,8 @@ std::vector<Particle> particles_of(const py::object& obj) {
   return out;
 }
 
-PorosityJob porosity_job(const py::object& particles, double radius, const py::object& height_range,
-                         double tolerance, unsigned threads) {
+PorosityJob porosity_job(const py::object& particles, double radius, const py::object& height_range, double tolerance,
+                         unsigned threads, const std::string& overlaps) {
   PorosityJob job;
   if (py::isinstance<py::str>(particles) || py::hasattr(particles, "__fspath__"))
     job.packing_file = py::str(py::module_::import("os").attr("fspath")(particles)).cast<std::string>();
@@ -82,27 +82,31 @@ PorosityJob porosity_job(const py::object& particles, double radius, const py::o
   }
   job.options.tolerance = tolerance;
   job.options.threads = threads;
+  job.options.overlaps = overlap_rule_named(overlaps);
   return job;
 }
 
-// Overlapping particles are counted twice (docs/porosity.md): said as a RuntimeWarning, as the CLI
-// says it on stderr (issue 29: Python returned negative porosities silently). The CLI's --strict is
-// Python's warning filter: warnings.simplefilter("error", RuntimeWarning) makes it an exception.
-void warn_of_overlaps(const PorosityJobResult& r) {
+// Overlapping particles (docs/porosity.md): said as a RuntimeWarning, as the CLI says it on
+// stderr, with how their common volume was counted (`overlaps=`). The CLI's --strict is Python's
+// warning filter: warnings.simplefilter("error", RuntimeWarning) makes it an exception.
+void warn_of_overlaps(const PorosityJobResult& r, OverlapRule rule) {
   const ParticleOverlaps& o = r.overlaps;
   if (o.pairs <= 0) return;
   std::ostringstream m;
   m.precision(6);
   m << o.pairs << " pair" << (o.pairs == 1 ? "" : "s") << " of particles overlap (worst: particles " << o.worst_first
-    << " and " << o.worst_second << ", 0-based, by " << o.max_depth << "); their common volume (at least "
-    << o.doubled_volume << ") is counted twice, so the porosities are too low";
+    << " and " << o.worst_second << ", 0-based, by " << o.max_depth << "); their common volume (" << o.doubled_volume
+    << ") is "
+    << (rule == OverlapRule::kUnion
+            ? "counted once: the porosities are those of the union of the particles"
+            : "counted once per particle holding it (overlaps='sum'), so the porosities are too low");
   if (PyErr_WarnEx(PyExc_RuntimeWarning, m.str().c_str(), 2) != 0) throw py::error_already_set();
 }
 
 PorosityJobResult run_job(PorosityJob job) {
   job.progress = [](std::string_view, double) { throw_if_interrupted(); };
   PorosityJobResult r = python::run_interruptible([&] { return run_porosity_job(job); });
-  warn_of_overlaps(r);
+  warn_of_overlaps(r, job.options.overlaps);
   return r;
 }
 
@@ -222,56 +226,64 @@ void bind_packing(py::module_& m) {
 void bind_porosity(py::module_& m) {
   m.def(
       "radial",
-      [](const py::object& particles, double radius, int points, const py::object& height, double tol, unsigned threads) {
-        PorosityJob job = porosity_job(particles, radius, height, tol, threads);
+      [](const py::object& particles, double radius, int points, const py::object& height, double tol, unsigned threads,
+         const std::string& overlaps) {
+        PorosityJob job = porosity_job(particles, radius, height, tol, threads, overlaps);
         if (points == 0) throw InputError("radial_points", "needs at least one radius (got 0)");
         job.radial_points = points;
         const PorosityJobResult r = run_job(job);
         return py::make_tuple(vector_array(r.radial->x), vector_array(r.radial->porosity));
       },
-      py::arg("particles"), py::arg("radius"), py::arg("points") = 100, py::kw_only(), py::arg("height_range") = py::none(),
-      py::arg("tolerance") = 1e-8, py::arg("threads") = 0u,
+      py::arg("particles"), py::arg("radius"), py::arg("points") = 100, py::kw_only(),
+      py::arg("height_range") = py::none(), py::arg("tolerance") = 1e-8, py::arg("threads") = 0u,
+      py::arg("overlaps") = "union",
       "Radial porosity eps(r) at `points` radii evenly on (0, radius]: returns (r, eps) as numpy arrays.");
   m.def(
       "axial",
-      [](const py::object& particles, double radius, int slices, const py::object& height, double tol, unsigned threads) {
-        PorosityJob job = porosity_job(particles, radius, height, tol, threads);
+      [](const py::object& particles, double radius, int slices, const py::object& height, double tol, unsigned threads,
+         const std::string& overlaps) {
+        PorosityJob job = porosity_job(particles, radius, height, tol, threads, overlaps);
         if (slices == 0) throw InputError("axial_slices", "needs at least one slice (got 0)");
         job.axial_slices = slices;
         const PorosityJobResult r = run_job(job);
         return py::make_tuple(vector_array(r.axial->x), vector_array(r.axial->porosity));
       },
-      py::arg("particles"), py::arg("radius"), py::arg("slices") = 100, py::kw_only(), py::arg("height_range") = py::none(),
-      py::arg("tolerance") = 1e-8, py::arg("threads") = 0u,
+      py::arg("particles"), py::arg("radius"), py::arg("slices") = 100, py::kw_only(),
+      py::arg("height_range") = py::none(), py::arg("tolerance") = 1e-8, py::arg("threads") = 0u,
+      py::arg("overlaps") = "union",
       "Axial porosity eps(z) at the centres of `slices` equal slices of the height range: returns (z, eps).");
   m.def(
       "bulk",
-      [](const py::object& particles, double radius, const py::object& height, double tol, unsigned threads) {
-        return run_job(porosity_job(particles, radius, height, tol, threads)).bulk.porosity;
+      [](const py::object& particles, double radius, const py::object& height, double tol, unsigned threads,
+         const std::string& overlaps) {
+        return run_job(porosity_job(particles, radius, height, tol, threads, overlaps)).bulk.porosity;
       },
       py::arg("particles"), py::arg("radius"), py::kw_only(), py::arg("height_range") = py::none(),
-      py::arg("tolerance") = 1e-8, py::arg("threads") = 0u,
+      py::arg("tolerance") = 1e-8, py::arg("threads") = 0u, py::arg("overlaps") = "union",
       "Bulk porosity of the container (radius, height range; default: the packing's vertical extent).");
   m.def(
       "bins",
-      [](const py::object& particles, double radius, int bins, const py::object& height, double tol, unsigned threads) {
-        PorosityJob job = porosity_job(particles, radius, height, tol, threads);
+      [](const py::object& particles, double radius, int bins, const py::object& height, double tol, unsigned threads,
+         const std::string& overlaps) {
+        PorosityJob job = porosity_job(particles, radius, height, tol, threads, overlaps);
         if (bins == 0) throw InputError("bins", "needs at least one bin (got 0)");
         job.bins = bins;
         const PorosityJobResult r = run_job(job);
         return py::make_tuple(vector_array(r.bins->x), vector_array(r.bins->x_upper), vector_array(r.bins->porosity));
       },
-      py::arg("particles"), py::arg("radius"), py::arg("bins") = 50, py::kw_only(), py::arg("height_range") = py::none(),
-      py::arg("tolerance") = 1e-8, py::arg("threads") = 0u,
+      py::arg("particles"), py::arg("radius"), py::arg("bins") = 50, py::kw_only(),
+      py::arg("height_range") = py::none(), py::arg("tolerance") = 1e-8, py::arg("threads") = 0u,
+      py::arg("overlaps") = "union",
       "Porosity averaged over `bins` equal annular bins of [0, radius] (the CLI's --bins): returns (r_inner, "
       "r_outer, eps).");
   m.def(
       "map",
       [](const py::object& particles, double radius, int radii, int heights, const py::object& height, double tol,
-         unsigned threads) {
-        PorosityJob job = porosity_job(particles, radius, height, tol, threads);
-        if (radii == 0 || heights == 0) throw InputError("map", "needs at least one radius and one height (got " +
-                                                                    std::to_string(radii) + " x " + std::to_string(heights) + ")");
+         unsigned threads, const std::string& overlaps) {
+        PorosityJob job = porosity_job(particles, radius, height, tol, threads, overlaps);
+        if (radii == 0 || heights == 0)
+          throw InputError("map", "needs at least one radius and one height (got " + std::to_string(radii) + " x " +
+                                      std::to_string(heights) + ")");
         job.map_radii = radii;
         job.map_heights = heights;
         const PorosityJobResult r = run_job(job);
@@ -280,6 +292,7 @@ void bind_porosity(py::module_& m) {
       },
       py::arg("particles"), py::arg("radius"), py::arg("radii") = 50, py::arg("heights") = 50, py::kw_only(),
       py::arg("height_range") = py::none(), py::arg("tolerance") = 1e-8, py::arg("threads") = 0u,
+      py::arg("overlaps") = "union",
       "Porosity map eps(r, z) at the centres of radii x heights cells (the CLI's --map): returns (r, z, eps) with "
       "eps of shape (heights, radii), eps[i, j] at z[i], r[j].");
   bind_packing(m);

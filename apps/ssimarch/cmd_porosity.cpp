@@ -32,7 +32,7 @@ namespace ssimarch::cli {
 namespace {
 
 struct PorosityArgs {
-  std::string packing, output, plot, summary, z_range, map, method = "chord", format, html;
+  std::string packing, output, plot, summary, z_range, map, method = "chord", format, html, overlaps = "union";
   double radius = 0, tolerance = 1e-8;
   // Profile sizes; kNotGiven where the flag is absent (an explicit 0 is an error, not "absent").
   static constexpr int kNotGiven = std::numeric_limits<int>::min();
@@ -83,6 +83,11 @@ PorosityJob make_job(const PorosityArgs& given) {
   a.axial = profile_count(given.axial, "--axial");
   if (a.radii && a.bins) throw CliError("--radii and --bins are mutually exclusive");
   if (a.method != "chord" && a.method != "kernel") throw CliError("--method must be 'chord' or 'kernel'");
+  if (a.overlaps != "union" && a.overlaps != "sum")
+    throw CliError(
+        "--overlaps must be 'union' (a shared volume counted once) or 'sum' (once per particle holding it), "
+        "got '" +
+        a.overlaps + "'");
   PorosityJob job;
   job.packing_file = a.packing;
   job.input_limits = input_limits();
@@ -106,6 +111,7 @@ PorosityJob make_job(const PorosityArgs& given) {
   job.options.tolerance = a.tolerance;
   job.options.threads = a.threads;
   job.options.method = a.method == "kernel" ? ProfileMethod::kKernel : ProfileMethod::kChord;
+  job.options.overlaps = overlap_rule_named(a.overlaps, "--overlaps");
   const int kinds = (job.radial_points > 0) + (job.bins > 0) + (job.axial_slices > 0) + (job.map_radii > 0);
   if (a.format != "" && a.format != "csv" && a.format != "vtk" && a.format != "vtk-ascii")
     throw CliError("--format must be csv, vtk or vtk-ascii, got '" + a.format + "'");
@@ -271,8 +277,11 @@ nlohmann::json summary(const PorosityArgs& a, const PorosityJobResult& r) {
   for (const auto& [name, t] : stages)
     if (*t) js["timings_s"][name] = **t;
   js["unconverged_integrals"] = r.unconverged;
-  js["overlaps"] = {{"pairs", r.overlaps.pairs}, {"max_depth", r.overlaps.max_depth},
-                    {"doubled_volume", r.overlaps.doubled_volume}};
+  js["overlaps"] = {{"rule", a.overlaps},
+                    {"pairs", r.overlaps.pairs},
+                    {"max_depth", r.overlaps.max_depth},
+                    {"doubled_volume", r.overlaps.doubled_volume},
+                    {"groups", r.bulk.stats.overlap_groups}};
   return js;
 }
 
@@ -307,15 +316,20 @@ long values_outside_unit_interval(const PorosityJobResult& r) {
   return n;
 }
 
-// Overlapping particles are counted twice: said with the count, the worst pair (1-based, in file
-// order) and the volume counted twice, and a failure under --strict.
-std::string overlap_message(const PorosityJobResult& r) {
+// Overlapping particles: said with the count, the worst pair (1-based, in file order) and the
+// volume they share, and how it was counted (--overlaps); a failure under --strict.
+std::string overlap_message(const PorosityJobResult& r, bool union_rule) {
   const ParticleOverlaps& o = r.overlaps;
   std::ostringstream m;
   m.precision(6);
-  m << o.pairs << " pair" << (o.pairs == 1 ? "" : "s") << " of particles overlap (worst: particles " << o.worst_first + 1
-    << " and " << o.worst_second + 1 << " by " << o.max_depth << "); their common volume (at least " << o.doubled_volume
-    << ") is counted twice, so the porosities are too low";
+  m << o.pairs << " pair" << (o.pairs == 1 ? "" : "s") << " of particles overlap (worst: particles "
+    << o.worst_first + 1 << " and " << o.worst_second + 1 << " by " << o.max_depth << "); their common volume ("
+    << o.doubled_volume << ")";
+  if (union_rule) {
+    m << " is counted once: the profiles are those of the union of the particles";
+    return m.str();
+  }
+  m << " is counted once per particle holding it (--overlaps sum), so the porosities are too low";
   if (const long bad = values_outside_unit_interval(r); bad > 0)
     m << " (" << bad << " value" << (bad == 1 ? " is" : "s are") << " outside [0, 1] for this reason)";
   return m.str();
@@ -368,8 +382,9 @@ void run(const PorosityArgs& a) {
 
 void write_outputs(const PorosityArgs& a, const PorosityJobResult& r, const PorosityJob& job, std::string_view script) {
   if (r.overlaps.pairs > 0) {
-    if (a.strict) throw CliError("--strict: " + overlap_message(r) + "; no output was written", 1);
-    std::cerr << "ssimarch: warning: " << overlap_message(r) << "\n";
+    const bool union_rule = a.overlaps == "union";
+    if (a.strict) throw CliError("--strict: " + overlap_message(r, union_rule) + "; no output was written", 1);
+    std::cerr << "ssimarch: " << (union_rule ? "note: " : "warning: ") << overlap_message(r, union_rule) << "\n";
   }
   nlohmann::json js = summary(a, r);
   OutputFiles files;  // every output or none (io/output_files.hpp)
@@ -412,8 +427,11 @@ void add_porosity_command(CLI::App& app) {
   sub->add_option("--tolerance", args->tolerance, "absolute accuracy of each porosity value (default 1e-8)");
   sub->add_option("--threads", args->threads, "worker threads (default: all cores)");
   sub->add_flag("--strict", args->strict,
-                "fail (exit 1, no output) when particles overlap each other instead of warning; their common volume "
-                "would be counted twice");
+                "fail (exit 1, no output) when particles overlap each other instead of saying so (overlapping input "
+                "rejected)");
+  sub->add_option("--overlaps", args->overlaps,
+                  "union (default): a volume that overlapping particles share counts once, the profiles of their "
+                  "union (soft-sphere DEM beds, multi-sphere clumps); sum: once per particle holding it");
   sub->add_option("--method", args->method, "chord (fast, default) or kernel (seed kernel integrated directly)");
   sub->add_flag("-q,--quiet", args->quiet, "no progress and no bulk-porosity line on stderr (notes and warnings stay)");
   add_progress_option(sub);

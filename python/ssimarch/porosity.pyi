@@ -16,6 +16,7 @@ def radial(
     height_range: tuple[float, float] | None = ...,
     tolerance: float = ...,
     threads: int = ...,
+    overlaps: str = ...,
 ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]: ...
 def axial(
     particles: _Particles,
@@ -25,6 +26,7 @@ def axial(
     height_range: tuple[float, float] | None = ...,
     tolerance: float = ...,
     threads: int = ...,
+    overlaps: str = ...,
 ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]: ...
 def bulk(
     particles: _Particles,
@@ -33,6 +35,7 @@ def bulk(
     height_range: tuple[float, float] | None = ...,
     tolerance: float = ...,
     threads: int = ...,
+    overlaps: str = ...,
 ) -> float: ...
 def bins(
     particles: _Particles,
@@ -42,6 +45,7 @@ def bins(
     height_range: tuple[float, float] | None = ...,
     tolerance: float = ...,
     threads: int = ...,
+    overlaps: str = ...,
 ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], npt.NDArray[np.float64]]: ...
 def map(
     particles: _Particles,
@@ -52,6 +56,7 @@ def map(
     height_range: tuple[float, float] | None = ...,
     tolerance: float = ...,
     threads: int = ...,
+    overlaps: str = ...,
 ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], npt.NDArray[np.float64]]: ...
 def pack(
     kind: Literal["spheres", "spherocylinders"],

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <sstream>
 #include <string>
 
@@ -22,7 +23,7 @@ constexpr int kMaxProfilePoints = 10'000'000;
 constexpr double kMaxLength = 1e100, kMinLength = 1e-100;
 // Overlap depth, relative to the smaller diameter, above which two particles overlap (a contact
 // is not an overlap: overlaps.hpp).
-constexpr double kOverlapTolerance = 1e-9;
+constexpr double kOverlapTolerance = kOverlapRelativeTolerance;
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
@@ -68,9 +69,13 @@ void require_packing_scale(std::span<const Particle> ps, const std::string& sour
   }
 }
 
-// The profile options of one stage: the job's, reporting progress under the stage's name.
-ProfileOptions stage_options(const PorosityJob& job, std::string_view stage) {
+using Groups = std::shared_ptr<const std::vector<OverlapGroup>>;
+
+// The profile options of one stage: the job's, reporting progress under the stage's name, with the
+// overlap groups found once for the whole job.
+ProfileOptions stage_options(const PorosityJob& job, const Groups& groups, std::string_view stage) {
   ProfileOptions opt = job.options;
+  opt.overlap_groups = groups;
   opt.progress = nullptr;
   if (job.progress) opt.progress = [&job, stage](double f) { job.progress(stage, f); };
   return opt;
@@ -89,11 +94,12 @@ std::span<const Particle> packing_of(const PorosityJob& job, Packing& storage, b
   return storage.particles;
 }
 
-void run_radial_stages(const PorosityJob& job, std::span<const Particle> ps, PorosityJobResult& out) {
+void run_radial_stages(const PorosityJob& job, const Groups& groups, std::span<const Particle> ps,
+                       PorosityJobResult& out) {
   const Container& c = out.container;
   if (job.radial_points > 0 || job.bins > 0) {
     const auto t0 = Clock::now();
-    const ProfileOptions opt = stage_options(job, "radial");
+    const ProfileOptions opt = stage_options(job, groups, "radial");
     if (job.radial_points > 0) {
       out.radial = radial_profile(ps, c, even_radii(c.radius, job.radial_points), opt);
       out.unconverged += out.radial->stats.unconverged;
@@ -107,14 +113,15 @@ void run_radial_stages(const PorosityJob& job, std::span<const Particle> ps, Por
   if (job.axial_slices > 0) {
     const auto t0 = Clock::now();
     out.axial = axial_profile(ps, c, slice_centres(c.slab.z_min, c.slab.z_max, job.axial_slices),
-                              stage_options(job, "axial"));
+                              stage_options(job, groups, "axial"));
     out.unconverged += out.axial->stats.unconverged;
     out.timings.axial = seconds_since(t0);
   }
   if (job.map_radii > 0) {
     const auto t0 = Clock::now();
-    out.map = porosity_map(ps, c, cell_centres(c.radius, job.map_radii),
-                           slice_centres(c.slab.z_min, c.slab.z_max, job.map_heights), stage_options(job, "map"));
+    out.map =
+        porosity_map(ps, c, cell_centres(c.radius, job.map_radii),
+                     slice_centres(c.slab.z_min, c.slab.z_max, job.map_heights), stage_options(job, groups, "map"));
     out.unconverged += out.map->stats.unconverged;
     out.timings.map = seconds_since(t0);
   }
@@ -150,12 +157,12 @@ void validate(const PorosityJob& job) {
 
 namespace {
 
-void run_stages(const PorosityJob& job, std::span<const Particle> ps, PorosityJobResult& out) {
+void run_stages(const PorosityJob& job, const Groups& groups, std::span<const Particle> ps, PorosityJobResult& out) {
   const auto t0 = Clock::now();
-  out.bulk = bulk_porosity(ps, out.container, stage_options(job, "bulk"));
+  out.bulk = bulk_porosity(ps, out.container, stage_options(job, groups, "bulk"));
   out.unconverged = out.bulk.stats.unconverged;
   out.timings.bulk = seconds_since(t0);
-  run_radial_stages(job, ps, out);
+  run_radial_stages(job, groups, ps, out);
 }
 
 // A packing file on several processes (MPI, docs/scaling.md): each reads and integrates its share
@@ -181,6 +188,11 @@ PorosityJobResult run_shared_porosity_job(const PorosityJob& job, const ProfileC
   // The overlap search moves the particles into slabs of the bed, with their neighbours from the
   // slabs beside (overlaps.hpp, docs/scaling.md): each pair is counted once, by one process.
   if (job.find_overlaps) out.overlaps = find_overlaps(ps, first, comm, kOverlapTolerance, job.options.threads);
+  // The union's overlap groups, found once for every stage (each process: those of its slab).
+  Groups groups = job.options.overlap_groups;
+  if (job.options.overlaps == OverlapRule::kUnion && !groups)
+    groups = std::make_shared<const std::vector<OverlapGroup>>(
+        overlap_groups(ps, first, comm, kOverlapTolerance, job.options.threads));
   out.container.radius = job.container_radius;
   if (job.height_range) {
     out.container.slab = *job.height_range;
@@ -188,7 +200,7 @@ PorosityJobResult run_shared_porosity_job(const PorosityJob& job, const ProfileC
     out.container.slab = vertical_extent(ps);
     comm.min_max(out.container.slab.z_min, out.container.slab.z_max);
   }
-  run_stages(job, ps, out);
+  run_stages(job, groups, ps, out);
   return out;
 }
 
@@ -214,7 +226,14 @@ PorosityJobResult run_porosity_job(const PorosityJob& job) {
     out.overlaps = find_overlaps(all, kOverlapTolerance, job.options.threads);
   out.container.radius = job.container_radius;
   out.container.slab = job.height_range ? *job.height_range : vertical_extent(all);
-  run_stages(job, ps, out);
+  // The union's overlap groups, found once for every stage; with the particles split over
+  // processes, the first process subtracts them all (the others none).
+  Groups groups = job.options.overlap_groups;
+  if (job.options.overlaps == OverlapRule::kUnion && !groups)
+    groups = std::make_shared<const std::vector<OverlapGroup>>(
+        comm && comm->rank() != 0 ? std::vector<OverlapGroup>{}
+                                  : overlap_groups(all, kOverlapTolerance, job.options.threads));
+  run_stages(job, groups, ps, out);
   return out;
 }
 

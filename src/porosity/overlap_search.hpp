@@ -5,9 +5,12 @@
 
 #include <cstddef>
 #include <span>
+#include <vector>
 
 #include "ssimarch/porosity/fixed_point_sum.hpp"
 #include "ssimarch/porosity/particle.hpp"
+#include "ssimarch/porosity/particle_union.hpp"
+#include "ssimarch/porosity/profile_communicator.hpp"
 
 namespace ssimarch::internal {
 
@@ -31,5 +34,24 @@ int overlap_level(const Particle& p);
 /// The doubled volume is summed with the quantum of FixedPointSum(volume_scale).
 PairTally search_overlaps(std::span<const Particle> particles, std::span<const long> ids, std::size_t owned,
                           double relative_tolerance, double volume_scale, unsigned threads);
+
+/// The particles one process searches (overlap_slabs.cpp): those of its slab of the bed, then its
+/// neighbours from the slabs beside, each with its index in the packing.
+struct SlabShare {
+  std::vector<Particle> local;
+  std::vector<long> ids;
+  std::size_t owned = 0;      ///< local[0, owned) lie in this process's slab
+  long total = 0;             ///< particles over all processes
+  double volume_scale = 1.0;  ///< largest particle volume times total (the quantum of volume sums)
+};
+
+/// Moves the particles of `share` (indices first, first + 1, ...) to the processes of their slabs
+/// and of the slabs within reach. Collective.
+SlabShare gather_slab(std::span<const Particle> share, long first, const ProfileCommunicator& comm);
+
+/// The overlap groups (particle_union.hpp) of the first `owned` particles: for each, the
+/// particles with a smaller id that overlap it, split into components by their lenses' boxes.
+std::vector<OverlapGroup> groups_of(std::span<const Particle> particles, std::span<const long> ids, std::size_t owned,
+                                    double relative_tolerance, unsigned threads);
 
 }  // namespace ssimarch::internal

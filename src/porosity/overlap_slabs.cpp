@@ -118,18 +118,19 @@ std::string route(std::span<const Particle> share, long first, const Slabs& s, d
 
 }  // namespace
 
-ParticleOverlaps find_overlaps(std::span<const Particle> share, long first, const ProfileCommunicator& comm,
-                               double relative_tolerance, unsigned threads) {
-  long total = static_cast<long>(share.size());
-  comm.sum(std::span<long>(&total, 1));
-  ParticleOverlaps out;
-  if (total < 2) return out;
+namespace internal {
+
+SlabShare gather_slab(std::span<const Particle> share, long first, const ProfileCommunicator& comm) {
+  SlabShare out;
+  out.total = static_cast<long>(share.size());
+  comm.sum(std::span<long>(&out.total, 1));
+  if (out.total < 2) return out;
   double unused = 0, vmax = 0, rmax = 0;
   for (const Particle& p : share) vmax = std::max(vmax, p.volume()), rmax = std::max(rmax, p.half_length() + p.radius());
   comm.min_max(unused, vmax);
   comm.min_max(unused, rmax);
-  const double scale = vmax > 0 ? vmax * static_cast<double>(total) : 1.0;
-  const Slabs slabs = make_slabs(share, total, comm);
+  out.volume_scale = vmax > 0 ? vmax * static_cast<double>(out.total) : 1.0;
+  const Slabs slabs = make_slabs(share, out.total, comm);
   // Two particles that overlap have centres closer than the sum of their reaches; a bin's width
   // more absorbs the rounding of the slab bounds.
   const double margin = 2 * rmax + slabs.w;
@@ -141,22 +142,31 @@ ParticleOverlaps find_overlaps(std::span<const Particle> share, long first, cons
   bytes = comm.exchange(std::move(bytes), counts);
   // This slab's particles first, then the neighbours'.
   const std::size_t size = record_size(rods), n = bytes.size() / size;
-  std::vector<Particle> local;
-  std::vector<long> ids;
-  local.reserve(n);
-  ids.reserve(n);
+  out.local.reserve(n);
+  out.ids.reserve(n);
   for (int pass = 0; pass < 2; ++pass)
     for (std::size_t k = 0; k < n; ++k) {
       long id = 0;
       const Particle p = particle_at(bytes.data() + k * size, rods, id);
       if ((slabs.owner(p.centre.z()) == comm.rank()) != (pass == 0)) continue;
-      local.push_back(p);
-      ids.push_back(id);
+      out.local.push_back(p);
+      out.ids.push_back(id);
     }
-  bytes = {};
-  std::size_t owned = 0;
-  while (owned < local.size() && slabs.owner(local[owned].centre.z()) == comm.rank()) ++owned;
-  const internal::PairTally t = internal::search_overlaps(local, ids, owned, relative_tolerance, scale, threads);
+  while (out.owned < out.local.size() && slabs.owner(out.local[out.owned].centre.z()) == comm.rank()) ++out.owned;
+  return out;
+}
+
+}  // namespace internal
+
+ParticleOverlaps find_overlaps(std::span<const Particle> share, long first, const ProfileCommunicator& comm,
+                               double relative_tolerance, unsigned threads) {
+  ParticleOverlaps out;
+  const internal::SlabShare slab = internal::gather_slab(share, first, comm);
+  if (slab.total < 2) return out;
+  const double scale = slab.volume_scale;
+  double unused = 0;
+  const internal::PairTally t =
+      internal::search_overlaps(slab.local, slab.ids, slab.owned, relative_tolerance, scale, threads);
   // Totals: the count and the exact volume sum in one reduction; the deepest pair by its depth,
   // then the smallest first index, then the smallest second.
   ProfileSums sums;

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <limits>
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -101,25 +102,35 @@ ProfileSums empty_sums(std::span<const double> norm) {
   return z;
 }
 
-// Runs per-particle work over fixed chunks, adds the chunks' exact sums, then those of the other
-// processes (opt.communicator): the result does not depend on threads or ranks.
+// Runs per_item(i, sums) for i < n over fixed chunks and adds the chunks' exact sums: the result
+// does not depend on the thread count.
 template <class F>
-ProfileSums run_chunks(const Prepared& prep, std::span<const double> norm, const ProfileOptions& opt,
-                       F&& per_particle) {
-  const int chunks = chunk_count(prep.size(), norm.size());
+ProfileSums chunk_sums(std::size_t n, std::span<const double> norm, const ProfileOptions& opt, F&& per_item,
+                       const std::function<void(double)>& progress) {
+  const int chunks = chunk_count(n, norm.size());
   std::vector<ProfileSums> res(static_cast<std::size_t>(chunks));
   internal::parallel_chunks(
       chunks, opt.threads,
       [&](int k) {
         ProfileSums& cr = res[static_cast<std::size_t>(k)];
         cr = empty_sums(norm);
-        const auto [b, e] = chunk_range(prep.size(), k, chunks);
+        const auto [b, e] = chunk_range(n, k, chunks);
         // Ctrl-C: the rest of the chunk is skipped; parallel_chunks throws Interrupted.
-        for (std::size_t i = b; i < e && !interrupt_requested(); ++i) per_particle(prep.shape(i), cr);
+        for (std::size_t i = b; i < e && !interrupt_requested(); ++i) per_item(i, cr);
       },
-      opt.progress);
+      progress);
   ProfileSums total = empty_sums(norm);
   for (const auto& cr : res) total += cr;
+  return total;
+}
+
+// Per-particle work over this process's particles, then the sums of the other processes
+// (opt.communicator): the result does not depend on threads or ranks.
+template <class F>
+ProfileSums run_chunks(const Prepared& prep, std::span<const double> norm, const ProfileOptions& opt,
+                       F&& per_particle) {
+  ProfileSums total = chunk_sums(
+      prep.size(), norm, opt, [&](std::size_t i, ProfileSums& cr) { per_particle(prep.shape(i), cr); }, opt.progress);
   total.particles_used = static_cast<long>(prep.size());
   total.particles_clipped = prep.clipped;
   if (opt.communicator) opt.communicator->sum(total);
@@ -171,6 +182,67 @@ void account(ProfileSums& cr, std::size_t j, const QuadResult& q) {
   cr.error[j].add(q.error);
   cr.evaluations += q.evaluations;
   if (q.status != QuadStatus::kConverged) ++cr.unconverged;
+}
+
+// The overlap groups whose covered parts a profile subtracts (particle_union.hpp): none when each
+// particle counts on its own, the caller's when given, else found here (collectively under MPI).
+std::shared_ptr<const std::vector<OverlapGroup>> groups_for(std::span<const Particle> ps, const ProfileOptions& opt) {
+  if (opt.overlaps == OverlapRule::kSum) return nullptr;
+  if (opt.overlap_groups) return opt.overlap_groups;
+  if (opt.communicator) {
+    const long first = opt.communicator->exclusive_prefix_sum(static_cast<long>(ps.size()));
+    return std::make_shared<const std::vector<OverlapGroup>>(
+        overlap_groups(ps, first, *opt.communicator, kOverlapRelativeTolerance, opt.threads));
+  }
+  return std::make_shared<const std::vector<OverlapGroup>>(overlap_groups(ps, kOverlapRelativeTolerance, opt.threads));
+}
+
+// Share of a value's accuracy budget given to the covered parts of overlap groups (the particles'
+// own integrals keep their half; the rest is margin).
+constexpr double kCoveredBudgetShare = 0.25;
+
+// Subtracts the covered parts of the groups from `sums`: covered(g, budget, cr) adds minus the
+// measure of group g's covered part to the values of cr it touches, range_of(g) is the range of
+// values it can touch. Budgets are split over
+// the groups touching a value, counted over all processes; sums are exact, as the particles'.
+template <class Range, class Covered>
+void subtract_covered(const std::vector<OverlapGroup>* groups, std::span<const double> norm, const ProfileOptions& opt,
+                      Range&& range_of, Covered&& covered, ProfileSums& sums, long& group_count) {
+  group_count = groups ? static_cast<long>(groups->size()) : 0;
+  if (opt.communicator) opt.communicator->sum(std::span<long>(&group_count, 1));
+  if (group_count == 0) return;
+  const std::size_t m = norm.size(), n = groups->size();
+  std::vector<long> count(m + 1, 0);
+  for (const OverlapGroup& g : *groups) {
+    const auto [lo, hi] = range_of(g);
+    ++count[lo];
+    --count[hi];
+  }
+  for (std::size_t j = 1; j <= m; ++j) count[j] += count[j - 1];
+  if (opt.communicator) opt.communicator->sum(count);
+  std::vector<double> budget(m);
+  for (std::size_t j = 0; j < m; ++j)
+    budget[j] = kCoveredBudgetShare * opt.tolerance * norm[j] / std::max(1L, count[j]);
+  ProfileSums total = chunk_sums(
+      n, norm, opt, [&](std::size_t i, ProfileSums& cr) { covered((*groups)[i], budget, cr); }, nullptr);
+  if (opt.communicator) opt.communicator->sum(total);
+  sums += total;
+}
+
+// covered(g, budget, cr) of subtract_covered for a profile whose value j of group g is
+// measure(g, j, budget[j]), over the values range_of(g).
+template <class Range, class Measure>
+auto each_value(Range& range_of, Measure&& measure) {
+  return [&range_of, measure](const OverlapGroup& g, const std::vector<double>& budget, ProfileSums& cr) {
+    const auto [lo, hi] = range_of(g);
+    for (std::size_t j = lo; j < hi; ++j) {
+      const QuadResult q = measure(g, j, budget[j]);
+      cr.solid[j].add(-q.value);
+      cr.error[j].add(q.error);
+      cr.evaluations += q.evaluations;
+      if (q.status != QuadStatus::kConverged) ++cr.unconverged;
+    }
+  };
 }
 
 // Index range of sorted values v with v in [lo, hi].
@@ -237,12 +309,18 @@ PorosityProfile radial_profile(std::span<const Particle> particles, const Contai
     norm[j] = 2 * kPi * radii[j] * c.height();
     budget[j] = 0.5 * opt.tolerance * norm[j] / std::max(1L, count[j]);
   }
-  const ProfileSums sums = run_chunks(prep, norm, opt, [&](const ParticleShape& s, ProfileSums& cr) {
+  ProfileSums sums = run_chunks(prep, norm, opt, [&](const ParticleShape& s, ProfileSums& cr) {
     const auto [b, e] = range_of(s);
     for (std::size_t j = b; j < e; ++j)
       account(cr, j, lateral_area(s, radii[j], c.slab, budget[j], opt.method, opt.kernel));
   });
   PorosityProfile out;
+  const auto groups = groups_for(particles, opt);
+  auto covering = [&](const OverlapGroup& g) { return index_range(radii, g.rho_min(), g.rho_max()); };
+  subtract_covered(groups.get(), norm, opt, covering,
+                   each_value(covering, [&](const OverlapGroup& g, std::size_t j,
+                                            double tol) { return covered_lateral_area(g, radii[j], c.slab, tol); }),
+                   sums, out.stats.overlap_groups);
   out.x.assign(radii.begin(), radii.end());
   finish(sums, norm, out.porosity, out.stats);
   return out;
@@ -270,7 +348,7 @@ PorosityProfile bin_profile(std::span<const Particle> particles, const Container
     norm[k] = kPi * (edges[k + 1] * edges[k + 1] - edges[k] * edges[k]) * c.height();
     budget[k] = 0.5 * opt.tolerance * norm[k] / std::max(1L, count[k]);
   }
-  const ProfileSums sums = run_chunks(prep, norm, opt, [&](const ParticleShape& s, ProfileSums& cr) {
+  ProfileSums sums = run_chunks(prep, norm, opt, [&](const ParticleShape& s, ProfileSums& cr) {
     const auto [b, e] = bins_of(s);
     const bool in_slab = s.z_min() >= c.slab.z_min && s.z_max() <= c.slab.z_max;
     for (std::size_t k = b; k < e; ++k) {
@@ -287,6 +365,18 @@ PorosityProfile bin_profile(std::span<const Particle> particles, const Container
     }
   });
   PorosityProfile out;
+  const auto groups = groups_for(particles, opt);
+  auto covering = [&](const OverlapGroup& g) {
+    const auto ub = std::upper_bound(edges.begin(), edges.end(), g.rho_min());
+    const std::size_t b = std::min(m, ub == edges.begin() ? 0 : static_cast<std::size_t>(ub - edges.begin()) - 1);
+    const auto lb = std::lower_bound(edges.begin(), edges.end(), g.rho_max());
+    return std::pair{b, std::max(b, std::min(m, static_cast<std::size_t>(lb - edges.begin())))};
+  };
+  subtract_covered(
+      groups.get(), norm, opt, covering,
+      each_value(covering, [&](const OverlapGroup& g, std::size_t k,
+                               double tol) { return covered_shell_volume(g, edges[k], edges[k + 1], c.slab, tol); }),
+      sums, out.stats.overlap_groups);
   out.x.assign(edges.begin(), edges.end() - 1);
   out.x_upper.assign(edges.begin() + 1, edges.end());
   finish(sums, norm, out.porosity, out.stats);
@@ -314,12 +404,18 @@ PorosityProfile axial_profile(std::span<const Particle> particles, const Contain
   const double area = kPi * c.radius * c.radius;
   std::vector<double> norm(m, area), budget(m);
   for (std::size_t j = 0; j < m; ++j) budget[j] = 0.5 * opt.tolerance * area / std::max(1L, count[j]);
-  const ProfileSums sums = run_chunks(prep, norm, opt, [&](const ParticleShape& s, ProfileSums& cr) {
+  ProfileSums sums = run_chunks(prep, norm, opt, [&](const ParticleShape& s, ProfileSums& cr) {
     const auto [b, e] = range_of(s);
     for (std::size_t j = b; j < e; ++j)
       account(cr, j, slice_area(s, heights[j], c.radius, budget[j], opt.kernel, opt.method));
   });
   PorosityProfile out;
+  const auto groups = groups_for(particles, opt);
+  auto covering = [&](const OverlapGroup& g) { return index_range(heights, g.box_lo.z(), g.box_hi.z()); };
+  subtract_covered(groups.get(), norm, opt, covering,
+                   each_value(covering, [&](const OverlapGroup& g, std::size_t j,
+                                            double tol) { return covered_slice_area(g, heights[j], c.radius, tol); }),
+                   sums, out.stats.overlap_groups);
   out.x.assign(heights.begin(), heights.end());
   finish(sums, norm, out.porosity, out.stats);
   return out;
@@ -337,7 +433,7 @@ PorosityMap porosity_map(std::span<const Particle> particles, const Container& c
   std::vector<double> norm(nr * nz);
   for (std::size_t iz = 0; iz < nz; ++iz)
     for (std::size_t ir = 0; ir < nr; ++ir) norm[iz * nr + ir] = 2 * kPi * radii[ir];
-  const ProfileSums sums = run_chunks(prep, norm, opt, [&](const ParticleShape& s, ProfileSums& cr) {
+  ProfileSums sums = run_chunks(prep, norm, opt, [&](const ParticleShape& s, ProfileSums& cr) {
     const auto [zb, ze] = index_range(heights, s.z_min(), s.z_max());
     const auto [rb, re] = index_range(radii, s.rho_min(), s.rho_max());
     for (std::size_t iz = zb; iz < ze; ++iz)
@@ -347,6 +443,24 @@ PorosityMap porosity_map(std::span<const Particle> particles, const Container& c
       }
   });
   PorosityMap out;
+  // Point values: the covered arcs are closed forms, no budget.
+  const auto groups = groups_for(particles, opt);
+  subtract_covered(
+      groups.get(), norm, opt,
+      [&](const OverlapGroup& g) {
+        const auto [zb, ze] = index_range(heights, g.box_lo.z(), g.box_hi.z());
+        return std::pair{zb * nr, ze * nr};
+      },
+      [&](const OverlapGroup& g, const std::vector<double>&, ProfileSums& cr) {
+        const auto [zb, ze] = index_range(heights, g.box_lo.z(), g.box_hi.z());
+        const auto [rb, re] = index_range(radii, g.rho_min(), g.rho_max());
+        for (std::size_t iz = zb; iz < ze; ++iz)
+          for (std::size_t ir = rb; ir < re; ++ir) {
+            cr.solid[iz * nr + ir].add(-covered_arc_length(g, heights[iz], radii[ir]));
+            ++cr.evaluations;
+          }
+      },
+      sums, out.stats.overlap_groups);
   out.r.assign(radii.begin(), radii.end());
   out.z.assign(heights.begin(), heights.end());
   finish(sums, norm, out.porosity, out.stats);

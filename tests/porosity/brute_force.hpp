@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -15,9 +16,10 @@ namespace ssimarch::testing {
 /// at n points; every sign change is refined by bisection to double resolution, every sampled local
 /// extremum near zero is refined by golden-section search (so pairs of close crossings between two
 /// samples are not missed), and the arcs between all crossings are classified at their midpoints.
-inline double brute_arc_length(const SpherocylinderT<double>& s, double z, double r, int n = 4096) {
+/// The same for any solid given by its margin g(theta) at the circle's points (> 0 inside).
+template <class Margin>
+double brute_arc_length_of(Margin&& g, double r, int n = 4096) {
   const double pi = std::numbers::pi;
-  auto g = [&](double t) { return inside_margin(s, Vec3(r * std::cos(t), r * std::sin(t), z)); };
   auto bisect = [&](double lo, double hi) {
     double glo = g(lo);
     for (int it = 0; it < 200 && hi - lo > 1e-16 * std::max(1.0, std::abs(lo)); ++it) {
@@ -69,6 +71,23 @@ inline double brute_arc_length(const SpherocylinderT<double>& s, double z, doubl
     if (hi > lo && g((lo + hi) / 2) > 0) total += hi - lo;
   }
   return total * r;
+}
+
+inline double brute_arc_length(const SpherocylinderT<double>& s, double z, double r, int n = 4096) {
+  return brute_arc_length_of([&](double t) { return inside_margin(s, Vec3(r * std::cos(t), r * std::sin(t), z)); }, r,
+                             n);
+}
+
+/// Length of the circle (r, z) inside the union of the particles: the largest margin of any.
+inline double brute_union_arc_length(const std::vector<SpherocylinderT<double>>& ps, double z, double r, int n = 4096) {
+  return brute_arc_length_of(
+      [&](double t) {
+        const Vec3 p(r * std::cos(t), r * std::sin(t), z);
+        double m = -std::numeric_limits<double>::infinity();
+        for (const auto& s : ps) m = std::max(m, inside_margin(s, p));
+        return m;
+      },
+      r, n);
 }
 
 }  // namespace ssimarch::testing

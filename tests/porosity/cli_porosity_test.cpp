@@ -137,13 +137,30 @@ TEST_F(porosity_Cli, OutputsAreAllOrNothing) {
 }
 
 TEST_F(porosity_Cli, OverlappingParticlesAreReportedAndFailUnderStrict) {
-  // Three coincident spheres: the porosity at their centre is 1 - 3 = -2 (the same ball counted
-  // three times); the run says why and names the worst pair.
+  // Three coincident spheres: their union is one ball (issue 30); the run names the worst pair.
   std::ofstream(p("three.csv")) << "x,y,z,d\n0,0,1,1\n0,0,1,1\n0,0,1,1\n";
-  CliRun r = run("porosity " + p("three.csv") + " --container-radius 2 --z-range 0.9,1.1 --radii 8 -o " + p("r.csv"));
+  std::ofstream(p("one.csv")) << "x,y,z,d\n0,0,1,1\n";
+  const std::string args = " --container-radius 2 --z-range 0.9,1.1 --radii 8 -o ";
+  CliRun r = run("porosity " + p("three.csv") + args + p("r.csv"));
   EXPECT_EQ(r.status, 0) << r.out;
-  EXPECT_NE(r.out.find("warning: 3 pairs of particles overlap (worst: particles 1 and 2 by 1)"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("outside [0, 1] for this reason"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("note: 3 pairs of particles overlap (worst: particles 1 and 2 by 1)"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("is counted once: the profiles are those of the union"), std::string::npos) << r.out;
+  ASSERT_EQ(run("porosity " + p("one.csv") + args + p("one_r.csv")).status, 0);
+  const auto three = lines(p("r.csv")), one = lines(p("one_r.csv"));
+  ASSERT_EQ(three.size(), one.size());
+  for (std::size_t k = 1; k < one.size(); ++k)  // r,porosity after the header
+    EXPECT_NEAR(std::stod(three[k].substr(three[k].find(',') + 1)), std::stod(one[k].substr(one[k].find(',') + 1)),
+                1e-9)
+        << three[k] << " vs " << one[k];
+  // Counted once per particle (the old rule, on request): the porosity at their centre is 1 - 3.
+  CliRun sum = run("porosity " + p("three.csv") + args + p("sum.csv") + " --overlaps sum");
+  EXPECT_EQ(sum.status, 0) << sum.out;
+  EXPECT_NE(sum.out.find("warning: 3 pairs of particles overlap"), std::string::npos) << sum.out;
+  EXPECT_NE(sum.out.find("outside [0, 1] for this reason"), std::string::npos) << sum.out;
+  CliRun bad = run("porosity " + p("three.csv") + args + p("bad.csv") + " --overlaps both");
+  EXPECT_EQ(bad.status, 2) << bad.out;
+  EXPECT_NE(bad.out.find("--overlaps must be 'union'"), std::string::npos) << bad.out;
   CliRun strict = run("porosity " + p("three.csv") + " --container-radius 2 --radii 4 --strict -o " + p("s.csv"));
   EXPECT_EQ(strict.status, 1) << strict.out;
   EXPECT_NE(strict.out.find("--strict: 3 pairs of particles overlap"), std::string::npos) << strict.out;

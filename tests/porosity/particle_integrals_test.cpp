@@ -15,14 +15,7 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-Particle make(Vec3 c, Vec3 u, double d, double l) {
-  Particle p;
-  p.centre = c;
-  p.axis = u.normalized();
-  p.diameter = d;
-  p.length = l;
-  return p;
-}
+Particle make(Vec3 c, Vec3 u, double d, double l) { return make_spherocylinder(c, u, d, l); }
 
 // Orientations named by issue 5 (a)/(b): vertical, horizontal, oblique, nearly vertical, sphere.
 std::vector<Particle> catalogue() {

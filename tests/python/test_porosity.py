@@ -181,10 +181,10 @@ def test_de_klerk_is_the_published_formula():
 
 
 def test_overlapping_particles_are_a_warning_and_strict_is_the_warning_filter():
-    # Issue 29: two overlapping spheres gave -0.146 with no word. The union issue (30) will count
-    # the common volume once; until then the double count is said, as the CLI says it.
+    # Issue 29: two overlapping spheres gave -0.146 with no word; issue 30: their common volume
+    # counts once (the union), and the overlap is still said, as the CLI says it.
     two = np.array([[0.0, 0.0, 0.0, 1.0], [0.3, 0.0, 0.0, 1.0]])
-    with pytest.warns(RuntimeWarning, match="pair of particles overlap.*counted twice"):
+    with pytest.warns(RuntimeWarning, match="pair of particles overlap.*counted once"):
         porosity.bulk(two, R)
     import warnings
     with warnings.catch_warnings():
@@ -194,6 +194,27 @@ def test_overlapping_particles_are_a_warning_and_strict_is_the_warning_filter():
     with warnings.catch_warnings():
         warnings.simplefilter("error", RuntimeWarning)
         porosity.bulk(ONE, R)  # one sphere: no warning
+
+
+def test_overlapping_particles_count_once_unless_asked_otherwise():
+    # The union's solid volume: two unit-diameter balls 0.3 apart share the lens
+    # pi (a + b - D)^2 (D^2 + 2 D (a + b)) / (12 D) with a = b = 1/2, D = 0.3.
+    import math
+    import warnings
+    two = np.array([[0.0, 0.0, 0.0, 1.0], [0.3, 0.0, 0.0, 1.0]])
+    d = 0.3
+    lens = math.pi * (1 - d) ** 2 * (d * d + 2 * d) / (12 * d)
+    ball = math.pi / 6
+    h = (-0.5, 0.5)
+    volume = math.pi * R * R * 1.0
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        union = porosity.bulk(two, R, height_range=h, tolerance=1e-12)
+        summed = porosity.bulk(two, R, height_range=h, tolerance=1e-12, overlaps="sum")
+    assert (1 - union) * volume == pytest.approx(2 * ball - lens, abs=1e-10)
+    assert (1 - summed) * volume == pytest.approx(2 * ball, abs=1e-10)
+    with pytest.raises(ssimarch.InputError, match="overlaps: must be 'union'"):
+        porosity.bulk(ONE, R, overlaps="both")
 
 
 def test_particle_rows_follow_the_readers_rules():

@@ -13,6 +13,11 @@
 
 namespace ssimarch {
 
+/// Overlap depth, relative to the smaller diameter, above which two particles overlap: a shallower
+/// contact is a contact, and its lens (volume below pi d^3 t^2 / 8 for depth t d) is far below any
+/// profile's accuracy.
+inline constexpr double kOverlapRelativeTolerance = 1e-9;
+
 struct ParticleOverlaps {
   long pairs = 0;            ///< pairs of particles whose overlap depth exceeds the tolerance
   double max_depth = 0.0;    ///< largest overlap depth d_i/2 + d_j/2 - (distance of the axes), model length
@@ -31,8 +36,8 @@ struct ParticleOverlaps {
 /// level of its smaller particle), on `threads` workers (0: the library's thread count). A pair
 /// overlaps when its depth exceeds `relative_tolerance` times the smaller diameter (contacts are
 /// not overlaps).
-ParticleOverlaps find_overlaps(std::span<const Particle> particles, double relative_tolerance = 1e-9,
-                               unsigned threads = 0);
+ParticleOverlaps find_overlaps(std::span<const Particle> particles,
+                               double relative_tolerance = kOverlapRelativeTolerance, unsigned threads = 0);
 
 /// The same over a packing split among processes: this process holds `share`, the particles
 /// first, first + 1, ... of the packing (read_packing_share). The processes exchange their
@@ -41,7 +46,7 @@ ParticleOverlaps find_overlaps(std::span<const Particle> particles, double relat
 /// process owning the particle it is tested from. Every process gets the whole result, equal to
 /// find_overlaps of the whole packing. Collective: every process of `comm` must call it.
 ParticleOverlaps find_overlaps(std::span<const Particle> share, long first, const ProfileCommunicator& comm,
-                               double relative_tolerance = 1e-9, unsigned threads = 0);
+                               double relative_tolerance = kOverlapRelativeTolerance, unsigned threads = 0);
 
 /// Volume of the lens common to two balls of radii a, b whose centres are `distance` apart:
 /// pi (a + b - D)^2 (D^2 + 2 D (a + b) - 3 (a - b)^2) / (12 D); the smaller ball's volume when

@@ -50,4 +50,14 @@ inline Particle make_sphere(const Vec3& centre, double diameter) {
   return p;
 }
 
+/// A spherocylinder of the given centre, axis (any non-zero length; made unit), diameter and length.
+inline Particle make_spherocylinder(const Vec3& centre, const Vec3& axis, double diameter, double length) {
+  Particle p;
+  p.centre = centre;
+  p.axis = axis.normalized();
+  p.diameter = diameter;
+  p.length = length;
+  return p;
+}
+
 }  // namespace ssimarch

@@ -4,18 +4,22 @@
 //   axial   eps(z)       = 1 - sum_i S_i(z) / (pi R^2)                   at given heights
 //   map     eps(r, z)    = 1 - sum_i p_i(z, r) / (2 pi r)                 azimuthal average on a grid
 //   bulk    eps          = 1 - sum_i V_i(0, R) / (pi R^2 H)
-// with H = z_max - z_min and the per-particle integrals of particle_integrals.hpp. Only the parts of
+// with H = z_max - z_min and the per-particle integrals of particle_integrals.hpp, minus, for
+// overlapping particles, the parts covered by earlier ones (particle_union.hpp), so that the solid
+// is the union of the particles. Only the parts of
 // particles inside the container count (particles sticking out are clipped, not moved or dropped).
 // Work is split over std::thread workers in fixed chunks; every sum is a FixedPointSum, so results
-// have the same bits for any thread count and any split of the particles over MPI ranks. Source: seed 001 (thesis Appendix A, the kernel),
-// docs/math/circle_spherocylinder.md §2, docs/porosity.md.
+// have the same bits for any thread count and any split of the particles over MPI ranks. Source: seed 001 (thesis
+// Appendix A, the kernel), docs/math/circle_spherocylinder.md §2, docs/porosity.md.
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <span>
 #include <vector>
 
 #include "ssimarch/porosity/particle_integrals.hpp"
+#include "ssimarch/porosity/particle_union.hpp"
 #include "ssimarch/porosity/profile_communicator.hpp"
 
 namespace ssimarch {
@@ -40,6 +44,13 @@ struct ProfileOptions {
   /// Set when this process holds only its share of the particles (MPI, profile_communicator.hpp):
   /// counts and sums are added over all processes, and every process gets the whole profile.
   const ProfileCommunicator* communicator = nullptr;
+  /// How a volume shared by overlapping particles counts (particle_union.hpp): once, as the union
+  /// of the particles (default), or once per particle holding it.
+  OverlapRule overlaps = OverlapRule::kUnion;
+  /// The overlap groups of this process's particles, when the caller found them once for several
+  /// profiles (overlap_groups; under a communicator, the collective form). Null: each profile
+  /// function finds them (collectively under a communicator).
+  std::shared_ptr<const std::vector<OverlapGroup>> overlap_groups;
 };
 
 struct ProfileStats {
@@ -48,6 +59,7 @@ struct ProfileStats {
   double max_error = 0.0;      ///< largest estimated absolute error of a porosity value
   long particles_used = 0;     ///< particles overlapping the container
   long particles_clipped = 0;  ///< of those, particles sticking out of the container (counted partially)
+  long overlap_groups = 0;     ///< overlap groups whose covered part was subtracted (OverlapRule::kUnion)
 };
 
 struct PorosityProfile {

@@ -1,0 +1,163 @@
+// Overlap groups (particle_union.hpp): for every particle, the earlier particles overlapping it,
+// found on a hierarchical grid as the overlap search finds pairs (overlaps.cpp), and split into
+// components whose covered parts lie apart. Source: docs/math/particle_union.md.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <numeric>
+#include <optional>
+
+#include "cell_index.hpp"
+#include "overlap_search.hpp"
+#include "parallel.hpp"
+#include "ssimarch/porosity/generator.hpp"
+#include "ssimarch/porosity/particle_union.hpp"
+
+namespace ssimarch {
+
+namespace {
+
+double reach(const Particle& p) { return p.half_length() + p.radius(); }
+
+// Axis-aligned box of a spherocylinder: the segment's box grown by the radius.
+void particle_box(const Particle& p, Vec3& lo, Vec3& hi) {
+  const Vec3 ext = p.half_length() * p.axis.cwiseAbs() + Vec3::Constant(p.radius());
+  lo = p.centre - ext;
+  hi = p.centre + ext;
+}
+
+// A box holding P n Q: the two particles' boxes intersected, and for two spheres meeting in a
+// circle also the box of a ball holding their lens (centre on the circle's plane, radius from the
+// circle's radius and the taller cap's height).
+void lens_box(const Particle& p, const Particle& q, Vec3& lo, Vec3& hi) {
+  Vec3 lq, hq;
+  particle_box(p, lo, hi);
+  particle_box(q, lq, hq);
+  lo = lo.cwiseMax(lq);
+  hi = hi.cwiseMin(hq);
+  if (p.length != 0 || q.length != 0) return;
+  const Vec3 d = q.centre - p.centre;
+  const double D = d.norm(), a = p.radius(), b = q.radius();
+  if (!(D > std::abs(a - b)) || !(D < a + b)) return;
+  const double t = (D * D + a * a - b * b) / (2 * D);
+  if (t < 0 || t > D) return;  // a centre beyond the circle's plane: the caps are not the bound used
+  const double rho2 = std::max(0.0, (a - t) * (a + t)), cap = std::max(a - t, b - (D - t));
+  const double R = std::sqrt(rho2 + cap * cap);
+  const Vec3 c = p.centre + (t / D) * d;
+  lo = lo.cwiseMax(c - Vec3::Constant(R));
+  hi = hi.cwiseMin(c + Vec3::Constant(R));
+}
+
+bool boxes_meet(const Vec3& alo, const Vec3& ahi, const Vec3& blo, const Vec3& bhi) {
+  return (alo.array() <= bhi.array()).all() && (blo.array() <= ahi.array()).all();
+}
+
+bool overlapping(const Particle& a, const Particle& b, double relative_tolerance) {
+  const bool spheres = a.length == 0 && b.length == 0;
+  const double s = a.radius() + b.radius();
+  if (spheres && (a.centre - b.centre).squaredNorm() >= s * s) return false;
+  const double d = spheres ? (a.centre - b.centre).norm()
+                           : segment_distance(a.minus_cap(), a.plus_cap(), b.minus_cap(), b.plus_cap());
+  return s - d > relative_tolerance * std::min(a.diameter, b.diameter);
+}
+
+// The groups of particle p with its earlier neighbours `nb` (sorted by id): components of the
+// graph whose edges join neighbours with meeting lens boxes.
+void split_groups(const Particle& p, const std::vector<const Particle*>& nb, std::vector<OverlapGroup>& out) {
+  const std::size_t n = nb.size();
+  std::vector<Vec3> lo(n), hi(n);
+  for (std::size_t k = 0; k < n; ++k) lens_box(p, *nb[k], lo[k], hi[k]);
+  std::vector<std::size_t> root(n);
+  std::iota(root.begin(), root.end(), 0);
+  auto find = [&](std::size_t k) {
+    while (root[k] != k) k = root[k] = root[root[k]];
+    return k;
+  };
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t b = a + 1; b < n; ++b)
+      if (boxes_meet(lo[a], hi[a], lo[b], hi[b])) root[find(b)] = find(a);
+  for (std::size_t a = 0; a < n; ++a) {
+    if (find(a) != a) continue;
+    OverlapGroup g;
+    g.particle = p;
+    g.box_lo = lo[a];
+    g.box_hi = hi[a];
+    for (std::size_t b = 0; b < n; ++b)
+      if (find(b) == a) {
+        g.earlier.push_back(*nb[b]);
+        g.box_lo = g.box_lo.cwiseMin(lo[b]);
+        g.box_hi = g.box_hi.cwiseMax(hi[b]);
+      }
+    out.push_back(std::move(g));
+  }
+}
+
+constexpr int kChunks = 256;
+
+}  // namespace
+
+namespace internal {
+
+std::vector<OverlapGroup> groups_of(std::span<const Particle> ps, std::span<const long> ids, std::size_t owned,
+                                    double relative_tolerance, unsigned threads) {
+  auto id = [&](std::size_t k) { return ids.empty() ? static_cast<long>(k) : ids[k]; };
+  // One grid level per power of two of the reach, as the overlap search (overlaps.cpp).
+  struct Level {
+    double max_reach = 0.0;
+    std::vector<std::uint32_t> members;
+    std::optional<CellIndex> cells;
+  };
+  std::map<int, Level> levels;
+  for (std::size_t k = 0; k < ps.size(); ++k) {
+    Level& L = levels[overlap_level(ps[k])];
+    L.max_reach = std::max(L.max_reach, reach(ps[k]));
+    L.members.push_back(static_cast<std::uint32_t>(k));
+  }
+  for (auto& [k, L] : levels) {
+    L.cells.emplace(2 * L.max_reach, L.members, [&](std::uint32_t m) -> const Vec3& { return ps[m].centre; });
+    L.members = {};
+  }
+  const int chunks = static_cast<int>(std::min<std::size_t>(kChunks, std::max<std::size_t>(owned, 1)));
+  std::vector<std::vector<OverlapGroup>> found(static_cast<std::size_t>(chunks));
+  parallel_chunks(
+      chunks, threads,
+      [&](int c) {
+        std::vector<std::uint32_t> nb;
+        std::vector<const Particle*> earlier;
+        for (std::size_t i = owned * static_cast<std::size_t>(c) / chunks;
+             i < owned * static_cast<std::size_t>(c + 1) / chunks; ++i) {
+          nb.clear();
+          // Every level, so that each particle sees all its earlier neighbours on this process.
+          for (const auto& [k, L] : levels)
+            L.cells->visit(ps[i].centre, reach(ps[i]) + L.max_reach, [&](std::uint32_t j) {
+              if (id(j) < id(i) && overlapping(ps[i], ps[j], relative_tolerance)) nb.push_back(j);
+            });
+          if (nb.empty()) continue;
+          std::sort(nb.begin(), nb.end(), [&](std::uint32_t a, std::uint32_t b) { return id(a) < id(b); });
+          earlier.clear();
+          for (std::uint32_t j : nb) earlier.push_back(&ps[j]);
+          split_groups(ps[i], earlier, found[static_cast<std::size_t>(c)]);
+        }
+      },
+      nullptr);
+  std::vector<OverlapGroup> out;
+  for (auto& f : found) std::move(f.begin(), f.end(), std::back_inserter(out));
+  return out;
+}
+
+}  // namespace internal
+
+std::vector<OverlapGroup> overlap_groups(std::span<const Particle> particles, double relative_tolerance,
+                                         unsigned threads) {
+  return internal::groups_of(particles, {}, particles.size(), relative_tolerance, threads);
+}
+
+std::vector<OverlapGroup> overlap_groups(std::span<const Particle> share, long first, const ProfileCommunicator& comm,
+                                         double relative_tolerance, unsigned threads) {
+  const internal::SlabShare slab = internal::gather_slab(share, first, comm);
+  if (slab.total < 2) return {};
+  return internal::groups_of(slab.local, slab.ids, slab.owned, relative_tolerance, threads);
+}
+
+}  // namespace ssimarch
