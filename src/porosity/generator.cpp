@@ -335,6 +335,50 @@ std::vector<Particle> drop_and_roll_spheres(const SphereBedOptions& opt, Generat
   return Deposition(opt).run(report);
 }
 
+namespace {
+
+// The placed rods' axis segments in a dense array of cubic cells over the container's box (z
+// fastest), each cell holding its segments' end points inline: a neighbour query reads nine
+// contiguous runs of cells and no particle record. A hashed grid of indices into the particles
+// made every query a chain of cache misses, so the generation time grew faster than N once the
+// bed left the cache (1e4 / 1e5 / 1e6 rods: 0.2 / 4.9 / 109 s).
+class SegmentGrid {
+ public:
+  struct Segment {
+    Vec3 e0, e1;
+  };
+  SegmentGrid(double cell, double R, double H)
+      : cell_(cell),
+        n_(static_cast<long>(std::ceil(2 * R / cell)) + 1),
+        nz_(static_cast<long>(std::ceil(H / cell)) + 1),
+        R_(R),
+        cells_(static_cast<std::size_t>(n_ * n_ * nz_)) {}
+  void insert(const Vec3& c, const Segment& s) { cells_[at(ix(c.x()), ix(c.y()), iz(c.z()))].push_back(s); }
+  /// Calls f(segment) for the segments whose centres lie in cells within `reach` of c, until f
+  /// returns false.
+  template <class F>
+  void visit(const Vec3& c, double reach, F&& f) const {
+    const long i0 = ix(c.x() - reach), i1 = ix(c.x() + reach), j0 = ix(c.y() - reach), j1 = ix(c.y() + reach);
+    const long k0 = iz(c.z() - reach), k1 = iz(c.z() + reach);
+    for (long i = i0; i <= i1; ++i)
+      for (long j = j0; j <= j1; ++j)
+        for (long k = k0; k <= k1; ++k)
+          for (const Segment& s : cells_[at(i, j, k)])
+            if (!f(s)) return;
+  }
+
+ private:
+  long ix(double v) const { return std::clamp(static_cast<long>(std::floor((v + R_) / cell_)), 0L, n_ - 1); }
+  long iz(double v) const { return std::clamp(static_cast<long>(std::floor(v / cell_)), 0L, nz_ - 1); }
+  std::size_t at(long i, long j, long k) const { return static_cast<std::size_t>((i * n_ + j) * nz_ + k); }
+  double cell_;
+  long n_, nz_;
+  double R_;
+  std::vector<std::vector<Segment>> cells_;
+};
+
+}  // namespace
+
 std::vector<Particle> rsa_spherocylinders(const SpherocylinderRsaOptions& o, GeneratorReport* report) {
   check_bed(o.container_radius, o.diameter, o.count);
   if (!(o.length >= 0) || !std::isfinite(o.length))
@@ -355,7 +399,7 @@ std::vector<Particle> rsa_spherocylinders(const SpherocylinderRsaOptions& o, Gen
   std::mt19937_64 rng(o.seed);
   std::uniform_real_distribution<double> U(0, 1);
   std::normal_distribution<double> N;
-  internal::SpatialGrid grid(o.diameter + o.length);
+  SegmentGrid grid(o.diameter + o.length, o.container_radius, H);
   std::vector<Particle> out;
   long attempts = 0;
   const long max_attempts = o.max_attempts_per_particle * std::max(1L, o.count);
@@ -371,17 +415,16 @@ std::vector<Particle> rsa_spherocylinders(const SpherocylinderRsaOptions& o, Gen
     bool ok = std::hypot(e0.x(), e0.y()) <= Rw && std::hypot(e1.x(), e1.y()) <= Rw;
     ok = ok && std::min(e0.z(), e1.z()) >= a && std::max(e0.z(), e1.z()) <= H - a;
     if (!ok) continue;
-    grid.visit(c, o.diameter + o.length, [&](int j) {
-      if (!ok) return;
-      const Particle& q = out[j];
-      if (segment_distance(e0, e1, q.minus_cap(), q.plus_cap()) < o.diameter) ok = false;
+    grid.visit(c, o.diameter + o.length, [&](const SegmentGrid::Segment& q) {
+      ok = segment_distance(e0, e1, q.e0, q.e1) >= o.diameter;
+      return ok;
     });
     if (!ok) continue;
     Particle p = proto;
     p.centre = c;
     p.axis = u;
     out.push_back(p);
-    grid.insert(c, static_cast<int>(out.size()) - 1);
+    grid.insert(c, {p.minus_cap(), p.plus_cap()});
     report_progress("packing", static_cast<double>(out.size()), static_cast<double>(o.count));
   }
   if (report) {
