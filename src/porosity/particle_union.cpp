@@ -13,6 +13,7 @@
 #include "disk_union.hpp"
 #include "interval_cover.hpp"
 #include "ssimarch/core/error.hpp"
+#include "ssimarch/core/interrupt.hpp"
 #include "ssimarch/porosity/quadrature.hpp"
 #include "ssimarch/porosity/polynomial_roots.hpp"
 #include "ssimarch/porosity/sphere_arc.hpp"
@@ -467,6 +468,8 @@ QuadResult covered_shell_volume(const OverlapGroup& g, double r0, double r1, con
   const double inner = 0.1 * abs_tol / (r1 - r0);
   QuadResult stats;
   auto A = [&](double r) {
+    // A heavily overlapping rod group takes seconds: Ctrl-C is honoured between its lateral areas.
+    throw_if_interrupted();
     const QuadResult q = covered_lateral_area(g, r, slab, inner);
     stats.evaluations += q.evaluations;
     if (q.status != QuadStatus::kConverged) stats.status = q.status;
