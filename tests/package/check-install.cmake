@@ -25,6 +25,14 @@ run(${WORK_DIR}/consumer/viviani_length ${SOURCE_DIR}/examples/viviani.json)
 if(NOT out MATCHES "viviani [0-9]+ 15\\.28")
   message(FATAL_ERROR "unexpected output of the consumer: ${out}")
 endif()
+# The build tree is a package too (issue 29): the consumer configured with CMAKE_PREFIX_PATH=<build>.
+run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/cmake-consumer -B ${WORK_DIR}/consumer-build-tree -G Ninja
+    -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${BUILD_DIR})
+run(${CMAKE_COMMAND} --build ${WORK_DIR}/consumer-build-tree)
+run(${WORK_DIR}/consumer-build-tree/viviani_length ${SOURCE_DIR}/examples/viviani.json)
+if(NOT out MATCHES "viviani [0-9]+ 15\\.28")
+  message(FATAL_ERROR "unexpected output of the consumer built against the build tree: ${out}")
+endif()
 # pkg-config: the flags name the installed headers and libraries, and the consumer's source compiles,
 # links and runs with exactly `c++ main.cpp $(pkg-config --cflags --libs ssimarch)`.
 find_program(PKG_CONFIG pkg-config)
