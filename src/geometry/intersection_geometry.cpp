@@ -184,7 +184,7 @@ std::optional<VecX> project_to_curve(const Problem& problem, const Vec3& X, cons
   auto guess = unknowns_near(problem, X);
   if (!guess) return std::nullopt;
   CorrectorOptions co;
-  co.tolerance = opt.tolerance * std::max(1.0, problem.scale());
+  co.tolerance = opt.tolerance * problem.scale();
   co.max_iterations = opt.max_iterations;
   VecX x = *guess;
   // Already on the curve (a singular point included, where Newton has no update): keep it.

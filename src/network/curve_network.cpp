@@ -148,7 +148,7 @@ CurveNetwork build_curve_network(const Problem& P, const TraceResult& result) {
   const int singular = static_cast<int>(net.vertices.size());
   for (const SingularPointReport& s : result.isolated_points)
     net.vertices.push_back({VertexKind::kIsolatedPoint, s.p, s.x, std::string(to_string(s.type))});
-  const double tol = 1e-9 * std::max(1.0, P.scale());
+  const double tol = 1e-9 * P.scale();
   for (std::size_t ci = 0; ci < result.curves.size(); ++ci) {
     const TracedCurve& c = result.curves[ci];
     if (c.points.empty()) continue;

@@ -228,7 +228,7 @@ std::vector<CurveGeometry> geometry_along_curve(const Problem& problem, const Tr
     if (method == GeometryMethod::kMixed) {
       const Linearization L = problem.linearize(curve.points[i].x);
       if (L.normal_first.cross(L.normal_second).norm() <= LocateOptions{}.sine_tolerance)
-        if (auto g = singular_branch_geometry(problem, curve.points[i].x, &curve.points[i].t, 1e-9 * std::max(1.0, problem.scale()))) {
+        if (auto g = singular_branch_geometry(problem, curve.points[i].x, &curve.points[i].t, 1e-9 * problem.scale())) {
           out.push_back(g->geometry);
           continue;
         }

@@ -73,7 +73,7 @@ std::optional<Row> collapsed_row(const Surface& D, const Vec2& uv, double scale)
   const Interval& a = range(D, along);
   for (int i = 0; i <= 32; ++i) {
     const Vec2 p = on_row(row, a.lo + a.width() * i / 32, c);
-    if ((point_at(D, p[0], p[1]) - row.point).norm() > kCollapsedRowRelative * std::max(1.0, scale)) return std::nullopt;
+    if ((point_at(D, p[0], p[1]) - row.point).norm() > kCollapsedRowRelative * scale) return std::nullopt;
   }
   return row;
 }
@@ -288,7 +288,7 @@ std::optional<LocalJet> definite_height(const Problem& pr, int slot, const Surfa
 // The other surface's chart at P0 (regular there, P0 on it).
 bool other_chart(const Problem& pr, int slot, const VecX& x, const Row& row, LocalCurve* c, OtherChart* o) {
   const Surface& O = slot == 0 ? pr.second() : pr.first();
-  const double tol = 1e-10 * std::max(1.0, pr.scale());  // locate's gap tolerance (singular/locate.hpp)
+  const double tol = 1e-10 * pr.scale();               // locate's gap tolerance (singular/locate.hpp)
   if (pr.kind() != PairKind::kParametricParametric) {  // the implicit graph of the other surface
     if (!implicit_graph(O, row.point, c, &o->point, &o->unit)) return false;
     if (o->unit < kSingularSurfaceGradientRatio * pr.scale() * implicit_hessian_norm(O, c->origin)) return false;
@@ -351,7 +351,7 @@ LocalCurve collapsed_row_curve(const Problem& pr, const VecX& x, int slot) {
   if (!other_chart(pr, slot, x, *row, &c, &o)) return c;
   const std::vector<LocalJet> other_unknowns = c.unknowns;
   std::vector<BranchGerm> germs;
-  const double rho = 1e-2 * std::max(1.0, pr.scale());
+  const double rho = 1e-2 * pr.scale();
   std::function<double(double)> psi;
   const int m = row_order(pr, slot, D, *row, c, o, &psi);
   if (m == 0) return c;

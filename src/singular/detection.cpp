@@ -143,7 +143,7 @@ std::vector<SingularLocation> hunt_singular_points(const Problem& problem, const
 
 std::vector<SingularLocation> singular_points_at_poles(const Problem& problem, const LocateOptions& options) {
   std::vector<SingularLocation> found;
-  const double tol = 1e-9 * std::max(1.0, problem.scale());
+  const double tol = 1e-9 * problem.scale();
   for (const Pole& pole : problem_poles(problem)) {
     std::optional<VecX> x = unknowns_near(problem, pole.point);
     if (!x) continue;

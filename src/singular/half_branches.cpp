@@ -222,7 +222,7 @@ void pair_half_branches(const Classification& kind, double radius, std::vector<H
 void exit_point(const Problem& problem, const LocalCurve& curve, const Vec2& p, const HalfBranchOptions& options,
                 HalfBranch* b) {
   VecX x = curve.unknowns_at(p);
-  const double tol = options.newton_tolerance * std::max(1.0, problem.scale());
+  const double tol = options.newton_tolerance * problem.scale();
   if (!onto_curve(problem, &x, tol)) return;
   b->exit_x = problem.wrap(x);
   b->exit_point = problem.point(b->exit_x);

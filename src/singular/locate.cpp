@@ -174,7 +174,7 @@ Vec2 solve_augmented_system(const LocalJet& h, const Vec2& start, double radius,
 SingularLocation locate_singular_point(const Problem& problem, const VecX& guess, const LocateOptions& options) {
   SingularLocation out;
   out.x = guess;
-  const double scale = std::max(1.0, problem.scale());
+  const double scale = problem.scale();
   const double radius = options.trust_radius * problem.scale();
   VecX x = guess;
   double previous = std::numeric_limits<double>::infinity();

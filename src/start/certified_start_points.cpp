@@ -322,8 +322,7 @@ bool Collector::decide_isolated(const IntervalBox& region) {
   clamp(&x0);
   // The curve in the box within the resolution radius of the point is what the tracer reports as
   // the isolated point (trace_all.cpp, absorb_contact_loops); kIsolatedBoxRadius bounds it below.
-  const double max_radius =
-      std::min(kIsolatedBoxRadius * std::max(1.0, P.scale()), kResolutionFraction * tracer.spacing());
+  const double max_radius = std::min(kIsolatedBoxRadius * P.scale(), kResolutionFraction * tracer.spacing());
   // A gap within the corrector's tolerance is a contact, as the closed forms and the tracer have
   // it (tests NearContact.*): a deeper overlap is a loop to trace, not an isolated point.
   const double max_depth = contact_gap_tolerance(tracer.options().tolerance, P.scale());

@@ -149,7 +149,7 @@ void hunt_tangencies(const Tracer& tracer, const StartPointSearch& search, Singu
                      std::vector<TracedCurve>* curves, std::vector<SingularPointReport>* isolated) {
   const Problem& P = tracer.problem();
   const double radius = 0.2 * tracer.spacing();
-  const double merge = 1e-7 * std::max(1.0, P.scale());
+  const double merge = 1e-7 * P.scale();
   // The poles of the parametrisations on the other surface first, whatever the search found: a
   // singular point there (a cone's apex touching a sphere's pole) is no ordinary root of the
   // search's systems in the parameters.

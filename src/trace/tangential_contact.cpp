@@ -52,7 +52,7 @@ void describe(const Problem& P, const ContactOptions& o, ContactPoint* p) {
   p->kernel_ratio = std::fabs(s.big) > 0 ? std::fabs(s.small) / std::fabs(s.big) : 1.0;
   p->kernel = s.along;
   p->tangent = p->curve.direction_3d(s.along);
-  const bool meets = p->location.gap <= o.gap_tolerance * std::max(1.0, P.scale());
+  const bool meets = p->location.gap <= o.gap_tolerance * P.scale();
   p->location.status =
       meets && p->location.sine <= o.sine_tolerance ? LocateStatus::kConverged : LocateStatus::kNotSingular;
 }
@@ -63,7 +63,7 @@ ContactPoint correct_onto_contact(const Problem& P, const VecX& guess, const Con
   ContactPoint p;
   p.location.x = guess;
   VecX x = guess;
-  const double floor = 1e-15 * std::max(1.0, P.scale());
+  const double floor = 1e-15 * P.scale();
   for (int k = 0; k < o.max_corrections; ++k) {
     p.curve = local_curve(P, P.wrap(x));
     ++p.location.expansions;
@@ -112,7 +112,7 @@ std::optional<SingularLocation> locate_crossing(const Problem& P, const ContactP
   SingularLocation best = std::fabs(fa) <= std::fabs(fb) ? a.location : b.location;
   double best_f = std::min(std::fabs(fa), std::fabs(fb));
   int side = 0;
-  for (int it = 0; it < 60 && tb - ta > 1e-14 * std::max(1.0, P.scale()); ++it) {
+  for (int it = 0; it < 60 && tb - ta > 1e-14 * P.scale(); ++it) {
     const double t = (ta * fb - tb * fa) / (fb - fa);
     const ContactPoint c = advance(P, a, dir, t, o);
     if (c.location.status != LocateStatus::kConverged) break;
@@ -349,7 +349,7 @@ ContactTrace trace_tangential_contact(const Problem& P, const VecX& x0, const Co
   c.length = forward.length + backward.length;
   // Both halves stopped at one point of the domain's edge (a pole the curve passes, or a seam):
   // the ends meet, the curve is closed.
-  const double meet = 1e-9 * std::max(1.0, P.scale());
+  const double meet = 1e-9 * P.scale();
   c.closed = forward.end == Termination::kLeftDomain && backward.end == Termination::kLeftDomain &&
              c.points.size() > 3 && (c.points.front().p - c.points.back().p).norm() <= meet;
   if (c.closed) {

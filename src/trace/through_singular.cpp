@@ -142,8 +142,7 @@ void retake_near_miss(const Tracer& tracer, Walk* w) {
 // the half-branch continuing the arriving one (w->from becomes its exit point).
 Next pass_singular_point(const Tracer& tracer, SingularRegistry* registry, SingularLocation loc, std::size_t begin,
                          const CurvePoint* close_at, int curve, int from_node, int from_half, Walk* w) {
-  const double close_tolerance =
-      1e-9 * std::max(1.0, tracer.problem().scale());  // model units: rounding of a located point
+  const double close_tolerance = 1e-9 * tracer.problem().scale();  // model units: rounding of a located point
   BranchMarch& out = w->out;
   trim_beyond(loc.point, begin, &out);
   // Only once the branch has left its start: a start placed half a step before a singular point

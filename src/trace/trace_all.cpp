@@ -567,9 +567,9 @@ TraceResult trace_all(const Tracer& unbounded, const std::vector<Vec3>& starts, 
   std::vector<VecX> seeds =
       starts.empty() ? automatic_start_points(tracer, &result.stats, &result.start_search)
                      : start_points_near(tracer, starts, &result.stats, &result.warnings, &result.failed_starts);
-  const double registry_merge = kSingularMergeDistance * std::max(1.0, P.scale());
+  const double registry_merge = kSingularMergeDistance * P.scale();
   SingularRegistry registry(P, registry_merge);
-  const double registry_tol = kOnSingularPointDistance * std::max(1.0, P.scale());
+  const double registry_tol = kOnSingularPointDistance * P.scale();
   SingularRegistry* reg = options.through_singular_points ? &registry : nullptr;
   const double radius = kResolutionFraction * tracer.spacing();
   const std::vector<Pole> poles = problem_poles(P);

@@ -67,7 +67,7 @@ inline constexpr double kSingularSurfaceGradientRatio = 1e-3;
 /// of validity, and the implicit chart is exact at any distance, so the switch loses nothing.
 inline constexpr double kDegenerateChartRatio = 1e-3;
 
-/// |h| (model units, times max(1, scale)) at or below which a located critical point of the local
+/// |h| (model units, times the model size) at or below which a located critical point of the local
 /// curve is a point where the surfaces meet (LocateOptions::gap_tolerance; singular/locate.hpp).
 /// The corrector puts the traced points within its tolerance (default 1e-12) of both surfaces; a
 /// hundred times that admits every point the tracer reached, and a near miss whose gap the
@@ -87,13 +87,13 @@ inline constexpr double kLocateSineTolerance = 1e-6;
 /// point's location (about 1e-8 relative at a double root), so smaller ones cannot be told from 0.
 inline constexpr double kClassifyZeroTolerance = 1e-8;
 
-/// Distance (model units, times max(1, scale)) below which two located singular points are one
+/// Distance (model units, times the model size) below which two located singular points are one
 /// (trace/trace_all.cpp, the registry of singular points): two locations of one node agree to
 /// about 1e-8 relative, and two distinct singular points closer than 1e-7 of the model are beyond
 /// what a march at any admitted step resolves.
 inline constexpr double kSingularMergeDistance = 1e-7;
 
-/// Distance (model units, times max(1, scale)) within which a point of a traced curve is on a
+/// Distance (model units, times the model size) within which a point of a traced curve is on a
 /// located singular point (trace/trace_all.cpp): the node's own point inserted into the curve, or
 /// a march's end corrected onto it; far below the merge distance, so a curve passing near but not
 /// through a node is not taken to pass through it.

@@ -24,7 +24,7 @@ struct LocateOptions {
   double trust_radius = 0.1;     // largest move per expansion, as a fraction of Problem::scale(); also
                                  // at most the polynomial's radius of faithfulness (root test)
   double gap_tolerance =
-      kLocateGapTolerance;  // model units (times max(1, scale)): |h| at a point where the surfaces meet
+      kLocateGapTolerance;  // model units (times the model size): |h| at a point where the surfaces meet
   double sine_tolerance = kLocateSineTolerance;  // |grad h| = sine of the angle between the normals at a singular point
 };
 

@@ -26,7 +26,7 @@ namespace ssimarch {
 struct ContactOptions {
   double step = 0;               // spacing of the points (model units); 0: Problem::scale() / 100
   long max_points = 20000;       // points of the curve
-  double gap_tolerance = 1e-10;  // model units (times max(1, scale)): |h| where the surfaces meet
+  double gap_tolerance = 1e-10;  // model units (times the model size): |h| where the surfaces meet
   double sine_tolerance = 1e-6;  // |grad h| (sine of the angle between the normals) on the curve
   int max_corrections = 12;      // local curves built per corrected point
 };
