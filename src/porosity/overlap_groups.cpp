@@ -6,19 +6,14 @@
 #include <cstdint>
 #include <map>
 #include <numeric>
-#include <optional>
 
-#include "cell_index.hpp"
 #include "overlap_search.hpp"
 #include "parallel.hpp"
-#include "ssimarch/porosity/generator.hpp"
 #include "ssimarch/porosity/particle_union.hpp"
 
 namespace ssimarch {
 
 namespace {
-
-double reach(const Particle& p) { return p.half_length() + p.radius(); }
 
 // Axis-aligned box of a spherocylinder: the segment's box grown by the radius.
 void particle_box(const Particle& p, Vec3& lo, Vec3& hi) {
@@ -54,12 +49,7 @@ bool boxes_meet(const Vec3& alo, const Vec3& ahi, const Vec3& blo, const Vec3& b
 }
 
 bool overlapping(const Particle& a, const Particle& b, double relative_tolerance) {
-  const bool spheres = a.length == 0 && b.length == 0;
-  const double s = a.radius() + b.radius();
-  if (spheres && (a.centre - b.centre).squaredNorm() >= s * s) return false;
-  const double d = spheres ? (a.centre - b.centre).norm()
-                           : segment_distance(a.minus_cap(), a.plus_cap(), b.minus_cap(), b.plus_cap());
-  return s - d > relative_tolerance * std::min(a.diameter, b.diameter);
+  return internal::pair_overlap(a, b).depth > relative_tolerance * std::min(a.diameter, b.diameter);
 }
 
 // The groups of particle p with its earlier neighbours `nb` (sorted by id): components of the
@@ -102,22 +92,8 @@ namespace internal {
 std::vector<OverlapGroup> groups_of(std::span<const Particle> ps, std::span<const long> ids, std::size_t owned,
                                     double relative_tolerance, unsigned threads) {
   auto id = [&](std::size_t k) { return ids.empty() ? static_cast<long>(k) : ids[k]; };
-  // One grid level per power of two of the reach, as the overlap search (overlaps.cpp).
-  struct Level {
-    double max_reach = 0.0;
-    std::vector<std::uint32_t> members;
-    std::optional<CellIndex> cells;
-  };
-  std::map<int, Level> levels;
-  for (std::size_t k = 0; k < ps.size(); ++k) {
-    Level& L = levels[overlap_level(ps[k])];
-    L.max_reach = std::max(L.max_reach, reach(ps[k]));
-    L.members.push_back(static_cast<std::uint32_t>(k));
-  }
-  for (auto& [k, L] : levels) {
-    L.cells.emplace(2 * L.max_reach, L.members, [&](std::uint32_t m) -> const Vec3& { return ps[m].centre; });
-    L.members = {};
-  }
+  // The overlap search's hierarchical grid (overlaps.cpp).
+  const std::map<int, GridLevel> levels = grid_levels(ps);
   const int chunks = static_cast<int>(std::min<std::size_t>(kChunks, std::max<std::size_t>(owned, 1)));
   std::vector<std::vector<OverlapGroup>> found(static_cast<std::size_t>(chunks));
   parallel_chunks(

@@ -4,8 +4,13 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <map>
+#include <optional>
 #include <span>
 #include <vector>
+
+#include "cell_index.hpp"
 
 #include "ssimarch/porosity/fixed_point_sum.hpp"
 #include "ssimarch/porosity/particle.hpp"
@@ -28,6 +33,28 @@ struct PairTally {
 
 /// Grid level of a particle: the power of two above its reach (centre to farthest point).
 int overlap_level(const Particle& p);
+
+/// Reach of a particle: half its length plus its radius (centre to farthest point).
+inline double reach(const Particle& p) { return p.half_length() + p.radius(); }
+
+/// One level of the hierarchical grid: its particles (reach in (2^(k-1), 2^k]) in cells of twice
+/// their largest reach, so that a query from a particle no larger meets at most 3 x 3 x 3 cells.
+struct GridLevel {
+  double max_reach = 0.0;
+  std::optional<CellIndex> cells;
+};
+
+/// The levels of the particles, by overlap_level; `level_of` (when given) receives each particle's.
+std::map<int, GridLevel> grid_levels(std::span<const Particle> particles,
+                                     std::vector<std::int16_t>* level_of = nullptr);
+
+/// How deep two particles overlap: depth = sum of the radii - distance of their axis segments
+/// (centres, for spheres), and that distance. Two spheres farther apart than the sum of their
+/// radii are rejected without a square root: depth 0.
+struct PairOverlap {
+  double depth = 0.0, distance = 0.0;
+};
+PairOverlap pair_overlap(const Particle& a, const Particle& b);
 
 /// Pairs (a, b) with a among the first `owned` particles, (level, id) of a before that of b, and
 /// depth above relative_tolerance times the smaller diameter. `ids` empty: particle k is numbered k.

@@ -18,17 +18,6 @@ namespace ssimarch {
 
 namespace {
 
-// Extent of a particle from its centre: half its length plus its radius.
-double reach(const Particle& p) { return p.half_length() + p.radius(); }
-
-// One level of the grid: its particles (reach in (2^(k-1), 2^k]) in cells of twice their largest
-// reach, so that a query from a particle no larger meets at most 3 x 3 x 3 cells.
-struct Level {
-  double max_reach = 0.0;
-  std::vector<std::uint32_t> members;
-  std::optional<internal::CellIndex> cells;
-};
-
 // Chunks of the queries: a fixed count, so the work splits the same way for any thread count
 // (the tally is exact anyway: integer counts and sums, a total order on the worst pair).
 constexpr int kChunks = 256;
@@ -61,35 +50,45 @@ void PairTally::merge(const PairTally& o) {
 
 int overlap_level(const Particle& p) { return std::ilogb(reach(p)) + 1; }
 
+std::map<int, GridLevel> grid_levels(std::span<const Particle> ps, std::vector<std::int16_t>* level_of) {
+  std::map<int, std::vector<std::uint32_t>> members;
+  std::map<int, GridLevel> levels;
+  if (level_of) level_of->resize(ps.size());
+  for (std::size_t k = 0; k < ps.size(); ++k) {
+    const int l = overlap_level(ps[k]);  // ilogb + 1 of a finite reach: within +-1100
+    if (level_of) (*level_of)[k] = static_cast<std::int16_t>(l);
+    GridLevel& L = levels[l];
+    L.max_reach = std::max(L.max_reach, reach(ps[k]));
+    members[l].push_back(static_cast<std::uint32_t>(k));
+  }
+  for (auto& [l, L] : levels)
+    L.cells.emplace(2 * L.max_reach, members[l], [&](std::uint32_t m) -> const Vec3& { return ps[m].centre; });
+  return levels;
+}
+
+PairOverlap pair_overlap(const Particle& a, const Particle& b) {
+  const bool spheres = a.length == 0 && b.length == 0;
+  const double s = a.radius() + b.radius();
+  if (spheres && (a.centre - b.centre).squaredNorm() >= s * s) return {};  // the common case, no root
+  const double d = spheres ? (a.centre - b.centre).norm()
+                           : segment_distance(a.minus_cap(), a.plus_cap(), b.minus_cap(), b.plus_cap());
+  return {s - d, d};
+}
+
 PairTally search_overlaps(std::span<const Particle> ps, std::span<const long> ids, std::size_t owned,
                           double relative_tolerance, double volume_scale, unsigned threads) {
   auto id = [&](std::size_t k) { return ids.empty() ? static_cast<long>(k) : ids[k]; };
-  std::vector<std::int16_t> level_of(ps.size());  // ilogb + 1 of a finite reach: within +-1100
-  std::map<int, Level> levels;
-  for (std::size_t k = 0; k < ps.size(); ++k) {
-    level_of[k] = static_cast<std::int16_t>(overlap_level(ps[k]));
-    Level& L = levels[level_of[k]];
-    L.max_reach = std::max(L.max_reach, reach(ps[k]));
-    L.members.push_back(static_cast<std::uint32_t>(k));
-  }
-  for (auto& [k, L] : levels) {
-    L.cells.emplace(2 * L.max_reach, L.members, [&](std::uint32_t m) -> const Vec3& { return ps[m].centre; });
-    L.members = {};
-  }
+  std::vector<std::int16_t> level_of;
+  const std::map<int, GridLevel> levels = grid_levels(ps, &level_of);
   // Each pair once: tested from the particle first in (level, id) (overlaps.hpp).
   auto before = [&](std::size_t a, std::size_t b) {
     return level_of[a] != level_of[b] ? level_of[a] < level_of[b] : id(a) < id(b);
   };
   auto test = [&](std::size_t i, std::size_t j, PairTally& t) {
     const Particle &a = ps[i], &b = ps[j];
-    const bool spheres = a.length == 0 && b.length == 0;
-    const double s = a.radius() + b.radius();
-    if (spheres && (a.centre - b.centre).squaredNorm() >= s * s) return;  // the common case, no root
-    const double d = spheres ? (a.centre - b.centre).norm()
-                             : segment_distance(a.minus_cap(), a.plus_cap(), b.minus_cap(), b.plus_cap());
-    const double depth = s - d;
-    if (depth > relative_tolerance * std::min(a.diameter, b.diameter))
-      t.add(id(i), id(j), depth, sphere_lens_volume(a.radius(), b.radius(), d));
+    const PairOverlap o = pair_overlap(a, b);
+    if (o.depth > relative_tolerance * std::min(a.diameter, b.diameter))
+      t.add(id(i), id(j), o.depth, sphere_lens_volume(a.radius(), b.radius(), o.distance));
   };
   // Queries in cell order, level after level: consecutive queries meet the same neighbours, which
   // stay in the cache whatever the order of the file. Chunks are ranges of that order.

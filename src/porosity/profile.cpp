@@ -154,15 +154,15 @@ void finish(const ProfileSums& sums, std::span<const double> norm, std::vector<d
 // each chunk marks the ends of its particles' index ranges, and a running sum turns the marks
 // into counts.
 template <class Range>
-std::vector<long> touching(const Prepared& prep, std::size_t m, const ProfileOptions& opt, Range&& range_of) {
-  const int chunks = chunk_count(prep.size(), m);
+std::vector<long> touching(std::size_t n, std::size_t m, const ProfileOptions& opt, Range&& range_of_item) {
+  const int chunks = chunk_count(n, m);
   std::vector<std::vector<long>> marks(static_cast<std::size_t>(chunks));
   internal::parallel_chunks(chunks, opt.threads, [&](int k) {
     auto& d = marks[static_cast<std::size_t>(k)];
     d.assign(m + 1, 0);
-    const auto [b, e] = chunk_range(prep.size(), k, chunks);
+    const auto [b, e] = chunk_range(n, k, chunks);
     for (std::size_t i = b; i < e; ++i) {
-      const auto [lo, hi] = range_of(prep.shape(i));
+      const auto [lo, hi] = range_of_item(i);
       ++d[lo];
       --d[hi];
     }
@@ -212,14 +212,7 @@ void subtract_covered(const std::vector<OverlapGroup>* groups, std::span<const d
   if (opt.communicator) opt.communicator->sum(std::span<long>(&group_count, 1));
   if (group_count == 0) return;
   const std::size_t m = norm.size(), n = groups->size();
-  std::vector<long> count(m + 1, 0);
-  for (const OverlapGroup& g : *groups) {
-    const auto [lo, hi] = range_of(g);
-    ++count[lo];
-    --count[hi];
-  }
-  for (std::size_t j = 1; j <= m; ++j) count[j] += count[j - 1];
-  if (opt.communicator) opt.communicator->sum(count);
+  const std::vector<long> count = touching(n, m, opt, [&](std::size_t i) { return range_of((*groups)[i]); });
   std::vector<double> budget(m);
   for (std::size_t j = 0; j < m; ++j)
     budget[j] = kCoveredBudgetShare * opt.tolerance * norm[j] / std::max(1L, count[j]);
@@ -303,7 +296,7 @@ PorosityProfile radial_profile(std::span<const Particle> particles, const Contai
   const std::size_t m = radii.size();
   // Work proportional to the radii a particle touches: [rho_min, rho_max] located by bisection.
   auto range_of = [&](const ParticleShape& s) { return index_range(radii, s.rho_min(), s.rho_max()); };
-  const std::vector<long> count = touching(prep, m, opt, range_of);
+  const std::vector<long> count = touching(prep.size(), m, opt, [&](std::size_t i) { return range_of(prep.shape(i)); });
   std::vector<double> norm(m), budget(m);
   for (std::size_t j = 0; j < m; ++j) {
     norm[j] = 2 * kPi * radii[j] * c.height();
@@ -342,7 +335,7 @@ PorosityProfile bin_profile(std::span<const Particle> particles, const Container
     const std::size_t e = std::min(m, static_cast<std::size_t>(lb - edges.begin()));
     return std::pair{b, std::max(b, e)};
   };
-  const std::vector<long> count = touching(prep, m, opt, bins_of);
+  const std::vector<long> count = touching(prep.size(), m, opt, [&](std::size_t i) { return bins_of(prep.shape(i)); });
   std::vector<double> norm(m), budget(m);
   for (std::size_t k = 0; k < m; ++k) {
     norm[k] = kPi * (edges[k + 1] * edges[k + 1] - edges[k] * edges[k]) * c.height();
@@ -400,7 +393,7 @@ PorosityProfile axial_profile(std::span<const Particle> particles, const Contain
   const Prepared prep = prepare(particles, c, opt.threads);
   const std::size_t m = heights.size();
   auto range_of = [&](const ParticleShape& s) { return index_range(heights, s.z_min(), s.z_max()); };
-  const std::vector<long> count = touching(prep, m, opt, range_of);
+  const std::vector<long> count = touching(prep.size(), m, opt, [&](std::size_t i) { return range_of(prep.shape(i)); });
   const double area = kPi * c.radius * c.radius;
   std::vector<double> norm(m, area), budget(m);
   for (std::size_t j = 0; j < m; ++j) budget[j] = 0.5 * opt.tolerance * area / std::max(1L, count[j]);
