@@ -87,20 +87,13 @@ PorosityJob porosity_job(const py::object& particles, double radius, const py::o
 }
 
 // Overlapping particles (docs/porosity.md): said as a RuntimeWarning, as the CLI says it on
-// stderr, with how their common volume was counted (`overlaps=`). The CLI's --strict is Python's
-// warning filter: warnings.simplefilter("error", RuntimeWarning) makes it an exception.
+// stderr (describe_overlaps), with how their common volume was counted (`overlaps=`). The CLI's
+// --strict is Python's warning filter: warnings.simplefilter("error", RuntimeWarning) makes it an
+// exception.
 void warn_of_overlaps(const PorosityJobResult& r, OverlapRule rule) {
-  const ParticleOverlaps& o = r.overlaps;
-  if (o.pairs <= 0) return;
-  std::ostringstream m;
-  m.precision(6);
-  m << o.pairs << " pair" << (o.pairs == 1 ? "" : "s") << " of particles overlap (worst: particles " << o.worst_first
-    << " and " << o.worst_second << ", 0-based, by " << o.max_depth << "); their common volume (" << o.doubled_volume
-    << ") is "
-    << (rule == OverlapRule::kUnion
-            ? "counted once: the porosities are those of the union of the particles"
-            : "counted once per particle holding it (overlaps='sum'), so the porosities are too low");
-  if (PyErr_WarnEx(PyExc_RuntimeWarning, m.str().c_str(), 2) != 0) throw py::error_already_set();
+  const std::string m = describe_overlaps(r, rule, OverlapWording{0, "overlaps='sum'"});
+  if (m.empty()) return;
+  if (PyErr_WarnEx(PyExc_RuntimeWarning, m.c_str(), 2) != 0) throw py::error_already_set();
 }
 
 PorosityJobResult run_job(PorosityJob job) {
@@ -234,9 +227,9 @@ void bind_porosity(py::module_& m) {
         const PorosityJobResult r = run_job(job);
         return py::make_tuple(vector_array(r.radial->x), vector_array(r.radial->porosity));
       },
-      py::arg("particles"), py::arg("radius"), py::arg("points") = 100, py::kw_only(),
-      py::arg("height_range") = py::none(), py::arg("tolerance") = 1e-8, py::arg("threads") = 0u,
-      py::arg("overlaps") = "union",
+      py::arg("particles"), py::arg("radius"), py::arg("points") = PorosityDefaults::kRadialPoints, py::kw_only(),
+      py::arg("height_range") = py::none(), py::arg("tolerance") = PorosityDefaults::kTolerance,
+      py::arg("threads") = 0u, py::arg("overlaps") = "union",
       "Radial porosity eps(r) at `points` radii evenly on (0, radius]: returns (r, eps) as numpy arrays.");
   m.def(
       "axial",
@@ -248,9 +241,9 @@ void bind_porosity(py::module_& m) {
         const PorosityJobResult r = run_job(job);
         return py::make_tuple(vector_array(r.axial->x), vector_array(r.axial->porosity));
       },
-      py::arg("particles"), py::arg("radius"), py::arg("slices") = 100, py::kw_only(),
-      py::arg("height_range") = py::none(), py::arg("tolerance") = 1e-8, py::arg("threads") = 0u,
-      py::arg("overlaps") = "union",
+      py::arg("particles"), py::arg("radius"), py::arg("slices") = PorosityDefaults::kAxialSlices, py::kw_only(),
+      py::arg("height_range") = py::none(), py::arg("tolerance") = PorosityDefaults::kTolerance,
+      py::arg("threads") = 0u, py::arg("overlaps") = "union",
       "Axial porosity eps(z) at the centres of `slices` equal slices of the height range: returns (z, eps).");
   m.def(
       "bulk",
@@ -259,7 +252,7 @@ void bind_porosity(py::module_& m) {
         return run_job(porosity_job(particles, radius, height, tol, threads, overlaps)).bulk.porosity;
       },
       py::arg("particles"), py::arg("radius"), py::kw_only(), py::arg("height_range") = py::none(),
-      py::arg("tolerance") = 1e-8, py::arg("threads") = 0u, py::arg("overlaps") = "union",
+      py::arg("tolerance") = PorosityDefaults::kTolerance, py::arg("threads") = 0u, py::arg("overlaps") = "union",
       "Bulk porosity of the container (radius, height range; default: the packing's vertical extent).");
   m.def(
       "bins",
@@ -272,8 +265,8 @@ void bind_porosity(py::module_& m) {
         return py::make_tuple(vector_array(r.bins->x), vector_array(r.bins->x_upper), vector_array(r.bins->porosity));
       },
       py::arg("particles"), py::arg("radius"), py::arg("bins") = 50, py::kw_only(),
-      py::arg("height_range") = py::none(), py::arg("tolerance") = 1e-8, py::arg("threads") = 0u,
-      py::arg("overlaps") = "union",
+      py::arg("height_range") = py::none(), py::arg("tolerance") = PorosityDefaults::kTolerance,
+      py::arg("threads") = 0u, py::arg("overlaps") = "union",
       "Porosity averaged over `bins` equal annular bins of [0, radius] (the CLI's --bins): returns (r_inner, "
       "r_outer, eps).");
   m.def(
@@ -290,9 +283,9 @@ void bind_porosity(py::module_& m) {
         return py::make_tuple(vector_array(r.map->r), vector_array(r.map->z),
                               matrix_array(r.map->porosity, r.map->z.size(), r.map->r.size()));
       },
-      py::arg("particles"), py::arg("radius"), py::arg("radii") = 50, py::arg("heights") = 50, py::kw_only(),
-      py::arg("height_range") = py::none(), py::arg("tolerance") = 1e-8, py::arg("threads") = 0u,
-      py::arg("overlaps") = "union",
+      py::arg("particles"), py::arg("radius"), py::arg("radii") = PorosityDefaults::kMapCells,
+      py::arg("heights") = PorosityDefaults::kMapCells, py::kw_only(), py::arg("height_range") = py::none(),
+      py::arg("tolerance") = PorosityDefaults::kTolerance, py::arg("threads") = 0u, py::arg("overlaps") = "union",
       "Porosity map eps(r, z) at the centres of radii x heights cells (the CLI's --map): returns (r, z, eps) with "
       "eps of shape (heights, radii), eps[i, j] at z[i], r[j].");
   bind_packing(m);

@@ -82,7 +82,7 @@ void write_timings(const Batch& batch, const std::vector<UnitResult>& units, con
   }
 }
 
-void run_batch_command(const BatchArgs& a) {
+int run_batch_command(const BatchArgs& a) {
   if (a.threads > 0) set_thread_count(a.threads);
   const Batch batch = load_batch(a.jobs, input_limits());
   std::unique_ptr<BatchRanks> ranks = start_batch_ranks();
@@ -116,12 +116,12 @@ void run_batch_command(const BatchArgs& a) {
       ranks->abort(2);
     }
   }
-  g_exit_status = ranks->share_status(status);
+  return ranks->share_status(status);
 }
 
 }  // namespace
 
-void add_batch_command(CLI::App& app) {
+void add_batch_command(CLI::App& app, Commands& commands) {
   auto args = std::make_shared<BatchArgs>();
   CLI::App* cmd = app.add_subcommand("batch", "Trace many scenes, or every surface pair of a model, as one job (threads; MPI ranks)");
   cmd->footer(
@@ -143,7 +143,7 @@ void add_batch_command(CLI::App& app) {
   cmd->add_flag("-q,--quiet", args->quiet, "No summary and no progress on stderr");
   add_progress_option(cmd);
   add_budget_options(cmd);
-  cmd->callback([args] { run_batch_command(*args); });
+  commands.add(cmd, [args] { return run_batch_command(*args); });
 }
 
 }  // namespace ssimarch::cli

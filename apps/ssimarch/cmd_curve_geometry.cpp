@@ -39,7 +39,7 @@ nlohmann::json vec_json(const Vec3& a) {
 }
 nlohmann::json num_json(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
 
-void run_curve_geometry(const CurveGeometryArgs& a) {
+int run_curve_geometry(const CurveGeometryArgs& a) {
   if (!(a.step > 0) || !std::isfinite(a.step)) throw CliError("--step must be a positive length, got " + std::to_string(a.step));
   Scene scene = load_scene(a.scene, input_limits());
   const IntersectionSpec* spec = scene.intersection(a.intersection);
@@ -63,8 +63,7 @@ void run_curve_geometry(const CurveGeometryArgs& a) {
     out["status"] = "not-on-curve";
     out["message"] = "Newton from the nearest surface points did not converge onto the curve";
     std::cout << out.dump(2) << "\n";
-    g_exit_status = 1;
-    return;
+    return 1;
   }
   const CurveGeometry& g = r.geometry;
   out["point"] = vec_json(r.point);
@@ -84,11 +83,12 @@ void run_curve_geometry(const CurveGeometryArgs& a) {
     out["samples"] = r.samples;
   }
   std::cout << out.dump(2) << "\n";
+  return 0;
 }
 
 }  // namespace
 
-void add_curve_geometry_command(CLI::App& app) {
+void add_curve_geometry_command(CLI::App& app, Commands& commands) {
   auto args = std::make_shared<CurveGeometryArgs>();
   CLI::App* cmd = app.add_subcommand(
       "curve-geometry",
@@ -107,7 +107,7 @@ void add_curve_geometry_command(CLI::App& app) {
   cmd->add_option("--toward", args->toward,
                   "Orient t so that t . (X,Y,Z) >= 0 (default: the method's natural orientation, N1 x N2)");
   add_budget_options(cmd);
-  cmd->callback([args] { run_curve_geometry(*args); });
+  commands.add(cmd, [args] { return run_curve_geometry(*args); });
 }
 
 }  // namespace ssimarch::cli

@@ -73,12 +73,15 @@ void run_demo(const DemoArgs& a) {
 
 }  // namespace
 
-void add_demo_command(CLI::App& app) {
+void add_demo_command(CLI::App& app, Commands& commands) {
   auto args = std::make_shared<DemoArgs>();
   CLI::App* cmd = app.add_subcommand("demo", "Trace the built-in examples and write results and pictures");
   cmd->add_option("--out", args->out, "Output directory (default out/demo)");
   cmd->add_flag("--no-porosity", args->skip_porosity, "Skip the packed-bed porosity part");
-  cmd->callback([args] { run_demo(*args); });
+  commands.add(cmd, [args] {
+    run_demo(*args);
+    return 0;
+  });
 }
 
 }  // namespace ssimarch::cli

@@ -103,7 +103,7 @@ void run_eval(const EvalArgs& a) {
 
 }  // namespace
 
-void add_eval_command(CLI::App& app) {
+void add_eval_command(CLI::App& app, Commands& commands) {
   auto args = std::make_shared<EvalArgs>();
   CLI::App* cmd = app.add_subcommand("eval", "Print a surface's point and all partial derivatives up to an order, as JSON");
   cmd->footer("Derivatives are exact (Taylor jets). Each entry's \"order\" is the multi-index: [i,j] for d^(i+j)F/du^i dv^j, "
@@ -113,7 +113,10 @@ void add_eval_command(CLI::App& app) {
   cmd->add_option("--at", args->at, "U,V for the parametric form or X,Y,Z for the implicit form")->required();
   cmd->add_option("--order", args->order, "Highest derivative order, 0.." + std::to_string(kMaxEvalOrder) + " (default 2)");
   add_budget_options(cmd);
-  cmd->callback([args] { run_eval(*args); });
+  commands.add(cmd, [args] {
+    run_eval(*args);
+    return 0;
+  });
 }
 
 }  // namespace ssimarch::cli

@@ -39,7 +39,7 @@ nlohmann::json face_json(const StepModel& model, const StepFace& f) {
   return j;
 }
 
-void run_faces(const FacesArgs& a) {
+int run_faces(const FacesArgs& a) {
   const StepModel model = StepModel::read(a.file, input_limits());
   nlohmann::json list = nlohmann::json::array();
   for (const StepFace& f : model.faces()) list.push_back(face_json(model, f));
@@ -48,11 +48,10 @@ void run_faces(const FacesArgs& a) {
     throw InputError(a.file, "no faces (ADVANCED_FACE, FACE_SURFACE): the file holds no surface geometry to list");
   const auto unread =
       std::count_if(list.begin(), list.end(), [](const nlohmann::json& j) { return j.contains("error"); });
-  if (unread > 0) {
+  const int status = unread > 0 ? 1 : 0;
+  if (unread > 0)
     std::cerr << fmt::format("ssimarch: {} of {} face(s) of {} could not be read (see each face's error)\n", unread,
                              list.size(), a.file);
-    g_exit_status = 1;
-  }
   // The unit the coordinates are in: kept as the file has it (no conversion), said here.
   const StepLengthUnit unit = step_length_unit(model.file());
   if (unit.several)
@@ -61,7 +60,7 @@ void run_faces(const FacesArgs& a) {
   if (a.json) {
     nlohmann::json u{{"name", unit.name}, {"metres", unit.metres}, {"several", unit.several}};
     std::cout << nlohmann::json{{"file", a.file}, {"length_unit", u}, {"faces", list}}.dump(2) << "\n";
-    return;
+    return status;
   }
   if (unit.metres > 0)
     std::cout << fmt::format("length unit: {} ({:g} m); coordinates are kept in it\n", unit.name, unit.metres);
@@ -78,11 +77,12 @@ void run_faces(const FacesArgs& a) {
     std::cout << fmt::format("{:>5} {:>9} {:>7}  {:<28} {}\n", j["face"].get<int>(), "#" + std::to_string(j["entity"].get<std::int64_t>()),
                              j["line"].get<int>(), j["step_type"].get<std::string>(), what);
   }
+  return status;
 }
 
 }  // namespace
 
-void add_faces_command(CLI::App& app) {
+void add_faces_command(CLI::App& app, Commands& commands) {
   auto args = std::make_shared<FacesArgs>();
   CLI::App* cmd = app.add_subcommand("faces", "List the faces of a STEP file (AP203/AP214/AP242) with their surfaces");
   cmd->footer("A scene names a face as {\"step\": \"MODEL.step\", \"face\": N} or by its instance id, "
@@ -90,7 +90,7 @@ void add_faces_command(CLI::App& app) {
   cmd->add_option("file", args->file, "STEP file (ISO 10303-21)")->required();
   cmd->add_flag("--json", args->json, "print JSON instead of a table");
   add_budget_options(cmd);
-  cmd->callback([args] { run_faces(*args); });
+  commands.add(cmd, [args] { return run_faces(*args); });
 }
 
 }  // namespace ssimarch::cli

@@ -101,7 +101,7 @@ void generate_spherocylinders(const PackingArgs& a) {
 
 }  // namespace
 
-void add_packing_command(CLI::App& app) {
+void add_packing_command(CLI::App& app, Commands& commands) {
   auto a = std::make_shared<PackingArgs>();
   CLI::App* sub = app.add_subcommand("packing", "Generate packings in a cylinder (CSV for `ssimarch porosity`)");
   sub->require_subcommand(1);
@@ -122,8 +122,14 @@ void add_packing_command(CLI::App& app) {
   sc->add_option("--length", a->length, "cylinder length l (default 2)");
   sc->add_option("--height", a->height, "container height H (default: from --solid-fraction)");
   sc->add_option("--solid-fraction", a->fraction, "target solid fraction fixing H when --height is not given (default 0.2)");
-  sp->callback([a] { generate_spheres(*a); });
-  sc->callback([a] { generate_spherocylinders(*a); });
+  commands.add(sp, [a] {
+    generate_spheres(*a);
+    return 0;
+  });
+  commands.add(sc, [a] {
+    generate_spherocylinders(*a);
+    return 0;
+  });
 }
 
 }  // namespace ssimarch::cli

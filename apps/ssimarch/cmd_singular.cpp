@@ -57,7 +57,7 @@ void run_singular(const SingularArgs& a) {
 
 }  // namespace
 
-void add_singular_command(CLI::App& app) {
+void add_singular_command(CLI::App& app, Commands& commands) {
   auto args = std::make_shared<SingularArgs>();
   CLI::App* cmd = app.add_subcommand(
       "singular",
@@ -69,7 +69,10 @@ void add_singular_command(CLI::App& app) {
   cmd->add_option("--grid", args->grid, "Samples per parameter direction of the hunt (default 32)");
   cmd->add_flag("--json", args->json, "JSON instead of the table");
   add_budget_options(cmd);
-  cmd->callback([args] { run_singular(*args); });
+  commands.add(cmd, [args] {
+    run_singular(*args);
+    return 0;
+  });
 }
 
 }  // namespace ssimarch::cli

@@ -6,10 +6,11 @@
 
 namespace ssimarch::cli {
 
-void add_surfaces_command(CLI::App& app) {
+void add_surfaces_command(CLI::App& app, Commands& commands) {
   CLI::App* cmd = app.add_subcommand("surfaces", "List the surface types a scene file may use (keys: docs/scene-format.md)");
-  cmd->callback([] {
+  commands.add(cmd, [] {
     for (const auto& n : surface_type_names()) std::cout << n << "\n";
+    return 0;
   });
 }
 

@@ -63,10 +63,10 @@ Scene load_trace_input(const TraceArgs& a) {
   return parse_scene(step_faces_scene_json(step, faces).dump(), a.scene, {}, input_limits());
 }
 
-void run_trace(const TraceArgs& a) {
+int run_trace(const TraceArgs& a) {
   if (a.list_options) {
     std::cout << trace_options_markdown();
-    return;
+    return 0;
   }
   if (a.scene.empty()) throw CliError("trace: a scene file is required (ssimarch trace SCENE.json; --help)");
   if (a.threads > 0) set_thread_count(a.threads);
@@ -90,7 +90,7 @@ void run_trace(const TraceArgs& a) {
   progress.meter().close();
   write_runs(job.runs, f, a.output, &scene);
   if (!a.quiet) print_summary(job.runs);
-  if (!job.complete()) g_exit_status = 1;
+  return job.complete() ? 0 : 1;
 }
 
 // The flags of the option table: --step-length, --taylor-order, ... with the table's help.
@@ -108,7 +108,7 @@ void add_option_flags(CLI::App* cmd, TraceArgs* args) {
 
 }  // namespace
 
-void add_trace_command(CLI::App& app) {
+void add_trace_command(CLI::App& app, Commands& commands) {
   auto args = std::make_shared<TraceArgs>();
   CLI::App* cmd = app.add_subcommand("trace", "Trace the intersection curves of a scene file");
   cmd->footer(
@@ -141,7 +141,7 @@ void add_trace_command(CLI::App& app) {
                 "Print the trace options (scene keys; the flags are --key-with-dashes) as the Markdown table of "
                 "docs/scene-format.md, and exit");
   add_budget_options(cmd);
-  cmd->callback([args] { run_trace(*args); });
+  commands.add(cmd, [args] { return run_trace(*args); });
 }
 
 }  // namespace ssimarch::cli

@@ -40,7 +40,7 @@ void run_view(const ViewArgs& a) {
 
 }  // namespace
 
-void add_view_command(CLI::App& app) {
+void add_view_command(CLI::App& app, Commands& commands) {
   auto args = std::make_shared<ViewArgs>();
   CLI::App* cmd = app.add_subcommand("view", "Write the interactive 3D viewer page (one offline HTML file) of a trace result");
   cmd->footer(
@@ -51,7 +51,10 @@ void add_view_command(CLI::App& app) {
   cmd->add_option("--scene", args->scene, "The scene that was traced: adds the surfaces' meshes");
   cmd->add_option("-o,--output", args->output, "Page to write (default: RESULT with extension .html)");
   add_budget_options(cmd);
-  cmd->callback([args] { run_view(*args); });
+  commands.add(cmd, [args] {
+    run_view(*args);
+    return 0;
+  });
 }
 
 }  // namespace ssimarch::cli

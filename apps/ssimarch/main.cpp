@@ -16,20 +16,22 @@ int main(int argc, char** argv) {
   CLI::App app{"ssimarch: intersection curves of surfaces, their differential geometry, and exact porosity profiles"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "ssimarch 0.1.0");
-  ssimarch::cli::add_trace_command(app);
-  ssimarch::cli::add_eval_command(app);
-  ssimarch::cli::add_demo_command(app);
-  ssimarch::cli::add_surfaces_command(app);
-  ssimarch::cli::add_faces_command(app);
-  ssimarch::cli::add_curve_geometry_command(app);
-  ssimarch::cli::add_porosity_command(app);
-  ssimarch::cli::add_packing_command(app);
-  ssimarch::cli::add_singular_command(app);
+  ssimarch::cli::Commands commands;
+  ssimarch::cli::add_trace_command(app, commands);
+  ssimarch::cli::add_eval_command(app, commands);
+  ssimarch::cli::add_demo_command(app, commands);
+  ssimarch::cli::add_surfaces_command(app, commands);
+  ssimarch::cli::add_faces_command(app, commands);
+  ssimarch::cli::add_curve_geometry_command(app, commands);
+  ssimarch::cli::add_porosity_command(app, commands);
+  ssimarch::cli::add_packing_command(app, commands);
+  ssimarch::cli::add_singular_command(app, commands);
   ssimarch::install_interrupt_handler();
-  ssimarch::cli::add_batch_command(app);
-  ssimarch::cli::add_view_command(app);
+  ssimarch::cli::add_batch_command(app, commands);
+  ssimarch::cli::add_view_command(app, commands);
   try {
     app.parse(argc, argv);
+    return commands.run_selected(app);
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;
   } catch (const ssimarch::cli::CliError& e) {
@@ -55,5 +57,4 @@ int main(int argc, char** argv) {
     std::cerr << "ssimarch: error: " << e.what() << "\n";
     return 2;
   }
-  return ssimarch::cli::g_exit_status;
 }

@@ -234,7 +234,44 @@ PorosityJobResult run_porosity_job(const PorosityJob& job) {
         comm && comm->rank() != 0 ? std::vector<OverlapGroup>{}
                                   : overlap_groups(all, kOverlapTolerance, job.options.threads));
   run_stages(job, groups, ps, out);
+  if (job.keep_particles) out.packing.assign(all.begin(), all.end());
   return out;
+}
+
+namespace {
+
+// Values of every profile outside [0, 1] (the sum rule pushes them below 0 where particles overlap).
+long values_outside_unit_interval(const PorosityJobResult& r) {
+  long n = !(r.bulk.porosity >= 0 && r.bulk.porosity <= 1);
+  auto count = [&n](const std::vector<double>& v) {
+    for (double x : v) n += !(x >= 0 && x <= 1);
+  };
+  if (r.radial) count(r.radial->porosity);
+  if (r.bins) count(r.bins->porosity);
+  if (r.axial) count(r.axial->porosity);
+  if (r.map) count(r.map->porosity);
+  return n;
+}
+
+}  // namespace
+
+std::string describe_overlaps(const PorosityJobResult& r, OverlapRule rule, const OverlapWording& wording) {
+  const ParticleOverlaps& o = r.overlaps;
+  if (o.pairs <= 0) return {};
+  std::ostringstream m;
+  m.precision(6);
+  m << o.pairs << " pair" << (o.pairs == 1 ? "" : "s") << " of particles overlap (worst: particles "
+    << o.worst_first + wording.first_index << " and " << o.worst_second + wording.first_index
+    << (wording.first_index == 0 ? ", 0-based," : "") << " by " << o.max_depth << "); their common volume ("
+    << o.doubled_volume << ")";
+  if (rule == OverlapRule::kUnion) {
+    m << " is counted once: the porosities are those of the union of the particles";
+    return m.str();
+  }
+  m << " is counted once per particle holding it (" << wording.sum_rule << "), so the porosities are too low";
+  if (const long bad = values_outside_unit_interval(r); bad > 0)
+    m << " (" << bad << " value" << (bad == 1 ? " is" : "s are") << " outside [0, 1] for this reason)";
+  return m.str();
 }
 
 BedSlab vertical_extent(std::span<const Particle> particles) {

@@ -145,7 +145,7 @@ TEST_F(porosity_Cli, OverlappingParticlesAreReportedAndFailUnderStrict) {
   EXPECT_EQ(r.status, 0) << r.out;
   EXPECT_NE(r.out.find("note: 3 pairs of particles overlap (worst: particles 1 and 2 by 1)"), std::string::npos)
       << r.out;
-  EXPECT_NE(r.out.find("is counted once: the profiles are those of the union"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("is counted once: the porosities are those of the union"), std::string::npos) << r.out;
   ASSERT_EQ(run("porosity " + p("one.csv") + args + p("one_r.csv")).status, 0);
   const auto three = lines(p("r.csv")), one = lines(p("one_r.csv"));
   ASSERT_EQ(three.size(), one.size());

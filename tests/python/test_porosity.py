@@ -228,3 +228,13 @@ def test_particle_rows_follow_the_readers_rules():
     a = porosity.bulk(np.array([[0.0, 0.0, 0.0, 0.0, 0.0, 3.0, 1.0, 1.0]]), 2.0)
     b = porosity.bulk(np.array([[0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0]]), 2.0)
     assert a == pytest.approx(b, abs=1e-12)
+
+
+def test_defaults_are_the_clis():
+    # One place for the defaults (pipeline/porosity_job.hpp, PorosityDefaults): the radial profile
+    # at 200 radii like `ssimarch porosity` without --radii, to the CLI's tolerance of 1e-8.
+    r, eps = porosity.radial(ONE, R)
+    assert r.shape == (200,)
+    np.testing.assert_allclose(r, R * np.arange(1, 201) / 200, rtol=0, atol=1e-15)
+    expected = 1.0 - np.sqrt(np.clip(A * A - r * r, 0.0, None)) / A
+    np.testing.assert_allclose(eps, expected, rtol=0, atol=1e-8)

@@ -9,6 +9,7 @@
 #include <functional>
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -18,6 +19,19 @@
 #include "ssimarch/porosity/profile.hpp"
 
 namespace ssimarch {
+
+/// The defaults of a porosity run, shared by `ssimarch porosity` and the Python module
+/// (docs/porosity.md, docs/python.md): one place, so that the two front ends agree.
+struct PorosityDefaults {
+  /// Radii of eps(r) on (0, R]: the CLI's profile when no other is asked for, Python's `points`.
+  static constexpr int kRadialPoints = 200;
+  /// Slices of eps(z): Python's `slices` (the CLI's --axial has no default: it asks for the profile).
+  static constexpr int kAxialSlices = 100;
+  /// Cells of eps(r, z) per direction: Python's map `radii` and `heights`.
+  static constexpr int kMapCells = 50;
+  /// Absolute accuracy of every porosity value (dimensionless): ProfileOptions::tolerance.
+  static constexpr double kTolerance = kPorosityTolerance;
+};
 
 /// What to compute. Counts of 0 mean "not wanted"; at least one profile or only the bulk value.
 struct PorosityJob {
@@ -36,6 +50,9 @@ struct PorosityJob {
   ProfileOptions options;
   /// Look for overlapping particles (PorosityJobResult::overlaps): O(n) for similar sizes.
   bool find_overlaps = true;
+  /// Return the particles read (PorosityJobResult::packing), for a front end that shows the bed
+  /// (the viewer page); not with a packing file shared over processes.
+  bool keep_particles = false;
   /// Called with the stage ("bulk", "radial", "axial", "map") and the fraction of it done.
   std::function<void(std::string_view stage, double fraction)> progress;
 };
@@ -60,7 +77,21 @@ struct PorosityJobResult {
   /// Per-particle integrals that missed the tolerance, over the bulk value and every profile.
   long unconverged = 0;
   PorosityTimings timings;
+  /// The packing's particles, when PorosityJob::keep_particles asked for them.
+  std::vector<Particle> packing;
 };
+
+/// How a front end names what the overlap report mentions.
+struct OverlapWording {
+  int first_index = 1;                           ///< particles numbered from 1 (file rows) or 0 (array rows)
+  std::string_view sum_rule = "--overlaps sum";  ///< how the user asks for OverlapRule::kSum
+};
+
+/// The overlap report of a run with overlapping particles (empty when none overlap): the count, the
+/// worst pair and the volume they share, how it was counted (`rule`) and, under the sum rule, how
+/// many values left [0, 1] because of it. The CLI prints it on stderr, Python raises it as a
+/// RuntimeWarning, `ssimarch porosity --strict` fails with it.
+std::string describe_overlaps(const PorosityJobResult& r, OverlapRule rule, const OverlapWording& wording = {});
 
 /// Throws InputError, located by the job field's name (e.g. "container_radius"), for an impossible
 /// job: lengths outside [1e-100, 1e100] (volumes leave double precision), more than 1e7 points in

@@ -31,10 +31,14 @@ struct Container {
   double volume() const;
 };
 
+/// The default absolute accuracy of every porosity value (dimensionless), the CLI's and Python's
+/// (docs/porosity.md, "Accuracy").
+inline constexpr double kPorosityTolerance = 1e-8;
+
 struct ProfileOptions {
-  /// Target absolute accuracy of every porosity value (dimensionless); default 1e-8. The budget is
-  /// split evenly over the particles contributing to a value (errors summed linearly).
-  double tolerance = 1e-8;
+  /// Target absolute accuracy of every porosity value (dimensionless). The budget is split evenly
+  /// over the particles contributing to a value (errors summed linearly).
+  double tolerance = kPorosityTolerance;
   /// Worker threads; 0 = std::thread::hardware_concurrency().
   unsigned threads = 0;
   ProfileMethod method = ProfileMethod::kChord;
