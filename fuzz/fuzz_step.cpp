@@ -6,7 +6,7 @@
 #include <string>
 
 #include "ssimarch/core/error.hpp"
-#include "ssimarch/io/step_reader.hpp"
+#include "ssimarch/step/reader.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

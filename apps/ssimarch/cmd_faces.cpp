@@ -11,8 +11,8 @@
 #include "commands.hpp"
 #include "run_budget.hpp"
 #include "ssimarch/core/error.hpp"
-#include "ssimarch/io/step_reader.hpp"
-#include "ssimarch/io/step_units.hpp"
+#include "ssimarch/step/reader.hpp"
+#include "ssimarch/step/units.hpp"
 
 namespace ssimarch::cli {
 

@@ -5,7 +5,7 @@
 #include <iostream>
 
 #include "commands.hpp"
-#include "ssimarch/io/step_writer.hpp"
+#include "ssimarch/step/writer.hpp"
 #include "ssimarch/io/output_files.hpp"
 #include "ssimarch/io/svg_plot.hpp"
 #include "ssimarch/io/trace_writers.hpp"

@@ -5,7 +5,7 @@
 
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/io/json_reader.hpp"
-#include "text_cat.hpp"
+#include "ssimarch/core/text_cat.hpp"
 
 namespace ssimarch {
 

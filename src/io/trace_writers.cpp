@@ -82,12 +82,6 @@ json conic_to_json(const Conic& c) {
 }
 }  // namespace
 
-std::array<std::string, 2> parametric_surface_names(const IntersectionRun& run) {
-  // The problem's first surface is the parametric one of a mixed pair (IntersectionSpec::swapped).
-  const auto& s = run.spec.surfaces;
-  return run.spec.swapped ? std::array<std::string, 2>{s[1], s[0]} : std::array<std::string, 2>{s[0], s[1]};
-}
-
 json stats_to_json(const TraceStats& s) {
   return json{{"points", s.points},
               {"rejected_steps", s.rejected_steps},

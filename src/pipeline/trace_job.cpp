@@ -238,4 +238,9 @@ std::vector<CurveGeometry> geometry_along_curve(const Problem& problem, const Tr
   return out;
 }
 
+std::array<std::string, 2> parametric_surface_names(const IntersectionRun& run) {
+  const auto& s = run.spec.surfaces;
+  return run.spec.swapped ? std::array<std::string, 2>{s[1], s[0]} : std::array<std::string, 2>{s[0], s[1]};
+}
+
 }  // namespace ssimarch

@@ -176,10 +176,10 @@ TEST(Cli, DemoWritesWhatReadmePromises) {
   EXPECT_THAT(r.out, HasSubstr("relative error"));
 }
 
-// ssimarch faces: the hand-written AP214-like half cylinder (tests/io/data): its NURBS side and
+// ssimarch faces: the hand-written AP214-like half cylinder (tests/step/data): its NURBS side and
 // planar bottom with their domains; a broken file is a clean error naming file:line.
 TEST(Cli, FacesListsAStepFilesFaces) {
-  const std::string file = std::string(SSIMARCH_SOURCE_DIR) + "/tests/io/data/half_cylinder_nurbs.step";
+  const std::string file = std::string(SSIMARCH_SOURCE_DIR) + "/tests/step/data/half_cylinder_nurbs.step";
   CliRun r = run("faces " + file);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("RATIONAL_B_SPLINE_SURFACE    bspline u [0, 2] v [0, 3]"));
@@ -438,10 +438,10 @@ TEST(Cli, FacesOfAFileWithoutFacesIsAnError) {
 }  // namespace
 
 // `trace MODEL.step --faces I,J`: the faces of a STEP model intersected pairwise, trimmed to their
-// loops (tests/io/data/plate_with_hole.step: the plate z = 0 with a hole of radius 1 and a
+// loops (tests/step/data/plate_with_hole.step: the plate z = 0 with a hole of radius 1 and a
 // cylinder y^2 + (z - 0.3)^2 = 0.25, |x| <= 2.5, across it: four segments of y = +-0.4).
 TEST(Cli, TraceFacesOfAStepModel) {
-  const std::string model = std::string(SSIMARCH_SOURCE_DIR) + "/tests/io/data/plate_with_hole.step";
+  const std::string model = std::string(SSIMARCH_SOURCE_DIR) + "/tests/step/data/plate_with_hole.step";
   CliRun r = run("trace " + model + " --faces 1,2 -q");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "ssimarch/core/input_limits.hpp"
+#include "ssimarch/core/text_file.hpp"  // read_text_file, for the readers of JSON files
 #include "ssimarch/core/vec3.hpp"
 #include "ssimarch/expr/program.hpp"
 #include "ssimarch/surface/domain.hpp"
@@ -23,12 +24,6 @@ namespace ssimarch {
 /// what precedes it) and a number outside double's range (1e400); InputError("source: path",
 /// ...) for a key that appears twice in one object (JSON leaves that undefined).
 nlohmann::json parse_json_text(const std::string& text, const std::string& source);
-
-/// The whole file as text. Throws InputError(path, ...) when it is missing, a directory
-/// ("is a directory, not a <what>"), unreadable, empty (white space only) or longer than
-/// max_bytes (read in pieces, so that /dev/zero stops there too).
-std::string read_text_file(const std::filesystem::path& path, std::string_view what,
-                           std::uint64_t max_bytes = InputLimits{}.max_scene_bytes);
 
 /// "a number", "a string", "an object", ... for messages.
 std::string json_kind(const nlohmann::json& j);

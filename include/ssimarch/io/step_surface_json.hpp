@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "ssimarch/core/input_limits.hpp"
-#include "ssimarch/io/step_reader.hpp"
+#include "ssimarch/step/reader.hpp"
 
 namespace ssimarch {
 

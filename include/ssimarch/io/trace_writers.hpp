@@ -19,8 +19,6 @@ namespace ssimarch {
 /// control_points, tolerance, within_tolerance, pieces, inserted_points, c0_knots, c1_knots}, "pcurves"
 /// [{surface, degree, periodic, knots, control_points}] and "max_deviation".
 nlohmann::json to_json(const IntersectionRun& run);
-/// The scene names of the problem's first and second surface (the parametric one first).
-std::array<std::string, 2> parametric_surface_names(const IntersectionRun& run);
 nlohmann::json stats_to_json(const TraceStats& stats);
 
 /// {"intersections": [...]} for every run.

@@ -1,6 +1,6 @@
 // The control data of a spline surface as its source gave it (a scene's "bspline" / "bezier",
 // a STEP B-spline surface): what a CAD writer needs to write the surface back
-// (io/step_writer.hpp). The surface classes (surface/bspline_surface.hpp, bezier_patch.hpp)
+// (step/writer.hpp). The surface classes (surface/bspline_surface.hpp, bezier_patch.hpp)
 // keep the net only in their evaluation form.
 #pragma once
 

@@ -4,6 +4,7 @@
 // the results (io/trace_writers.hpp).
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,6 +37,10 @@ struct IntersectionRun {
   /// result.warnings says so; docs/output-format.md "coincident").
   std::optional<Coincidence> coincidence;
 };
+
+/// The scene names of the problem's first and second surface (the parametric one first: a mixed
+/// pair is traced with its surfaces swapped, IntersectionSpec::swapped).
+std::array<std::string, 2> parametric_surface_names(const IntersectionRun& run);
 
 /// An option set for the whole job (e.g. a command-line flag) over every intersection's own.
 struct OptionOverride {

@@ -14,7 +14,7 @@
 
 #include "ssimarch/geometry/bspline_curve.hpp"
 #include "ssimarch/surface/frame.hpp"
-#include "step_access.hpp"
+#include "access.hpp"
 
 namespace ssimarch::internal {
 
@@ -96,12 +96,13 @@ Vec3 vertex_point(const StepAccess& a, const StepInstance& edge, const StepRecor
 
 const StepInstance& curve_3d(const StepAccess& a, const StepInstance& curve) {
   const StepRecord& r = curve.records.front();
-  if (curve.records.size() == 1 && (r.type == "SURFACE_CURVE" || r.type == "SEAM_CURVE" || r.type == "INTERSECTION_CURVE"))
+  if (curve.records.size() == 1 &&
+      (r.type == "SURFACE_CURVE" || r.type == "SEAM_CURVE" || r.type == "INTERSECTION_CURVE"))
     return a.ref(curve, a.param(curve, r, 1, "curve_3d"), "curve_3d");
   return curve;
 }
 
-// A B-spline edge curve (io/step_swept_surface.cpp reads it) evaluated in homogeneous
+// A B-spline edge curve (step/swept_surface.cpp reads it) evaluated in homogeneous
 // coordinates (w x, w y, w z, w) by de Boor.
 std::function<Vec3(double)> spline_curve(const StepAccess& a, const StepInstance& c, double* lo, double* hi) {
   const NurbsCurve3 n = step_bspline_curve(a, c);
@@ -138,8 +139,9 @@ EdgePiece edge_piece(const StepAccess& a, const StepInstance& edge, double direc
     const Vec3 p = a.point(curve, a.param(curve, cr, 1, "pnt"), "pnt");
     const StepInstance& vec = a.ref(curve, a.param(curve, cr, 2, "dir"), "dir");
     const StepRecord& vr = a.record(vec, "VECTOR");
-    const Vec3 d = a.coordinates(a.ref(vec, a.param(vec, vr, 1, "orientation"), "orientation"), "DIRECTION").normalized() *
-                   a.number(vec, a.param(vec, vr, 2, "magnitude"), "magnitude");
+    const Vec3 d =
+        a.coordinates(a.ref(vec, a.param(vec, vr, 1, "orientation"), "orientation"), "DIRECTION").normalized() *
+        a.number(vec, a.param(vec, vr, 2, "magnitude"), "magnitude");
     if (!(d.norm() > 0)) a.fail(vec, "a line's direction must not be zero");
     e.at = [p, d](double s) { return Vec3(p + s * d); };
     e.derivative = [d](double) { return d; };
@@ -159,7 +161,9 @@ EdgePiece edge_piece(const StepAccess& a, const StepInstance& edge, double direc
     const Frame f = Frame::from_axis(pl.origin, pl.axis, pl.reference, a.file().where(curve));
     e.at = [f, ra, rb](double t) { return f.to_world(ra * std::cos(t), rb * std::sin(t), 0.0); };
     e.derivative = [f, ra, rb](double t) { return Vec3(-ra * std::sin(t) * f.e0 + rb * std::cos(t) * f.e1); };
-    auto angle = [&](const Vec3& q) { return std::atan2((q - f.origin).dot(f.e1) / rb, (q - f.origin).dot(f.e0) / ra); };
+    auto angle = [&](const Vec3& q) {
+      return std::atan2((q - f.origin).dot(f.e1) / rb, (q - f.origin).dot(f.e0) / ra);
+    };
     const double two_pi = 2 * std::numbers::pi;
     e.lo = angle(from);
     e.hi = e.lo + (closed ? two_pi : std::fmod(angle(to) - e.lo + 2 * two_pi, two_pi));
@@ -181,13 +185,15 @@ EdgePiece edge_piece(const StepAccess& a, const StepInstance& edge, double direc
     }
     return e;
   }
-  a.fail(curve, "is not an edge curve the trimming reader knows (LINE, CIRCLE, ELLIPSE, B_SPLINE_CURVE_WITH_KNOTS, "
-                "rational ones, through SURFACE_CURVE / SEAM_CURVE)");
+  a.fail(curve,
+         "is not an edge curve the trimming reader knows (LINE, CIRCLE, ELLIPSE, B_SPLINE_CURVE_WITH_KNOTS, "
+         "rational ones, through SURFACE_CURVE / SEAM_CURVE)");
 }
 
 }  // namespace
 
-std::shared_ptr<const FaceRegion> step_face_region(const StepAccess& a, const StepInstance& face, const std::string& name) {
+std::shared_ptr<const FaceRegion> step_face_region(const StepAccess& a, const StepInstance& face,
+                                                   const std::string& name) {
   const StepRecord& fr = face.records.front();
   struct Use {
     const StepInstance* edge;
@@ -215,8 +221,8 @@ std::shared_ptr<const FaceRegion> step_face_region(const StepAccess& a, const St
   for (const Use& u : uses)
     if (count[u.edge] == 1) edges.push_back(edge_piece(a, *u.edge, u.direction));
   if (edges.empty()) return nullptr;  // bounded only by seams and vertices: the whole surface
-  return std::make_shared<StepFaceRegion>(std::move(edges), a.boolean(face, a.param(face, fr, 3, "same_sense"), "same_sense"),
-                                          name);
+  return std::make_shared<StepFaceRegion>(std::move(edges),
+                                          a.boolean(face, a.param(face, fr, 3, "same_sense"), "same_sense"), name);
 }
 
 }  // namespace ssimarch::internal

@@ -1,11 +1,11 @@
 // Points along the boundary of a STEP face (ISO 10303-42 §5.4 topology: FACE_BOUND ->
 // EDGE_LOOP -> ORIENTED_EDGE -> EDGE_CURVE -> VERTEX_POINT and the edge's curve), from which
-// io/step_reader.cpp takes a face's parameter range.
+// step/reader.cpp takes a face's parameter range.
 #include <cmath>
 #include <numbers>
 
 #include "ssimarch/surface/frame.hpp"
-#include "step_access.hpp"
+#include "access.hpp"
 
 namespace ssimarch::internal {
 
@@ -59,7 +59,8 @@ const StepInstance& curve_3d(const StepAccess& a, const StepInstance& curve) {
 void control_points(const StepAccess& a, const StepInstance& curve, std::vector<Vec3>* out) {
   const StepRecord* r = curve.record("B_SPLINE_CURVE_WITH_KNOTS");
   const StepRecord* base = curve.record("B_SPLINE_CURVE");
-  const std::size_t k = base ? 1 : 2;  // complex: B_SPLINE_CURVE(degree, points, ...); simple: (name, degree, points, ...)
+  const std::size_t k =
+      base ? 1 : 2;  // complex: B_SPLINE_CURVE(degree, points, ...); simple: (name, degree, points, ...)
   if (!base && !(r && curve.records.size() == 1)) return;
   const StepRecord& b = base ? *base : *r;
   for (const StepValue& v : a.list(curve, a.param(curve, b, k, "control_points_list"), "control_points_list"))
@@ -99,7 +100,8 @@ std::vector<Vec3> step_boundary_points(const StepAccess& a, const StepInstance& 
   for (const StepValue& b : a.list(face, a.param(face, fr, 1, "bounds"), "bounds")) {
     const StepInstance& bound = a.ref(face, b, "bound");
     const StepRecord& br = bound.records.front();
-    if (br.type != "FACE_OUTER_BOUND" && br.type != "FACE_BOUND") a.fail(bound, "expected FACE_BOUND or FACE_OUTER_BOUND");
+    if (br.type != "FACE_OUTER_BOUND" && br.type != "FACE_BOUND")
+      a.fail(bound, "expected FACE_BOUND or FACE_OUTER_BOUND");
     const StepInstance& loop = a.ref(bound, a.param(bound, br, 1, "bound"), "bound");
     const StepRecord& lr = loop.records.front();
     if (lr.type == "EDGE_LOOP") {
@@ -111,7 +113,8 @@ std::vector<Vec3> step_boundary_points(const StepAccess& a, const StepInstance& 
     } else if (lr.type == "VERTEX_LOOP") {
       pts.push_back(vertex(a, loop, lr, 1, "loop_vertex"));
     } else if (lr.type == "POLY_LOOP") {
-      for (const StepValue& p : a.list(loop, a.param(loop, lr, 1, "polygon"), "polygon")) pts.push_back(a.point(loop, p, "polygon"));
+      for (const StepValue& p : a.list(loop, a.param(loop, lr, 1, "polygon"), "polygon"))
+        pts.push_back(a.point(loop, p, "polygon"));
     } else {
       a.fail(loop, "is not a loop this reader knows (EDGE_LOOP, VERTEX_LOOP, POLY_LOOP)");
     }

@@ -1,7 +1,7 @@
 // Trimming loops of STEP faces (docs/cad.md, "Trimming loops"): curves traced between faces are
 // cut to the faces' outer and inner loops, each piece ending exactly on the boundary it
-// crosses. Models: tests/io/data/plate_with_hole.step and half_cylinder_cut.step (written by
-// tests/io/data/make_trim_models.py); references are closed forms.
+// crosses. Models: tests/step/data/plate_with_hole.step and half_cylinder_cut.step (written by
+// tests/step/data/make_trim_models.py); references are closed forms.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,18 +9,18 @@
 #include <string>
 
 #include "ssimarch/io/scene.hpp"
-#include "ssimarch/io/step_reader.hpp"
+#include "ssimarch/step/reader.hpp"
 #include "ssimarch/pipeline/trace_job.hpp"
 
 namespace ssimarch {
 namespace {
 
-const std::string kData = std::string(SSIMARCH_SOURCE_DIR) + "/tests/io/data/";
+const std::string kData = std::string(SSIMARCH_SOURCE_DIR) + "/tests/step/data/";
 
 Scene faces_scene(const std::string& file, const std::string& options = "{}") {
   return parse_scene(R"({"surfaces": {"a": {"step": ")" + file + R"(", "face": 1}, "b": {"step": ")" + file +
-                         R"(", "face": 2}}, "intersections": [{"name": "ab", "surfaces": ["a", "b"], "options": )" + options +
-                         "}]}",
+                         R"(", "face": 2}}, "intersections": [{"name": "ab", "surfaces": ["a", "b"], "options": )" +
+                         options + "}]}",
                      "trim.json", kData);
 }
 
@@ -28,7 +28,8 @@ Scene faces_scene(const std::string& file, const std::string& options = "{}") {
 template <class C>
 double quadrature_length(C c, double a, double b, int n = 2000) {
   static const double x[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831, 0.9061798459386640};
-  static const double w[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665, 0.2369268850561891};
+  static const double w[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665,
+                              0.2369268850561891};
   double sum = 0;
   const double h = (b - a) / n;
   for (int i = 0; i < n; ++i)
@@ -87,8 +88,8 @@ TEST(StepTrim, TrimmedCylinderFaceKeepsHalfTheEllipse) {
     ASSERT_EQ(r.result.curves.size(), 1u);
     const TracedCurve& c = r.result.curves[0];
     EXPECT_FALSE(c.closed);
-    const double exact = quadrature_length([](double t) { return Vec3(std::cos(t), std::sin(t), 1 + 0.3 * std::cos(t)); },
-                                           0.0, std::numbers::pi);
+    const double exact = quadrature_length(
+        [](double t) { return Vec3(std::cos(t), std::sin(t), 1 + 0.3 * std::cos(t)); }, 0.0, std::numbers::pi);
     EXPECT_NEAR(c.length, exact, 1e-8);
     for (const CurvePoint* p : {&c.points.front(), &c.points.back()}) {
       EXPECT_NEAR(p->p.y(), 0.0, 1e-12);
@@ -112,9 +113,9 @@ TEST(StepTrim, RegionSideOfThePlate) {
     double distance;
     Vec3 nearest;
   };
-  for (const Case& k : {Case{{2, 0.5, 0}, 1.0, {3, 0.5, 0}}, Case{{0.5, 0, 0}, -0.5, {1, 0, 0}},
-                        Case{{0, -1.5, 0}, 0.5, {0, -1, 0}}, Case{{3.5, 1, 0}, -0.5, {3, 1, 0}},
-                        Case{{0.6, 0.8, 0}, 0.0, {0.6, 0.8, 0}}}) {
+  for (const Case& k :
+       {Case{{2, 0.5, 0}, 1.0, {3, 0.5, 0}}, Case{{0.5, 0, 0}, -0.5, {1, 0, 0}}, Case{{0, -1.5, 0}, 0.5, {0, -1, 0}},
+        Case{{3.5, 1, 0}, -0.5, {3, 1, 0}}, Case{{0.6, 0.8, 0}, 0.0, {0.6, 0.8, 0}}}) {
     const FaceRegion::Side side = region->side(k.p, up);
     EXPECT_NEAR(side.signed_distance, k.distance, 1e-14) << k.p.transpose();
     EXPECT_NEAR((side.nearest - k.nearest).norm(), 0.0, 1e-14) << k.p.transpose();

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "ssimarch/core/error.hpp"
-#include "ssimarch/io/step_units.hpp"
+#include "ssimarch/step/units.hpp"
 
 namespace ssimarch {
 namespace {

@@ -1,12 +1,12 @@
-#include "ssimarch/io/step_units.hpp"
+#include "ssimarch/step/units.hpp"
 
 #include <array>
 #include <cmath>
 #include <utility>
 #include <vector>
 
-#include "step_access.hpp"
-#include "text_cat.hpp"
+#include "access.hpp"
+#include "ssimarch/core/text_cat.hpp"
 
 namespace ssimarch {
 

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "ssimarch/io/step_part21.hpp"
+#include "ssimarch/step/part21.hpp"
 
 namespace ssimarch {
 

@@ -9,7 +9,7 @@
 // Reading is bounded so that any input ends in a value or an InputError naming file:line: the
 // file size (InputLimits::max_step_bytes), the nesting of lists and typed parameters
 // (kMaxStepNesting) and instance ids (< 2^53). References are not resolved here; the semantic
-// reader (io/step_reader.hpp) resolves them with `at`, which names the referring instance.
+// reader (step/reader.hpp) resolves them with `at`, which names the referring instance.
 #pragma once
 
 #include <cstdint>
@@ -29,9 +29,9 @@ inline constexpr int kMaxStepNesting = 64;
 struct StepValue {
   enum class Kind { kUnset, kDerived, kInteger, kReal, kString, kEnum, kRef, kBinary, kList, kTyped };
   Kind kind = Kind::kUnset;
-  double number = 0;          // kInteger, kReal
-  std::int64_t ref = 0;       // kRef: the instance id
-  std::string text;           // kString (quotes undoubled), kEnum (without dots), kBinary, kTyped (type name)
+  double number = 0;             // kInteger, kReal
+  std::int64_t ref = 0;          // kRef: the instance id
+  std::string text;              // kString (quotes undoubled), kEnum (without dots), kBinary, kTyped (type name)
   std::vector<StepValue> items;  // kList; kTyped: its parameters
 
   bool is_number() const { return kind == Kind::kInteger || kind == Kind::kReal; }

@@ -8,7 +8,7 @@
 // B_SPLINE_SURFACE_WITH_KNOTS, rational ones as the complex instance with
 // RATIONAL_B_SPLINE_SURFACE, from the scene's control data), and each curve is then a SURFACE_CURVE or
 // INTERSECTION_CURVE whose associated geometry is the PCURVE on each written parametric
-// surface (the surface itself for an implicit one); io/step_reader.hpp reads them back.
+// surface (the surface itself for an implicit one); step/reader.hpp reads them back.
 #pragma once
 
 #include <ostream>

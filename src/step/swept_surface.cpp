@@ -6,7 +6,7 @@
 // §7.5 and §8.5): exact surfaces, with a parameterisation of their own (u of a revolution runs
 // along the circle's NURBS parameter, not the angle). The normal keeps STEP's direction (both
 // parameters run the same way), so a face's same_sense stays valid; faces are trimmed by their
-// loops in 3D (io/step_face_region.cpp), which does not need STEP's parameters.
+// loops in 3D (step/face_region.cpp), which does not need STEP's parameters.
 //   OFFSET_SURFACE of a plane, cylinder, sphere or torus is the same kind of surface moved by
 // the distance along its normal; offsets of other surfaces have no exact form here and are
 // refused.
@@ -16,7 +16,7 @@
 #include <numbers>
 
 #include "ssimarch/surface/frame.hpp"
-#include "step_access.hpp"
+#include "access.hpp"
 
 namespace ssimarch::internal {
 
@@ -28,8 +28,10 @@ NurbsCurve3 step_bspline_curve(const StepAccess& a, const StepInstance& c) {
   n.degree = a.integer(c, a.param(c, b, o, "degree"), "degree", 1, 64);
   for (const StepValue& v : a.list(c, a.param(c, b, o + 1, "control_points_list"), "control_points_list"))
     n.points.push_back(a.point(c, v, "control point"));
-  if (const StepRecord* rat = c.record("RATIONAL_B_SPLINE_CURVE")) n.weights = a.numbers(c, a.param(c, *rat, 0, "weights_data"), "weights_data");
-  else n.weights.assign(n.points.size(), 1.0);
+  if (const StepRecord* rat = c.record("RATIONAL_B_SPLINE_CURVE"))
+    n.weights = a.numbers(c, a.param(c, *rat, 0, "weights_data"), "weights_data");
+  else
+    n.weights.assign(n.points.size(), 1.0);
   if (n.weights.size() != n.points.size()) a.fail(c, "has another number of weights than control points");
   for (double w : n.weights)
     if (!(w > 0)) a.fail(c, "weights must be > 0");
@@ -78,8 +80,9 @@ Line step_line(const StepAccess& a, const StepInstance& c) {
   const Vec3 p = a.point(c, a.param(c, r, 1, "pnt"), "pnt");
   const StepInstance& vec = a.ref(c, a.param(c, r, 2, "dir"), "dir");
   const StepRecord& vr = a.record(vec, "VECTOR");
-  const Vec3 d = a.coordinates(a.ref(vec, a.param(vec, vr, 1, "orientation"), "orientation"), "DIRECTION").normalized() *
-                 a.number(vec, a.param(vec, vr, 2, "magnitude"), "magnitude");
+  const Vec3 d =
+      a.coordinates(a.ref(vec, a.param(vec, vr, 1, "orientation"), "orientation"), "DIRECTION").normalized() *
+      a.number(vec, a.param(vec, vr, 2, "magnitude"), "magnitude");
   if (!(d.norm() > 0)) a.fail(vec, "a line's direction must not be zero");
   return {p, d};
 }
@@ -116,7 +119,8 @@ NurbsCurve3 swept_curve(const StepAccess& a, const StepInstance& c, LineRange li
       for (std::size_t k = 0; k < 2; ++k) {
         double found = kInf;
         for (const StepValue& t : a.list(c, a.param(c, r, 2 + k, "trim"), "trim")) {
-          if (t.kind == StepValue::Kind::kTyped && t.text == "PARAMETER_VALUE") found = a.number(c, t, "trim parameter");
+          if (t.kind == StepValue::Kind::kTyped && t.text == "PARAMETER_VALUE")
+            found = a.number(c, t, "trim parameter");
           else if (t.kind == StepValue::Kind::kRef && !std::isfinite(found))
             found = (a.point(c, t, "trim point") - l.point).dot(l.direction) / l.direction.squaredNorm();
         }
@@ -127,8 +131,9 @@ NurbsCurve3 swept_curve(const StepAccess& a, const StepInstance& c, LineRange li
     }
     return swept_curve(a, basis, line_range);  // the whole basis: the face's loops trim it
   }
-  a.fail(c, "is not a swept curve this reader knows (LINE, CIRCLE, ELLIPSE, B_SPLINE_CURVE_WITH_KNOTS, rational ones, "
-            "TRIMMED_CURVE of them)");
+  a.fail(c,
+         "is not a swept curve this reader knows (LINE, CIRCLE, ELLIPSE, B_SPLINE_CURVE_WITH_KNOTS, rational ones, "
+         "TRIMMED_CURVE of them)");
 }
 
 [[noreturn]] void unbounded(const StepAccess& a, const StepInstance& s) {
@@ -140,8 +145,9 @@ SplineSurfaceData extrusion(const StepAccess& a, const StepInstance& s, const st
   const StepRecord& r = s.records.front();
   const StepInstance& vec = a.ref(s, a.param(s, r, 2, "extrusion_axis"), "extrusion_axis");
   const StepRecord& vr = a.record(vec, "VECTOR");
-  const Vec3 V = a.coordinates(a.ref(vec, a.param(vec, vr, 1, "orientation"), "orientation"), "DIRECTION").normalized() *
-                 a.number(vec, a.param(vec, vr, 2, "magnitude"), "magnitude");
+  const Vec3 V =
+      a.coordinates(a.ref(vec, a.param(vec, vr, 1, "orientation"), "orientation"), "DIRECTION").normalized() *
+      a.number(vec, a.param(vec, vr, 2, "magnitude"), "magnitude");
   if (!(V.norm() > 0)) a.fail(vec, "the extrusion vector must not be zero");
   // A swept line's range: s of p = L(s) + t V at the boundary points (least squares in s, t).
   auto line_range = [&](const Line& l) {
@@ -187,7 +193,8 @@ SplineSurfaceData revolution(const StepAccess& a, const StepInstance& s, const s
   const StepRecord& ar = a.record(ax, "AXIS1_PLACEMENT");
   const Vec3 O = a.point(ax, a.param(ax, ar, 1, "location"), "location");
   const StepValue& av = a.param(ax, ar, 2, "axis");
-  const Vec3 A = av.kind == StepValue::Kind::kUnset ? Vec3::UnitZ() : a.coordinates(a.ref(ax, av, "axis"), "DIRECTION").normalized();
+  const Vec3 A = av.kind == StepValue::Kind::kUnset ? Vec3::UnitZ()
+                                                    : a.coordinates(a.ref(ax, av, "axis"), "DIRECTION").normalized();
   // A swept line's range from the boundary: its axial coordinate is linear in s; a line normal
   // to the axis is bounded by the boundary's distances from the axis.
   auto line_range = [&](const Line& l) {
@@ -232,7 +239,8 @@ SplineSurfaceData revolution(const StepAccess& a, const StepInstance& s, const s
 
 }  // namespace
 
-std::optional<SplineSurfaceData> step_swept_surface(const StepAccess& a, const StepInstance& s, const std::vector<Vec3>& boundary,
+std::optional<SplineSurfaceData> step_swept_surface(const StepAccess& a, const StepInstance& s,
+                                                    const std::vector<Vec3>& boundary,
                                                     const std::optional<Interval>& v_range) {
   if (s.records.size() != 1) return std::nullopt;
   const std::string& t = s.records.front().type;

@@ -24,7 +24,7 @@
 #include <vector>
 
 #include "ssimarch/geometry/bspline_curve.hpp"
-#include "ssimarch/io/step_part21.hpp"
+#include "ssimarch/step/part21.hpp"
 #include "ssimarch/pipeline/face_region.hpp"
 #include "ssimarch/pipeline/spline_surface_data.hpp"
 #include "ssimarch/surface/surface.hpp"

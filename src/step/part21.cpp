@@ -1,7 +1,7 @@
 // ISO 10303-21 clear-text syntax (§5 tokens, §8 header, §9 data, §10 complex instances): a
 // recursive-descent reader with bounded nesting. Only the exchange structure is read; the
-// meaning of entities is io/step_reader.cpp's.
-#include "ssimarch/io/step_part21.hpp"
+// meaning of entities is step/reader.cpp's.
+#include "ssimarch/step/part21.hpp"
 
 #include <cctype>
 #include <charconv>
@@ -9,8 +9,8 @@
 #include <cstdlib>
 
 #include "ssimarch/core/error.hpp"
-#include "ssimarch/io/json_reader.hpp"
-#include "text_cat.hpp"
+#include "ssimarch/core/text_file.hpp"
+#include "ssimarch/core/text_cat.hpp"
 
 namespace ssimarch {
 
@@ -29,9 +29,7 @@ std::string StepInstance::type_text() const {
   return s.append(")");
 }
 
-std::string StepFile::where(const StepInstance& inst) const {
-  return cat(source, ":", inst.line, ": #", inst.id);
-}
+std::string StepFile::where(const StepInstance& inst) const { return cat(source, ":", inst.line, ": #", inst.id); }
 
 const StepInstance* StepFile::find(std::int64_t id) const {
   const auto it = instances_.find(id);
@@ -49,7 +47,8 @@ void StepFile::add(StepInstance inst) {
   const int line = inst.line;
   const auto [it, fresh] = instances_.emplace(id, std::move(inst));
   if (!fresh)
-    throw InputError(cat(source, ":", line), cat("instance #", id, " is defined twice (first on line ", it->second.line, ")"));
+    throw InputError(cat(source, ":", line),
+                     cat("instance #", id, " is defined twice (first on line ", it->second.line, ")"));
   order.push_back(id);
 }
 
@@ -79,22 +78,23 @@ class Part21Parser {
   }
 
  private:
-  [[noreturn]] void fail(const std::string& message) const {
-    throw InputError(cat(source_, ":", line_), message);
-  }
+  [[noreturn]] void fail(const std::string& message) const { throw InputError(cat(source_, ":", line_), message); }
 
   // Spaces, line breaks and /* comments */ (§5.6).
   void skip() {
     while (pos_ < s_.size()) {
       const char c = s_[pos_];
-      if (c == '\n') ++line_, ++pos_;
-      else if (std::isspace(static_cast<unsigned char>(c))) ++pos_;
+      if (c == '\n')
+        ++line_, ++pos_;
+      else if (std::isspace(static_cast<unsigned char>(c)))
+        ++pos_;
       else if (c == '/' && pos_ + 1 < s_.size() && s_[pos_ + 1] == '*') {
         const std::size_t end = s_.find("*/", pos_ + 2);
         if (end == std::string::npos) fail("a comment /* is not closed");
         for (std::size_t k = pos_; k < end; ++k) line_ += s_[k] == '\n';
         pos_ = end + 2;
-      } else break;
+      } else
+        break;
     }
   }
   char peek() {
@@ -163,7 +163,8 @@ class Part21Parser {
     } else {
       inst.records.push_back(record(0));
     }
-    if (peek() != ';') fail(cat("instance #", inst.id, " (line ", inst.line, ") does not end with ';', found ", shown(peek())));
+    if (peek() != ';')
+      fail(cat("instance #", inst.id, " (line ", inst.line, ") does not end with ';', found ", shown(peek())));
     ++pos_;
     return inst;
   }
@@ -260,8 +261,7 @@ class Part21Parser {
     const std::size_t start = ++pos_;
     while (pos_ < s_.size() && s_[pos_] != quote) {
       const char c = s_[pos_];
-      if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_'))
-        fail(cat(what, " contains '", c, "'"));
+      if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) fail(cat(what, " contains '", c, "'"));
       ++pos_;
     }
     if (pos_ >= s_.size()) fail(cat(what, " is not closed"));
@@ -275,10 +275,14 @@ class Part21Parser {
     bool real = false;
     while (pos_ < s_.size()) {
       const char c = s_[pos_];
-      if (std::isdigit(static_cast<unsigned char>(c))) ++pos_;
-      else if (c == '.' || c == 'E' || c == 'e') real = true, ++pos_;
-      else if ((c == '+' || c == '-') && (s_[pos_ - 1] == 'E' || s_[pos_ - 1] == 'e')) ++pos_;
-      else break;
+      if (std::isdigit(static_cast<unsigned char>(c)))
+        ++pos_;
+      else if (c == '.' || c == 'E' || c == 'e')
+        real = true, ++pos_;
+      else if ((c == '+' || c == '-') && (s_[pos_ - 1] == 'E' || s_[pos_ - 1] == 'e'))
+        ++pos_;
+      else
+        break;
     }
     std::string t = s_.substr(start, pos_ - start);
     if (!t.empty() && t[0] == '+') t.erase(0, 1);

@@ -9,11 +9,11 @@
 
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/core/vec3.hpp"
-#include "ssimarch/io/step_part21.hpp"
+#include "ssimarch/step/part21.hpp"
 #include "ssimarch/pipeline/face_region.hpp"
 #include "ssimarch/pipeline/spline_surface_data.hpp"
 #include "ssimarch/surface/surface.hpp"
-#include "text_cat.hpp"
+#include "ssimarch/core/text_cat.hpp"
 
 namespace ssimarch::internal {
 
@@ -90,7 +90,7 @@ struct StepPlacement {
 };
 StepPlacement step_placement(const StepAccess& a, const StepInstance& inst);
 
-/// Points along a face's boundary (see io/step_reader.hpp, "Trimming"): empty when the face
+/// Points along a face's boundary (see step/reader.hpp, "Trimming"): empty when the face
 /// has no bounds.
 std::vector<Vec3> step_boundary_points(const StepAccess& a, const StepInstance& face);
 
@@ -105,17 +105,19 @@ struct NurbsCurve3 {
 NurbsCurve3 step_bspline_curve(const StepAccess& a, const StepInstance& curve);
 
 /// SURFACE_OF_LINEAR_EXTRUSION and SURFACE_OF_REVOLUTION as exact rational B-spline surfaces
-/// (io/step_swept_surface.cpp); `boundary` (a face's boundary points) bounds a swept line and
+/// (step/swept_surface.cpp); `boundary` (a face's boundary points) bounds a swept line and
 /// an extrusion's length, `v_range` (a RECTANGULAR_TRIMMED_SURFACE's v, which is STEP's and
 /// ours for an extrusion) its length first. Empty for other types.
-std::optional<SplineSurfaceData> step_swept_surface(const StepAccess& a, const StepInstance& s, const std::vector<Vec3>& boundary,
+std::optional<SplineSurfaceData> step_swept_surface(const StepAccess& a, const StepInstance& s,
+                                                    const std::vector<Vec3>& boundary,
                                                     const std::optional<Interval>& v_range = std::nullopt);
 /// OFFSET_SURFACE `s` of `basis` at distance d: a plane, cylinder, sphere or torus moved along
 /// its normal; fails naming `s` for other bases.
 Surface step_offset_surface(const Surface& basis, double d, const StepAccess& a, const StepInstance& s);
 
-/// The region inside a face's trimming loops (io/step_face_region.cpp); null when no edge of
+/// The region inside a face's trimming loops (step/face_region.cpp); null when no edge of
 /// the face bounds an area (only seams and vertex loops). `name` is for messages.
-std::shared_ptr<const FaceRegion> step_face_region(const StepAccess& a, const StepInstance& face, const std::string& name);
+std::shared_ptr<const FaceRegion> step_face_region(const StepAccess& a, const StepInstance& face,
+                                                   const std::string& name);
 
 }  // namespace ssimarch::internal

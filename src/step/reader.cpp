@@ -1,6 +1,6 @@
 // STEP faces and surfaces -> ssimarch surfaces (ISO 10303-42 §4.4 geometry: the surfaces'
 // parameterisations below are the standard's, which are those of surface/'s primitives).
-#include "ssimarch/io/step_reader.hpp"
+#include "ssimarch/step/reader.hpp"
 
 #include <algorithm>
 #include <array>
@@ -8,10 +8,10 @@
 #include <limits>
 #include <numbers>
 
-#include "ssimarch/io/json_reader.hpp"
+#include "ssimarch/core/text_file.hpp"
 #include "ssimarch/surface/frame.hpp"
-#include "step_access.hpp"
-#include "text_cat.hpp"
+#include "access.hpp"
+#include "ssimarch/core/text_cat.hpp"
 
 namespace ssimarch {
 
@@ -107,7 +107,8 @@ std::vector<double> expand_knots(const StepAccess& a, const StepInstance& s, con
   std::vector<double> out;
   for (std::size_t i = 0; i < m.size(); ++i) {
     if (!(m[i] >= 1 && m[i] == std::floor(m[i]) && out.size() + static_cast<std::size_t>(m[i]) <= expected))
-      a.fail(s, cat("knot multiplicities must be integers >= 1 adding up to ", expected, " (control points + degree + 1)"));
+      a.fail(s, cat("knot multiplicities must be integers >= 1 adding up to ", expected,
+                    " (control points + degree + 1)"));
     out.insert(out.end(), static_cast<std::size_t>(m[i]), k[i]);
   }
   if (out.size() != expected)
@@ -132,7 +133,8 @@ SplineSurfaceData spline_data(const StepAccess& a, const StepInstance& s) {
   d.degree_v = a.integer(s, a.param(s, b, o + 1, "v_degree"), "v_degree", 1, 64);
   for (const StepValue& row : a.list(s, a.param(s, b, o + 2, "control_points_list"), "control_points_list")) {
     d.points.emplace_back();
-    for (const StepValue& v : a.list(s, row, "a row of control points")) d.points.back().push_back(a.point(s, v, "control point"));
+    for (const StepValue& v : a.list(s, row, "a row of control points"))
+      d.points.back().push_back(a.point(s, v, "control point"));
   }
   if (d.points.empty() || d.points[0].empty()) a.fail(s, "has no control points");
   const std::size_t nu = d.points.size(), nv = d.points[0].size();
@@ -142,8 +144,10 @@ SplineSurfaceData spline_data(const StepAccess& a, const StepInstance& s) {
   } else {
     const StepRecord& k = base ? a.record(s, "B_SPLINE_SURFACE_WITH_KNOTS") : b;
     const std::size_t ko = base ? 0 : 8;
-    d.knots_u = expand_knots(a, s, a.param(s, k, ko, "u_multiplicities"), a.param(s, k, ko + 2, "u_knots"), nu + d.degree_u + 1);
-    d.knots_v = expand_knots(a, s, a.param(s, k, ko + 1, "v_multiplicities"), a.param(s, k, ko + 3, "v_knots"), nv + d.degree_v + 1);
+    d.knots_u = expand_knots(a, s, a.param(s, k, ko, "u_multiplicities"), a.param(s, k, ko + 2, "u_knots"),
+                             nu + d.degree_u + 1);
+    d.knots_v = expand_knots(a, s, a.param(s, k, ko + 1, "v_multiplicities"), a.param(s, k, ko + 3, "v_knots"),
+                             nv + d.degree_v + 1);
   }
   if (const StepRecord* rat = s.record("RATIONAL_B_SPLINE_SURFACE"))
     for (const StepValue& row : a.list(s, a.param(s, *rat, 0, "weights_data"), "weights_data"))
@@ -153,7 +157,9 @@ SplineSurfaceData spline_data(const StepAccess& a, const StepInstance& s) {
 
 Surface spline_surface(const StepAccess& a, const StepInstance& s) {
   const SplineSurfaceData d = spline_data(a, s);
-  return checked(a, s, [&] { return BSplineSurface(d.degree_u, d.degree_v, d.knots_u, d.knots_v, d.points, d.weights, a.file().where(s)); });
+  return checked(a, s, [&] {
+    return BSplineSurface(d.degree_u, d.degree_v, d.knots_u, d.knots_v, d.points, d.weights, a.file().where(s));
+  });
 }
 
 bool is_spline(const StepInstance& s) { return s.record("B_SPLINE_SURFACE_WITH_KNOTS") || s.record("BEZIER_SURFACE"); }
@@ -165,11 +171,13 @@ Surface any_surface(const StepAccess& a, const StepInstance& s, Trim trim, doubl
     return elementary(a, s, trim, angle_unit);
   if (is_spline(s)) return spline_surface(a, s);
   std::optional<Interval> v_range;
-  if (trim.rectangle) v_range = Interval{std::min((*trim.rectangle)[2], (*trim.rectangle)[3]), std::max((*trim.rectangle)[2], (*trim.rectangle)[3])};
+  if (trim.rectangle)
+    v_range = Interval{std::min((*trim.rectangle)[2], (*trim.rectangle)[3]),
+                       std::max((*trim.rectangle)[2], (*trim.rectangle)[3])};
   if (const auto swept = internal::step_swept_surface(a, s, trim.boundary, v_range))
     return checked(a, s, [&] {
-      return BSplineSurface(swept->degree_u, swept->degree_v, swept->knots_u, swept->knots_v, swept->points, swept->weights,
-                            a.file().where(s));
+      return BSplineSurface(swept->degree_u, swept->degree_v, swept->knots_u, swept->knots_v, swept->points,
+                            swept->weights, a.file().where(s));
     });
   if (s.records.size() == 1 && t == "OFFSET_SURFACE") {
     const StepRecord& r = s.records.front();
@@ -188,10 +196,11 @@ Surface any_surface(const StepAccess& a, const StepInstance& s, Trim trim, doubl
     if (basis.records.front().type == "RECTANGULAR_TRIMMED_SURFACE") a.fail(s, "trims a trimmed surface");
     return any_surface(a, basis, Trim{{}, rect}, angle_unit);
   }
-  a.fail(s, "is not a surface type this reader knows (PLANE, CYLINDRICAL_SURFACE, CONICAL_SURFACE, "
-            "SPHERICAL_SURFACE, TOROIDAL_SURFACE, B_SPLINE_SURFACE_WITH_KNOTS, BEZIER_SURFACE, rational ones, "
-            "SURFACE_OF_LINEAR_EXTRUSION, SURFACE_OF_REVOLUTION, OFFSET_SURFACE of an elementary surface, "
-            "RECTANGULAR_TRIMMED_SURFACE)");
+  a.fail(s,
+         "is not a surface type this reader knows (PLANE, CYLINDRICAL_SURFACE, CONICAL_SURFACE, "
+         "SPHERICAL_SURFACE, TOROIDAL_SURFACE, B_SPLINE_SURFACE_WITH_KNOTS, BEZIER_SURFACE, rational ones, "
+         "SURFACE_OF_LINEAR_EXTRUSION, SURFACE_OF_REVOLUTION, OFFSET_SURFACE of an elementary surface, "
+         "RECTANGULAR_TRIMMED_SURFACE)");
 }
 
 // Radians per plane-angle unit: a CONVERSION_BASED_UNIT with PLANE_ANGLE_UNIT (ISO 10303-41)
@@ -230,7 +239,8 @@ StepModel StepModel::read(const std::filesystem::path& path, const InputLimits& 
 
 const StepFace& StepModel::face(int index, const std::string& where) const {
   if (index < 1 || static_cast<std::size_t>(index) > faces_.size())
-    throw InputError(where, cat("face ", index, " does not exist: ", file_.source, " has ", faces_.size(), " faces, numbered from 1"));
+    throw InputError(where, cat("face ", index, " does not exist: ", file_.source, " has ", faces_.size(),
+                                " faces, numbered from 1"));
   return faces_[static_cast<std::size_t>(index) - 1];
 }
 
@@ -256,8 +266,8 @@ std::optional<SplineSurfaceData> StepModel::spline_data(std::int64_t entity) con
     s = &a.ref(*s, a.param(*s, r, 1, "basis_surface"), "basis_surface");
   }
   if (is_spline(*s)) return ::ssimarch::spline_data(a, *s);
-  return internal::step_swept_surface(a, *s, is_face(*inst) ? internal::step_boundary_points(a, *inst) : std::vector<Vec3>{},
-                                      v_range);
+  return internal::step_swept_surface(
+      a, *s, is_face(*inst) ? internal::step_boundary_points(a, *inst) : std::vector<Vec3>{}, v_range);
 }
 
 std::shared_ptr<const FaceRegion> StepModel::face_region(std::int64_t entity) const {
@@ -278,12 +288,14 @@ BSplineCurve StepModel::bspline_curve(std::int64_t entity) const {
   b.degree = a.integer(*c, a.param(*c, r, 1, "degree"), "degree", 1, 64);
   for (const StepValue& v : a.list(*c, a.param(*c, r, 2, "control_points_list"), "control_points_list")) {
     const StepInstance& pt = a.ref(*c, v, "control point");
-    const std::vector<double> x = a.numbers(pt, a.param(pt, a.record(pt, "CARTESIAN_POINT"), 1, "coordinates"), "coordinates");
+    const std::vector<double> x =
+        a.numbers(pt, a.param(pt, a.record(pt, "CARTESIAN_POINT"), 1, "coordinates"), "coordinates");
     if (!b.control_points.empty() && x.size() != static_cast<std::size_t>(b.control_points[0].size()))
       a.fail(pt, "has another dimension than the curve's first control point");
     b.control_points.push_back(Eigen::Map<const VecX>(x.data(), static_cast<Eigen::Index>(x.size())));
   }
-  if (b.control_points.size() < static_cast<std::size_t>(b.degree) + 1) a.fail(*c, "has fewer than degree + 1 control points");
+  if (b.control_points.size() < static_cast<std::size_t>(b.degree) + 1)
+    a.fail(*c, "has fewer than degree + 1 control points");
   b.knots = expand_knots(a, *c, a.param(*c, r, 6, "knot_multiplicities"), a.param(*c, r, 7, "knots"),
                          b.control_points.size() + static_cast<std::size_t>(b.degree) + 1);
   for (std::size_t i = 1; i < b.knots.size(); ++i)

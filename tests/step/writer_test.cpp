@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "ssimarch/io/scene.hpp"
-#include "ssimarch/io/step_writer.hpp"
+#include "ssimarch/step/writer.hpp"
 #include "ssimarch/io/trace_writers.hpp"
 
 namespace ssimarch {
@@ -24,7 +24,8 @@ std::vector<IntersectionRun> spline_runs() {
       {"name": "viviani", "surfaces": ["sphere", "cyl"], "start": [1, -1, 1.4142], "options": {"step_length": 0.1, "bspline": true}},
       {"name": "ellipse", "surfaces": ["cyl", "plane"], "start": [0, 0, 1], "options": {"step_length": 0.3, "bspline": true}},
       {"name": "open", "surfaces": ["halfcyl", "plane"], "start": [0, 0, 1], "options": {"step_length": 0.1, "bspline": true}}
-    ]})json", "s.json");
+    ]})json",
+                        "s.json");
   std::vector<IntersectionRun> runs;
   for (const auto& spec : s.intersections) runs.push_back(run_intersection(s, spec));
   return runs;

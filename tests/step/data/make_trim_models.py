@@ -23,7 +23,7 @@ class W:
         return s.add(f"ADVANCED_FACE('{name}',(%s),#{surf},{'.T.' if same else '.F.'})"%",".join(f"#{b}" for b in bounds))
     def text(s,desc):
         return ("ISO-10303-21;\nHEADER;\n/* "+desc+" */\nFILE_DESCRIPTION(('ssimarch trimming-loop test'),'2;1');\n"
-          "FILE_NAME('t','2026-12-02T08:30:00',('ssimarch tests'),(''),'tests/io/data generator','ssimarch','');\n"
+          "FILE_NAME('t','2026-12-02T08:30:00',('ssimarch tests'),(''),'tests/step/data generator','ssimarch','');\n"
           "FILE_SCHEMA(('AUTOMOTIVE_DESIGN { 1 0 10303 214 1 1 1 1 }'));\nENDSEC;\nDATA;\n"+"\n".join(s.lines)+"\nENDSEC;\nEND-ISO-10303-21;\n")
 
 def square(w, o, e0, e1, h):

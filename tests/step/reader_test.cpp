@@ -12,8 +12,8 @@
 
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/io/scene.hpp"
-#include "ssimarch/io/step_reader.hpp"
-#include "ssimarch/io/step_writer.hpp"
+#include "ssimarch/step/reader.hpp"
+#include "ssimarch/step/writer.hpp"
 
 namespace ssimarch {
 namespace {
@@ -36,9 +36,10 @@ std::string error_of(const std::string& text) {
 }
 
 TEST(StepPart21, ReadsEveryParameterKindAndComplexInstances) {
-  const StepFile f = parse_step(step_text("/* comment */ #1=A('it''s',$,*,.T.,-1.5E-3,42,#2,\"0F\",(1,(2.,3.)),LENGTH_MEASURE(2.5));\n"
-                                          "#2=(B()C(1,'x')D((#1)));\n"),
-                                "t.step");
+  const StepFile f =
+      parse_step(step_text("/* comment */ #1=A('it''s',$,*,.T.,-1.5E-3,42,#2,\"0F\",(1,(2.,3.)),LENGTH_MEASURE(2.5));\n"
+                           "#2=(B()C(1,'x')D((#1)));\n"),
+                 "t.step");
   ASSERT_EQ(f.size(), 2u);
   EXPECT_EQ(f.schemas, std::vector<std::string>{"AUTOMOTIVE_DESIGN"});
   const StepInstance& a = *f.find(1);
@@ -98,17 +99,21 @@ Vec3 at(const Surface& s, double u, double v) {
   return {p.x, p.y, p.z};
 }
 
-void expect_near(const Vec3& a, const Vec3& b, double tol) { EXPECT_LT((a - b).norm(), tol) << a.transpose() << " vs " << b.transpose(); }
+void expect_near(const Vec3& a, const Vec3& b, double tol) {
+  EXPECT_LT((a - b).norm(), tol) << a.transpose() << " vs " << b.transpose();
+}
 
 TEST(StepReader, AnalyticSurfacesFollowIso10303_42) {
   // A trimmed plane and cylinder carry their rectangle; the sphere and torus are whole.
-  const StepModel m(parse_step(step_text(std::string(kPlacement) +
-                                         "#10=PLANE('',#1);\n#11=RECTANGULAR_TRIMMED_SURFACE('',#10,-1.,2.,0.5,4.,.T.,.T.);\n"
-                                         "#20=CYLINDRICAL_SURFACE('',#1,1.5);\n#21=RECTANGULAR_TRIMMED_SURFACE('',#20,0.,6.3,-1.,2.,.T.,.T.);\n"
-                                         "#30=CONICAL_SURFACE('',#1,2.,0.5);\n#31=RECTANGULAR_TRIMMED_SURFACE('',#30,0.,6.3,-1.,3.,.T.,.T.);\n"
-                                         "#40=SPHERICAL_SURFACE('',#1,2.5);\n#50=TOROIDAL_SURFACE('',#1,3.,0.75);\n"),
-                               "t.step"));
-  const Surface plane = m.surface(11), cyl = m.surface(21), cone = m.surface(31), sphere = m.surface(40), torus = m.surface(50);
+  const StepModel m(parse_step(
+      step_text(std::string(kPlacement) +
+                "#10=PLANE('',#1);\n#11=RECTANGULAR_TRIMMED_SURFACE('',#10,-1.,2.,0.5,4.,.T.,.T.);\n"
+                "#20=CYLINDRICAL_SURFACE('',#1,1.5);\n#21=RECTANGULAR_TRIMMED_SURFACE('',#20,0.,6.3,-1.,2.,.T.,.T.);\n"
+                "#30=CONICAL_SURFACE('',#1,2.,0.5);\n#31=RECTANGULAR_TRIMMED_SURFACE('',#30,0.,6.3,-1.,3.,.T.,.T.);\n"
+                "#40=SPHERICAL_SURFACE('',#1,2.5);\n#50=TOROIDAL_SURFACE('',#1,3.,0.75);\n"),
+      "t.step"));
+  const Surface plane = m.surface(11), cyl = m.surface(21), cone = m.surface(31), sphere = m.surface(40),
+                torus = m.surface(50);
   EXPECT_EQ(plane.domain().u.lo, -1.0);
   EXPECT_EQ(plane.domain().v.hi, 4.0);
   EXPECT_EQ(cyl.domain().v.lo, -1.0);
@@ -132,20 +137,24 @@ TEST(StepReader, AnalyticSurfacesFollowIso10303_42) {
 // of a B-spline is refused naming the instance and the type.
 TEST(StepReader, SweptAndOffsetSurfacesAreExact) {
   const StepModel m(parse_step(
-      step_text(std::string(kPlacement) +
-                "#20=CYLINDRICAL_SURFACE('',#1,1.5);\n#21=RECTANGULAR_TRIMMED_SURFACE('',#20,0.,6.3,-1.,2.,.T.,.T.);\n"
-                "#40=SPHERICAL_SURFACE('',#1,2.5);\n"
-                "#60=LINE('',#61,#62);\n#61=CARTESIAN_POINT('',(2.,0.,0.));\n#62=VECTOR('',#63,1.);\n#63=DIRECTION('',(0.,0.,1.));\n"
-                "#64=TRIMMED_CURVE('',#60,(PARAMETER_VALUE(-1.)),(PARAMETER_VALUE(3.)),.T.,.PARAMETER.);\n"
-                "#65=AXIS1_PLACEMENT('',#66,#63);\n#66=CARTESIAN_POINT('',(0.,0.,0.));\n"
-                "#67=SURFACE_OF_REVOLUTION('',#64,#65);\n"
-                "#70=CIRCLE('',#71,1.);\n#71=AXIS2_PLACEMENT_3D('',#72,#73,#74);\n#72=CARTESIAN_POINT('',(3.,0.,0.));\n"
-                "#73=DIRECTION('',(0.,-1.,0.));\n#74=DIRECTION('',(1.,0.,0.));\n#75=SURFACE_OF_REVOLUTION('',#70,#65);\n"
-                "#80=ELLIPSE('',#81,2.,1.);\n#81=AXIS2_PLACEMENT_3D('',#66,#63,#74);\n#82=VECTOR('',#63,1.5);\n"
-                "#83=SURFACE_OF_LINEAR_EXTRUSION('',#80,#82);\n#84=RECTANGULAR_TRIMMED_SURFACE('',#83,0.,1.,-0.5,2.,.T.,.T.);\n"
-                "#90=OFFSET_SURFACE('',#21,0.25,.F.);\n#91=OFFSET_SURFACE('',#40,-0.5,.F.);\n"
-                "#92=B_SPLINE_SURFACE_WITH_KNOTS('',1,1,((#61,#66),(#72,#61)),.UNSPECIFIED.,.F.,.F.,.F.,(2,2),(2,2),(0.,1.),(0.,1.),"
-                ".UNSPECIFIED.);\n#93=OFFSET_SURFACE('',#92,0.1,.F.);\n"),
+      step_text(
+          std::string(kPlacement) +
+          "#20=CYLINDRICAL_SURFACE('',#1,1.5);\n#21=RECTANGULAR_TRIMMED_SURFACE('',#20,0.,6.3,-1.,2.,.T.,.T.);\n"
+          "#40=SPHERICAL_SURFACE('',#1,2.5);\n"
+          "#60=LINE('',#61,#62);\n#61=CARTESIAN_POINT('',(2.,0.,0.));\n#62=VECTOR('',#63,1.);\n#63=DIRECTION('',(0.,0.,"
+          "1.));\n"
+          "#64=TRIMMED_CURVE('',#60,(PARAMETER_VALUE(-1.)),(PARAMETER_VALUE(3.)),.T.,.PARAMETER.);\n"
+          "#65=AXIS1_PLACEMENT('',#66,#63);\n#66=CARTESIAN_POINT('',(0.,0.,0.));\n"
+          "#67=SURFACE_OF_REVOLUTION('',#64,#65);\n"
+          "#70=CIRCLE('',#71,1.);\n#71=AXIS2_PLACEMENT_3D('',#72,#73,#74);\n#72=CARTESIAN_POINT('',(3.,0.,0.));\n"
+          "#73=DIRECTION('',(0.,-1.,0.));\n#74=DIRECTION('',(1.,0.,0.));\n#75=SURFACE_OF_REVOLUTION('',#70,#65);\n"
+          "#80=ELLIPSE('',#81,2.,1.);\n#81=AXIS2_PLACEMENT_3D('',#66,#63,#74);\n#82=VECTOR('',#63,1.5);\n"
+          "#83=SURFACE_OF_LINEAR_EXTRUSION('',#80,#82);\n#84=RECTANGULAR_TRIMMED_SURFACE('',#83,0.,1.,-0.5,2.,.T.,.T.);"
+          "\n"
+          "#90=OFFSET_SURFACE('',#21,0.25,.F.);\n#91=OFFSET_SURFACE('',#40,-0.5,.F.);\n"
+          "#92=B_SPLINE_SURFACE_WITH_KNOTS('',1,1,((#61,#66),(#72,#61)),.UNSPECIFIED.,.F.,.F.,.F.,(2,2),(2,2),(0.,1.),("
+          "0.,1.),"
+          ".UNSPECIFIED.);\n#93=OFFSET_SURFACE('',#92,0.1,.F.);\n"),
       "t.step"));
   const Surface cylinder = m.surface(67), torus = m.surface(75), elliptic = m.surface(84);
   const Surface offset_cylinder = m.surface(90), offset_sphere = m.surface(91);
@@ -188,11 +197,12 @@ TEST(StepReader, SweptAndOffsetSurfacesAreExact) {
     EXPECT_NE(std::string(e.what()).find("bspline"), std::string::npos) << e.what();
   }
   // A revolved line without a trim or a face bounding it: the message says so.
-  const StepModel bare(parse_step(step_text("#60=LINE('',#61,#62);\n#61=CARTESIAN_POINT('',(2.,0.,0.));\n#62=VECTOR('',#63,1.);\n"
-                                            "#63=DIRECTION('',(0.,0.,1.));\n#65=AXIS1_PLACEMENT('',#61,#63);\n"
-                                            "#66=CARTESIAN_POINT('',(0.,0.,0.));\n#64=AXIS1_PLACEMENT('',#66,#63);\n"
-                                            "#67=SURFACE_OF_REVOLUTION('',#60,#64);\n"),
-                                  "t.step"));
+  const StepModel bare(
+      parse_step(step_text("#60=LINE('',#61,#62);\n#61=CARTESIAN_POINT('',(2.,0.,0.));\n#62=VECTOR('',#63,1.);\n"
+                           "#63=DIRECTION('',(0.,0.,1.));\n#65=AXIS1_PLACEMENT('',#61,#63);\n"
+                           "#66=CARTESIAN_POINT('',(0.,0.,0.));\n#64=AXIS1_PLACEMENT('',#66,#63);\n"
+                           "#67=SURFACE_OF_REVOLUTION('',#60,#64);\n"),
+                 "t.step"));
   try {
     bare.surface(67);
     ADD_FAILURE();
@@ -202,12 +212,14 @@ TEST(StepReader, SweptAndOffsetSurfacesAreExact) {
 }
 
 TEST(StepReader, DegreesAreConverted) {
-  const StepModel m(parse_step(step_text(std::string(kPlacement) +
-                                         "#30=CONICAL_SURFACE('',#1,0.,30.);\n#31=RECTANGULAR_TRIMMED_SURFACE('',#30,0.,360.,0.,2.,.T.,.T.);\n"
-                                         "#60=(CONVERSION_BASED_UNIT('DEGREE',#61)NAMED_UNIT(#62)PLANE_ANGLE_UNIT());\n"
-                                         "#61=PLANE_ANGLE_MEASURE_WITH_UNIT(PLANE_ANGLE_MEASURE(0.0174532925199433),#63);\n"
-                                         "#62=DIMENSIONAL_EXPONENTS(0.,0.,0.,0.,0.,0.,0.);\n#63=(NAMED_UNIT(*)PLANE_ANGLE_UNIT()SI_UNIT($,.RADIAN.));\n"),
-                               "t.step"));
+  const StepModel m(parse_step(
+      step_text(std::string(kPlacement) +
+                "#30=CONICAL_SURFACE('',#1,0.,30.);\n#31=RECTANGULAR_TRIMMED_SURFACE('',#30,0.,360.,0.,2.,.T.,.T.);\n"
+                "#60=(CONVERSION_BASED_UNIT('DEGREE',#61)NAMED_UNIT(#62)PLANE_ANGLE_UNIT());\n"
+                "#61=PLANE_ANGLE_MEASURE_WITH_UNIT(PLANE_ANGLE_MEASURE(0.0174532925199433),#63);\n"
+                "#62=DIMENSIONAL_EXPONENTS(0.,0.,0.,0.,0.,0.,0.);\n#63=(NAMED_UNIT(*)PLANE_ANGLE_UNIT()SI_UNIT($,."
+                "RADIAN.));\n"),
+      "t.step"));
   EXPECT_NEAR(m.angle_unit(), kPi / 180, 1e-15);
   const Surface cone = m.surface(31);
   ASSERT_NE(cone.get_if<Cone>(), nullptr);
@@ -219,7 +231,8 @@ TEST(StepReader, FacesAreBoundedByTheirEdges) {
   const StepModel m(parse_step(
       step_text(std::string(kPlacement) +
                 "#5=CYLINDRICAL_SURFACE('',#1,1.5);\n#6=ADVANCED_FACE('',(#7,#8),#5,.F.);\n"
-                "#7=FACE_OUTER_BOUND('',#9,.T.);\n#8=FACE_BOUND('',#10,.T.);\n#9=EDGE_LOOP('',(#11));\n#10=EDGE_LOOP('',(#12));\n"
+                "#7=FACE_OUTER_BOUND('',#9,.T.);\n#8=FACE_BOUND('',#10,.T.);\n#9=EDGE_LOOP('',(#11));\n#10=EDGE_LOOP(''"
+                ",(#12));\n"
                 "#11=ORIENTED_EDGE('',*,*,#13,.T.);\n#12=ORIENTED_EDGE('',*,*,#14,.F.);\n"
                 "#13=EDGE_CURVE('',#15,#15,#17,.T.);\n#14=EDGE_CURVE('',#16,#16,#18,.T.);\n"
                 "#15=VERTEX_POINT('',#19);\n#16=VERTEX_POINT('',#20);\n#19=CARTESIAN_POINT('',(2.5,2.,3.));\n"
@@ -258,12 +271,16 @@ TEST(StepReader, ErrorsNameTheInstance) {
   };
   EXPECT_NE(message("#1=PLANE('',#9);\n", 1).find("t.step:8: #1"), std::string::npos);
   EXPECT_NE(message("#1=PLANE('',#9);\n", 1).find("refers to #9"), std::string::npos);
-  EXPECT_NE(message(std::string(kPlacement) + "#5=CYLINDRICAL_SURFACE('',#1,'r');\n", 5).find("radius must be a number"),
+  EXPECT_NE(
+      message(std::string(kPlacement) + "#5=CYLINDRICAL_SURFACE('',#1,'r');\n", 5).find("radius must be a number"),
+      std::string::npos);
+  EXPECT_NE(message(std::string(kPlacement) + "#5=CYLINDRICAL_SURFACE('',#1,-1.);\n", 5).find("t.step:12: #5"),
             std::string::npos);
-  EXPECT_NE(message(std::string(kPlacement) + "#5=CYLINDRICAL_SURFACE('',#1,-1.);\n", 5).find("t.step:12: #5"), std::string::npos);
-  EXPECT_NE(message(std::string(kPlacement) + "#5=CURVE_BOUNDED_SURFACE('',#1,(),.F.);\n", 5).find("not a surface type"),
-            std::string::npos);
-  EXPECT_NE(message(std::string(kPlacement) + "#5=SURFACE_OF_REVOLUTION('',#1,#6);\n#6=AXIS1_PLACEMENT('',#2,#3);\n", 5).find("#1: AXIS2_PLACEMENT_3D: is not a swept curve"),
+  EXPECT_NE(
+      message(std::string(kPlacement) + "#5=CURVE_BOUNDED_SURFACE('',#1,(),.F.);\n", 5).find("not a surface type"),
+      std::string::npos);
+  EXPECT_NE(message(std::string(kPlacement) + "#5=SURFACE_OF_REVOLUTION('',#1,#6);\n#6=AXIS1_PLACEMENT('',#2,#3);\n", 5)
+                .find("#1: AXIS2_PLACEMENT_3D: is not a swept curve"),
             std::string::npos);
   EXPECT_NE(message("#1=B_SPLINE_SURFACE_WITH_KNOTS('',1,1,((#2,#2),(#2,#2)),.UNSPECIFIED.,.F.,.F.,.F.,(2,9),(2,2),"
                     "(0.,1.),(0.,1.),.UNSPECIFIED.);\n#2=CARTESIAN_POINT('',(0.,0.,0.));\n",
@@ -272,7 +289,7 @@ TEST(StepReader, ErrorsNameTheInstance) {
             std::string::npos);
 }
 
-const std::string kNurbsFile = std::string(SSIMARCH_SOURCE_DIR) + "/tests/io/data/half_cylinder_nurbs.step";
+const std::string kNurbsFile = std::string(SSIMARCH_SOURCE_DIR) + "/tests/step/data/half_cylinder_nurbs.step";
 
 TEST(StepReader, NurbsFaceIsTheExactCylinder) {
   const StepModel m = StepModel::read(kNurbsFile);
@@ -310,7 +327,7 @@ TEST(StepReader, SceneNamesFacesOfAStepFile) {
     "surfaces": {"side": {"step": "half_cylinder_nurbs.step", "face": 1},
                  "cut": {"plane": {"point": [0, 0, 1], "normal": [0, 0.3, 1], "u": [-4, 4], "v": [-4, 4]}}},
     "intersections": [{"surfaces": ["side", "cut"], "as": ["parametric", "implicit"], "options": {"step_length": 0.05}}]})json";
-  const Scene s = parse_scene(text, "scene.json", std::string(SSIMARCH_SOURCE_DIR) + "/tests/io/data");
+  const Scene s = parse_scene(text, "scene.json", std::string(SSIMARCH_SOURCE_DIR) + "/tests/step/data");
   ASSERT_NE(s.surfaces.at("side").get_if<BSplineSurface>(), nullptr);
   const IntersectionRun r = run_intersection(s, s.intersections[0]);
   ASSERT_EQ(r.result.curves.size(), 1u);
@@ -321,7 +338,7 @@ TEST(StepReader, SceneNamesFacesOfAStepFile) {
   }
   auto error = [](const std::string& t) {
     try {
-      parse_scene(t, "scene.json", std::string(SSIMARCH_SOURCE_DIR) + "/tests/io/data");
+      parse_scene(t, "scene.json", std::string(SSIMARCH_SOURCE_DIR) + "/tests/step/data");
     } catch (const InputError& e) {
       return std::string(e.what());
     }
@@ -329,16 +346,19 @@ TEST(StepReader, SceneNamesFacesOfAStepFile) {
   };
   EXPECT_NE(error(R"({"surfaces": {"a": {"step": "half_cylinder_nurbs.step", "face": 3}}})").find("surfaces.a.face"),
             std::string::npos);
-  EXPECT_NE(error(R"({"surfaces": {"a": {"step": "half_cylinder_nurbs.step", "entity": 13}}})").find("half_cylinder_nurbs.step:24: #13"),
+  EXPECT_NE(error(R"({"surfaces": {"a": {"step": "half_cylinder_nurbs.step", "entity": 13}}})")
+                .find("half_cylinder_nurbs.step:24: #13"),
             std::string::npos);
-  EXPECT_NE(error(R"({"surfaces": {"a": {"step": "half_cylinder_nurbs.step"}}})").find("exactly one of"), std::string::npos);
-  EXPECT_NE(error(R"({"surfaces": {"a": {"step": "missing.step", "face": 1}}})").find("missing.step"), std::string::npos);
+  EXPECT_NE(error(R"({"surfaces": {"a": {"step": "half_cylinder_nurbs.step"}}})").find("exactly one of"),
+            std::string::npos);
+  EXPECT_NE(error(R"({"surfaces": {"a": {"step": "missing.step", "face": 1}}})").find("missing.step"),
+            std::string::npos);
 }
 
 // Our writer's file read back: each SURFACE_CURVE / INTERSECTION_CURVE's PCURVEs mapped through
 // the surfaces read from the file land on its 3D B-spline, and the surfaces are the scene's.
 TEST(StepReader, RoundTripThroughTheWriter) {
-  const Scene s = load_scene(std::string(SSIMARCH_SOURCE_DIR) + "/tests/io/data/step_round_trip.json");
+  const Scene s = load_scene(std::string(SSIMARCH_SOURCE_DIR) + "/tests/step/data/step_round_trip.json");
   std::vector<IntersectionRun> runs;
   for (const auto& spec : s.intersections) runs.push_back(run_intersection(s, spec));
   std::ostringstream os;

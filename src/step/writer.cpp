@@ -1,4 +1,4 @@
-#include "ssimarch/io/step_writer.hpp"
+#include "ssimarch/step/writer.hpp"
 
 #include <charconv>
 #include <map>
@@ -6,7 +6,7 @@
 #include <string>
 
 #include "ssimarch/core/error.hpp"
-#include "ssimarch/io/trace_writers.hpp"
+#include "ssimarch/pipeline/trace_job.hpp"
 #include "ssimarch/surface/frame.hpp"
 
 namespace ssimarch {
@@ -93,7 +93,8 @@ int add_bspline(StepData* d, const std::string& name, const BSplineCurve& b) {
 // Product, units and the two representation contexts; returns {3D context, 2D context, shape}.
 std::array<int, 3> add_frame(StepData* d, double tolerance) {
   const int app = d->add("APPLICATION_CONTEXT('managed model based 3d engineering')");
-  d->add("APPLICATION_PROTOCOL_DEFINITION('international standard','ap242_managed_model_based_3d_engineering',2014,", ref(app), ")");
+  d->add("APPLICATION_PROTOCOL_DEFINITION('international standard','ap242_managed_model_based_3d_engineering',2014,",
+         ref(app), ")");
   const int pc = d->add("PRODUCT_CONTEXT('',", ref(app), ",'mechanical')");
   const int product = d->add("PRODUCT('ssimarch','intersection curves','',", list(std::vector<int>{pc}, ref), ")");
   const int formation = d->add("PRODUCT_DEFINITION_FORMATION('','',", ref(product), ")");
@@ -103,16 +104,16 @@ std::array<int, 3> add_frame(StepData* d, double tolerance) {
   const int length = d->add("(LENGTH_UNIT()NAMED_UNIT(*)SI_UNIT(.MILLI.,.METRE.))");
   const int angle = d->add("(NAMED_UNIT(*)PLANE_ANGLE_UNIT()SI_UNIT($,.RADIAN.))");
   const int solid = d->add("(NAMED_UNIT(*)SI_UNIT($,.STERADIAN.)SOLID_ANGLE_UNIT())");
-  const int uncertainty = d->add("UNCERTAINTY_MEASURE_WITH_UNIT(LENGTH_MEASURE(", step_real(tolerance), "),", ref(length) +
-                                 ",'distance_accuracy_value','largest max_deviation of the curves')");
-  const int ctx3 = d->add("(GEOMETRIC_REPRESENTATION_CONTEXT(3)GLOBAL_UNCERTAINTY_ASSIGNED_CONTEXT((", ref(uncertainty) +
-                          "))GLOBAL_UNIT_ASSIGNED_CONTEXT((", ref(length), ",", ref(angle), ",", ref(solid) +
-                          "))REPRESENTATION_CONTEXT('3D','model space'))");
-  const int ctx2 = d->add("(GEOMETRIC_REPRESENTATION_CONTEXT(2)PARAMETRIC_REPRESENTATION_CONTEXT()REPRESENTATION_CONTEXT("
-                          "'2D','parameter space'))");
+  const int uncertainty = d->add("UNCERTAINTY_MEASURE_WITH_UNIT(LENGTH_MEASURE(", step_real(tolerance), "),",
+                                 ref(length) + ",'distance_accuracy_value','largest max_deviation of the curves')");
+  const int ctx3 = d->add("(GEOMETRIC_REPRESENTATION_CONTEXT(3)GLOBAL_UNCERTAINTY_ASSIGNED_CONTEXT((",
+                          ref(uncertainty) + "))GLOBAL_UNIT_ASSIGNED_CONTEXT((", ref(length), ",", ref(angle), ",",
+                          ref(solid) + "))REPRESENTATION_CONTEXT('3D','model space'))");
+  const int ctx2 = d->add(
+      "(GEOMETRIC_REPRESENTATION_CONTEXT(2)PARAMETRIC_REPRESENTATION_CONTEXT()REPRESENTATION_CONTEXT("
+      "'2D','parameter space'))");
   return {ctx3, ctx2, shape};
 }
-
 
 std::string reals(std::initializer_list<double> xs) { return list(std::vector<double>(xs), step_real); }
 
@@ -129,9 +130,8 @@ int add_placement(StepData* d, const Frame& f) {
 // A surface bounded to its domain (ISO 10303-42 §4.4.35): the parameters stay the basis's.
 int add_trimmed(StepData* d, const std::string& name, int basis, const ParamDomain& dom) {
   std::ostringstream o;
-  o << "RECTANGULAR_TRIMMED_SURFACE(" << step_string(name) << "," << ref(basis) << ","
-    << step_real(dom.u.lo) << "," << step_real(dom.u.hi) << "," << step_real(dom.v.lo) << "," << step_real(dom.v.hi)
-    << ",.T.,.T.)";
+  o << "RECTANGULAR_TRIMMED_SURFACE(" << step_string(name) << "," << ref(basis) << "," << step_real(dom.u.lo) << ","
+    << step_real(dom.u.hi) << "," << step_real(dom.v.lo) << "," << step_real(dom.v.hi) << ",.T.,.T.)";
   return d->add(o.str());
 }
 
@@ -188,20 +188,25 @@ int add_spline_surface(StepData* d, const std::string& name, const SplineSurface
 // spline surfaces whose control data the caller does not have (`spline`: null).
 int add_surface(StepData* d, const std::string& name, const Surface& surface, const SplineSurfaceData* spline) {
   const std::string n = step_string(name);
-  if (surface.get_if<BSplineSurface>() || surface.get_if<BezierPatch>()) return spline ? add_spline_surface(d, name, *spline) : 0;
+  if (surface.get_if<BSplineSurface>() || surface.get_if<BezierPatch>())
+    return spline ? add_spline_surface(d, name, *spline) : 0;
   if (const auto* p = surface.get_if<Plane>())
     return add_trimmed(d, name, d->add("PLANE(", n, ",", ref(add_placement(d, p->frame())), ")"), p->domain());
   if (const auto* c = surface.get_if<Cylinder>())
-    return add_trimmed(d, name, d->add("CYLINDRICAL_SURFACE(", n, ",", ref(add_placement(d, c->frame())), ",",
-                                       step_real(c->radius()), ")"), c->domain());
+    return add_trimmed(
+        d, name,
+        d->add("CYLINDRICAL_SURFACE(", n, ",", ref(add_placement(d, c->frame())), ",", step_real(c->radius()), ")"),
+        c->domain());
   if (const auto* c = surface.get_if<Cone>())  // placed at the apex with radius 0: v is ssimarch's
-    return add_trimmed(d, name, d->add("CONICAL_SURFACE(", n, ",", ref(add_placement(d, c->frame())), ",0.,",
-                                       step_real(c->half_angle()), ")"), c->domain());
+    return add_trimmed(
+        d, name,
+        d->add("CONICAL_SURFACE(", n, ",", ref(add_placement(d, c->frame())), ",0.,", step_real(c->half_angle()), ")"),
+        c->domain());
   if (const auto* s = surface.get_if<Sphere>())
     return d->add("SPHERICAL_SURFACE(", n, ",", ref(add_placement(d, s->frame())), ",", step_real(s->radius()), ")");
   if (const auto* t = surface.get_if<Torus>())
-    return d->add("TOROIDAL_SURFACE(", n, ",", ref(add_placement(d, t->frame())), ",", step_real(t->major_radius()), ",",
-                  step_real(t->minor_radius()), ")");
+    return d->add("TOROIDAL_SURFACE(", n, ",", ref(add_placement(d, t->frame())), ",", step_real(t->major_radius()),
+                  ",", step_real(t->minor_radius()), ")");
   return 0;
 }
 
@@ -264,7 +269,8 @@ void write_step(std::ostream& out, const std::vector<IntersectionRun>& runs, con
     for (std::size_t c = 0; c < r.splines.size(); ++c)
       if (r.splines[c]) curves.push_back(add_curve(&d, r, c, ctx2, &surface_ids, splines));
   const int set = d.add("GEOMETRIC_CURVE_SET('intersection curves',", list(curves, ref), ")");
-  const int rep = d.add("GEOMETRICALLY_BOUNDED_WIREFRAME_SHAPE_REPRESENTATION('ssimarch',(", ref(set), "),", ref(ctx3), ")");
+  const int rep =
+      d.add("GEOMETRICALLY_BOUNDED_WIREFRAME_SHAPE_REPRESENTATION('ssimarch',(", ref(set), "),", ref(ctx3), ")");
   d.add("SHAPE_DEFINITION_REPRESENTATION(", ref(shape), ",", ref(rep), ")");
   out << "ISO-10303-21;\nHEADER;\n"
       << "FILE_DESCRIPTION(('ssimarch intersection curves: certified B-splines and p-curves'),'2;1');\n"
