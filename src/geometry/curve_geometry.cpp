@@ -66,30 +66,38 @@ void CurveGeometry::reverse() {
 
 double normal_angle(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
 
-// Thesis §2.1, eqs 2.3-2.5 and 2.8 (kappa' as the arc-length derivative of eq 2.3).
+CurveGeometry frenet_frame(CurveGeometry g, const Vec3& curvature_vector, const Vec3* third_derivative,
+                           double zero_curvature) {
+  if (!(g.kappa > zero_curvature)) {
+    g.status = GeometryStatus::kZeroCurvature;
+    return g;
+  }
+  g.n = curvature_vector / g.kappa;
+  g.b = g.t.cross(g.n);
+  if (third_derivative) {
+    g.kappa_prime = third_derivative->dot(g.n);
+    g.tau = third_derivative->dot(g.b) / g.kappa;
+  }
+  g.status = GeometryStatus::kOk;
+  return g;
+}
+
+// Thesis §2.1, eqs 2.3-2.5 and 2.8: d/ds = (1/|c1|) d/du turns the parameter's derivatives into
+// the arc length's (docs/math/frenet.md).
 CurveGeometry frenet_from_derivatives(const Vec3& c1, const Vec3& c2, const Vec3& c3, const GeometryTolerances& tol) {
   CurveGeometry g;
-  double speed = c1.norm();
+  const double speed = c1.norm();
   if (!(c1.allFinite() && c2.allFinite() && c3.allFinite()) || speed == 0.0) {
     g.status = GeometryStatus::kNonFinite;
     return g;
   }
   g.t = c1 / speed;
-  Vec3 w = c1.cross(c2);
-  double wn = w.norm();
-  double s3 = speed * speed * speed;
-  g.kappa = wn / s3;
-  if (!(g.kappa >= tol.zero_curvature)) {
-    g.status = GeometryStatus::kZeroCurvature;
-    return g;
-  }
-  g.b = w / wn;
-  g.n = g.b.cross(g.t);
-  g.tau = w.dot(c3) / (wn * wn);
-  double dkappa_dparam = w.dot(c1.cross(c3)) / (wn * s3) - 3.0 * wn * c1.dot(c2) / (s3 * speed * speed);
-  g.kappa_prime = dkappa_dparam / speed;
-  g.status = GeometryStatus::kOk;
-  return g;
+  const Vec3 w = c1.cross(c2);
+  const double s2 = speed * speed, s3 = s2 * speed;
+  g.kappa = w.norm() / s3;
+  const Vec3 curvature_vector = w.cross(c1) / (s2 * s2);
+  const Vec3 third = c3 / s3 - 3.0 * c1.dot(c2) * c2 / (s3 * s2);
+  return frenet_frame(g, curvature_vector, &third, tol.zero_curvature);
 }
 
 CurveGeometry frenet_from_jet(const DynamicCurveJet& jet, double length_scale) {
@@ -102,19 +110,8 @@ CurveGeometry frenet_from_jet(const DynamicCurveJet& jet, double length_scale) {
   g.t = jet.alpha[1];
   const Vec3 alpha2 = jet.order >= 2 ? Vec3(2.0 * jet.alpha[2]) : Vec3::Zero();
   g.kappa = alpha2.norm();
-  if (!(g.kappa * length_scale > kStraightCurvature)) {
-    g.status = GeometryStatus::kZeroCurvature;
-    return g;
-  }
-  g.n = alpha2 / g.kappa;
-  g.b = g.t.cross(g.n);
-  if (jet.order >= 3) {
-    const Vec3 alpha3 = 6.0 * jet.alpha[3];
-    g.kappa_prime = alpha3.dot(g.n);
-    g.tau = alpha3.dot(g.b) / g.kappa;
-  }
-  g.status = GeometryStatus::kOk;
-  return g;
+  const Vec3 alpha3 = jet.order >= 3 ? Vec3(6.0 * jet.alpha[3]) : Vec3::Zero();
+  return frenet_frame(g, alpha2, jet.order >= 3 ? &alpha3 : nullptr, kStraightCurvature / length_scale);
 }
 
 }  // namespace ssimarch

@@ -44,22 +44,6 @@ TransversalStart start_transversal(const SurfaceLocal& first, const SurfaceLocal
   return s;
 }
 
-// Fills n, b, kappa', tau from c'', c''' (arc length) once kappa is known; kZeroCurvature stops.
-void finish_frame(CurveGeometry* g, const Vec3& c2, const GeometryTolerances& tol) {
-  if (!(g->kappa >= tol.zero_curvature)) {
-    g->status = GeometryStatus::kZeroCurvature;
-    return;
-  }
-  g->n = c2 / g->kappa;
-  g->b = g->t.cross(g->n);
-  g->status = GeometryStatus::kOk;
-}
-
-void finish_third(CurveGeometry* g, const Vec3& c3) {
-  g->kappa_prime = c3.dot(g->n);   // eq 3.24
-  g->tau = c3.dot(g->b) / g->kappa;  // eq 3.25 in the standard sign
-}
-
 Vec3 any_perpendicular(const Vec3& n) {
   Vec3 a = std::fabs(n.x()) < 0.6 ? Vec3::UnitX() : (std::fabs(n.y()) < 0.6 ? Vec3::UnitY() : Vec3::UnitZ());
   return (a - a.dot(n) * n).normalized();
@@ -91,7 +75,7 @@ CurveGeometry tangential_branch(const SurfaceLocal& first, const SurfaceLocal& s
   }
   Vec3 c2 = k * normal + (-f0 / f1) * m;
   g.kappa = c2.norm();
-  finish_frame(&g, c2, tol);
+  g = frenet_frame(g, c2, nullptr, tol.zero_curvature);
   if (g.status == GeometryStatus::kOk) g.status = GeometryStatus::kTangentialSecondOrder;
   return g;
 }
@@ -137,12 +121,9 @@ CurveGeometry ye_maekawa_transversal(const SurfaceLocal& first, const SurfaceLoc
   double k1 = normal_curvature(first, t, s.n1), k2 = normal_curvature(second, t, s.n2);
   Vec3 c2 = ((k1 - k2 * c) * s.n1 + (k2 - k1 * c) * s.n2) / s.sin2_theta;  // eq 3.14
   g.kappa = std::sqrt(std::max(0.0, k1 * k1 + k2 * k2 - 2 * k1 * k2 * c) / s.sin2_theta);  // eq 3.15
-  finish_frame(&g, c2, tol);
-  if (g.status != GeometryStatus::kOk) return g;
   double l1 = third_normal(first, t, c2, s.n1), l2 = third_normal(second, t, c2, s.n2);
   Vec3 c3 = -g.kappa * g.kappa * t + ((l1 - l2 * c) * s.n1 + (l2 - l1 * c) * s.n2) / s.sin2_theta;  // eq 3.23
-  finish_third(&g, c3);
-  return g;
+  return frenet_frame(g, c2, &c3, tol.zero_curvature);
 }
 
 // Thesis ch. 3, eqs 3.8-3.9 (Stoyanov).
@@ -158,12 +139,9 @@ CurveGeometry stoyanov(const SurfaceLocal& first, const SurfaceLocal& second, co
   Vec2 a = lu.solve(Vec2(normal_curvature(first, t, s.n1), normal_curvature(second, t, s.n2)));
   Vec3 c2 = a[0] * s.n1 + a[1] * s.n2;
   g.kappa = c2.norm();
-  finish_frame(&g, c2, tol);
-  if (g.status != GeometryStatus::kOk) return g;
   Vec2 beta = lu.solve(Vec2(third_normal(first, t, c2, s.n1), third_normal(second, t, c2, s.n2)));
   Vec3 c3 = -g.kappa * g.kappa * t + beta[0] * s.n1 + beta[1] * s.n2;
-  finish_third(&g, c3);
-  return g;
+  return frenet_frame(g, c2, &c3, tol.zero_curvature);
 }
 
 // Seed 004 §4, eqs 4.7-4.15, 4.21-4.23 (Willmore's operator).
@@ -186,7 +164,7 @@ CurveGeometry willmore(const ImplicitLocal& f, const ImplicitLocal& g, const Vec
   r.t = h / hn;
   r.kappa = kn / (hn * hn * hn);  // eq 4.14
   Vec3 c2 = k.cross(h) / (hn * hn * hn * hn);  // eq 4.15
-  finish_frame(&r, c2, tol);
+  r = frenet_frame(r, c2, nullptr, tol.zero_curvature);
   if (r.status == GeometryStatus::kOk) {
     r.tau = -delta_h.dot(delta_k) / (kn * kn);  // eq 4.23
     r.kappa_prime = (k.dot(delta_k) / (kn * hn * hn * hn) - 3.0 * kn * h.dot(delta_h) / std::pow(hn, 5)) / hn;
@@ -329,7 +307,7 @@ std::vector<CurveGeometry> ye_maekawa_tangential_thesis(const ParametricLocal& F
     Vec2 w2 = lu.solve(rhs);
     Vec3 c2 = F.fuu * u1 * u1 + 2 * F.fuv * u1 * v1 + F.fvv * v1 * v1 + F.fu * w2[0] + F.fv * w2[1];  // eq 3.16
     g.kappa = c2.norm();
-    finish_frame(&g, c2, tol);
+    g = frenet_frame(g, c2, nullptr, tol.zero_curvature);
     if (g.status == GeometryStatus::kOk) g.status = GeometryStatus::kTangentialSecondOrder;
     out.push_back(g);
   }

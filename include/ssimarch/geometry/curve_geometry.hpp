@@ -107,12 +107,24 @@ struct CurveGeometry {
   void reverse();
 };
 
+/// The one Frenet builder (thesis §2.1, eqs 2.3-2.5; ch. 3, eqs 3.24-3.25): from `g` with its unit
+/// tangent t and curvature kappa set, the curvature vector c2 = kappa n of an arc-length
+/// parametrisation and, when known, its third derivative c3 (its part along t is not used):
+///   n = c2/kappa, b = t x n, kappa' = c3.n, tau = c3.b/kappa (the standard sign).
+/// kappa is |c2| unless the caller has a more accurate value (Ye-Maekawa's eq 3.15). Status kOk,
+/// or kZeroCurvature where !(kappa > zero_curvature) (curvature units): n, b, kappa', tau stay NaN.
+/// Every Frenet frame of the library is built here: from derivatives in any parameter, from
+/// arc-length jets, and by the intersection formulas (geometry/intersection_geometry.hpp).
+CurveGeometry frenet_frame(CurveGeometry g, const Vec3& curvature_vector, const Vec3* third_derivative,
+                           double zero_curvature);
+
 /// Frenet data of a curve from its first three derivatives with respect to any regular
-/// parameter (thesis §2.1, eqs 2.3-2.5, 2.8):
-///   kappa = |c1 x c2| / |c1|^3, tau = (c1 x c2).c3 / |c1 x c2|^2, b = unit(c1 x c2), n = b x t,
+/// parameter (thesis §2.1, eqs 2.3-2.5, 2.8), through frenet_frame with the arc-length derivatives
+///   t = c1/|c1|, d2c/ds2 = (c1 x c2) x c1 / |c1|^4, d3c/ds3 = c3/|c1|^3 - 3 (c1.c2) c2/|c1|^5 (mod t),
+/// which give kappa = |c1 x c2| / |c1|^3, tau = (c1 x c2).c3 / |c1 x c2|^2, b = unit(c1 x c2) and
 ///   kappa' = [ (w.(c1 x c3)) / (|w| |c1|^3) - 3 |w| (c1.c2) / |c1|^5 ] / |c1|,  w = c1 x c2
-/// (the derivative of eq 2.3 along the curve, divided by the speed). theta is left NaN.
-/// Status kOk, kZeroCurvature (kappa < tol.zero_curvature) or kNonFinite (c1 = 0 or not finite).
+/// (derivation: docs/math/frenet.md). theta is left NaN. Status kOk, kZeroCurvature (kappa <=
+/// tol.zero_curvature) or kNonFinite (c1 = 0 or not finite).
 CurveGeometry frenet_from_derivatives(const Vec3& c1, const Vec3& c2, const Vec3& c3,
                                       const GeometryTolerances& tol = {});
 
