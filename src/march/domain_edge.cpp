@@ -115,55 +115,6 @@ UnknownVec settle_inside(const Problem& P, const std::vector<Slab>& trims, Unkno
 
 }  // namespace
 
-// Newton on the square system [H(x); normal . point(x) - offset], Jacobian [J_H; normal^T DP(x)]:
-// the curve point on a trim's face (docs/math/poles.md §2), as solve_with_fixed_unknown lands on
-// a parameter bound.
-CorrectorResult solve_on_plane(const Problem& P, const UnknownVec& guess, const Vec3& normal, double offset,
-                               const CorrectorOptions& co) {
-  CorrectorResult r;
-  r.x = guess;
-  const int n = P.dim();
-  auto converged = [&](const Linearization& L) {
-    return L.distance <= co.tolerance && std::fabs(normal.dot(L.point) - offset) <= co.tolerance;
-  };
-  // One Newton step past the tolerance: a curve meeting the plane at a shallow angle has its end
-  // point fixed along the curve only to (residual / sin angle); the extra step of a quadratically
-  // converging iteration brings it to rounding level, so both surface orders land on one point.
-  bool polish = false;
-  for (int it = 1; it <= co.max_iterations + 2; ++it) {
-    const Linearization L = P.linearize(r.x);
-    ++r.linearizations;
-    ++r.evaluations[0];
-    ++r.evaluations[1];
-    r.distance = L.distance;
-    if (!L.h.allFinite() || !L.jacobian.allFinite()) break;
-    if (it > 1 && converged(L)) {
-      if (polish) {
-        r.status = CorrectorStatus::kConverged;
-        return r;
-      }
-      polish = true;
-    } else if (it > co.max_iterations) {
-      break;
-    }
-    UnknownMat A(n, n);
-    A.topRows(n - 1) = L.jacobian;
-    A.row(n - 1) = (L.point_jacobian.transpose() * normal).transpose();
-    UnknownVec rhs(n);
-    rhs.head(n - 1) = L.h;
-    rhs[n - 1] = normal.dot(L.point) - offset;
-    const Eigen::FullPivLU<UnknownMat> lu(A);
-    if (!lu.isInvertible()) {
-      r.status = CorrectorStatus::kSingular;
-      return r;
-    }
-    r.x -= lu.solve(rhs);
-    r.iterations = it;
-  }
-  r.status = CorrectorStatus::kDiverged;
-  return r;
-}
-
 int bound_left_at(const Problem& P, const UnknownVec& x, const UnknownVec& dx) {
   for (int i = 0; i < P.dim() && i < dx.size(); ++i) {
     if (P.periods()[static_cast<std::size_t>(i)] > 0) continue;
@@ -238,7 +189,7 @@ std::optional<UnknownVec> onto_trims(const Problem& P, const UnknownVec& x, cons
     const double lo = trims[i].range.lo - s, hi = s - trims[i].range.hi;
     if (std::max(lo, hi) > farthest) farthest = std::max(lo, hi), k = i, value = lo > hi ? trims[i].range.lo : trims[i].range.hi;
   }
-  const CorrectorResult r = internal::solve_on_plane(P, x, trims[k].normal, value, co);
+  const CorrectorResult r = solve_on_plane(P, x, trims[k].normal, value, co);
   if (r.status != CorrectorStatus::kConverged) return std::nullopt;
   const UnknownVec y = internal::settle_inside(P, trims, r.x, co, nullptr);
   if (!P.inside(y, 1e-9 * (1 + std::fabs(value)))) return std::nullopt;

@@ -53,11 +53,6 @@ int bound_left_at(const Problem& problem, const UnknownVec& x, const UnknownVec&
 /// boundary), or nullptr.
 const Pole* crossed_pole(const Problem& problem, const std::vector<Pole>& poles, const CurvePoint& cur, const UnknownVec& x1);
 
-/// Newton on [H(x); normal . point(x) - offset]: the curve point on that plane (a trim's face,
-/// the plane beyond a pole).
-CorrectorResult solve_on_plane(const Problem& problem, const UnknownVec& guess, const Vec3& normal, double offset,
-                               const CorrectorOptions& co);
-
 /// Whether the march closed: the start lies on the chord cur.p -> p1 within twice the chord's
 /// sagitta (from the turn cur.t -> t1) plus `slack` (model units), and the tangents agree.
 bool closes_loop(const CurvePoint& start, const CurvePoint& cur, const Vec3& p1, const Vec3& t1, double slack);

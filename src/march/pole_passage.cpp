@@ -131,7 +131,7 @@ std::optional<CurvePoint> corrected_beyond(const Problem& P, const Pole& pole, c
   // Corrected in the plane through q normal to dir (Allgower & Georg's pseudo-arclength
   // corrector): a free minimum-norm correction near the pole slides along the badly scaled
   // parameter towards P, the plane keeps the point at its distance beyond P.
-  const CorrectorResult c = internal::solve_on_plane(P, y, dir, dir.dot(q), co);
+  const CorrectorResult c = solve_on_plane(P, y, dir, dir.dot(q), co);
   if (c.status != CorrectorStatus::kConverged || !P.inside(c.x)) return std::nullopt;
   const Vec3 p = P.point(c.x);
   if ((p - q).norm() > 0.5 * distance || (p - pole.point).dot(dir) <= 0) return std::nullopt;

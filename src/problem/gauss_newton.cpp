@@ -65,30 +65,53 @@ CorrectorResult gauss_newton(const Problem& problem, const UnknownVec& guess, co
   return r;
 }
 
-CorrectorResult solve_with_fixed_unknown(const Problem& problem, const UnknownVec& guess, int i, double value,
-                                         const CorrectorOptions& options) {
+namespace {
+
+double side_residual(const SideCondition& side, const Linearization& L, const UnknownVec& x) {
+  return side.kind == SideCondition::Kind::kPlane ? side.normal.dot(L.point) - side.value
+                                                  : x[side.unknown] - side.value;
+}
+
+bool side_satisfied(const SideCondition& side, const Linearization& L, double tolerance) {
+  return side.kind == SideCondition::Kind::kFixedUnknown ||
+         std::fabs(side.normal.dot(L.point) - side.value) <= tolerance;
+}
+
+}  // namespace
+
+CorrectorResult constrained_newton(const Problem& problem, const UnknownVec& guess, const SideCondition& side,
+                                   const CorrectorOptions& options, bool polish) {
   CorrectorResult r;
   r.x = guess;
-  r.x[i] = value;
   const int n = problem.dim();
-  for (int it = 1; it <= options.max_iterations; ++it) {
-    Linearization L = problem.linearize(r.x);
+  bool polishing = false;
+  for (int it = 1; it <= options.max_iterations + 1 + (polish ? 1 : 0); ++it) {
+    const Linearization L = problem.linearize(r.x);
     ++r.linearizations;
     ++r.evaluations[0];
     ++r.evaluations[1];
     r.distance = L.distance;
     if (!L.h.allFinite() || !L.jacobian.allFinite()) break;
-    if (L.distance <= options.tolerance && it > 1) {
-      r.status = CorrectorStatus::kConverged;
-      return r;
+    if (it > 1 && L.distance <= options.tolerance && side_satisfied(side, L, options.tolerance)) {
+      if (!polish || polishing) {
+        r.status = CorrectorStatus::kConverged;
+        return r;
+      }
+      polishing = true;
+    } else if (it > options.max_iterations) {
+      break;
     }
     UnknownMat A(n, n);
     A.topRows(n - 1) = L.jacobian;
-    A.row(n - 1).setZero();
-    A(n - 1, i) = 1.0;
+    if (side.kind == SideCondition::Kind::kPlane) {
+      A.row(n - 1) = (L.point_jacobian.transpose() * side.normal).transpose();
+    } else {
+      A.row(n - 1).setZero();
+      A(n - 1, side.unknown) = 1.0;
+    }
     UnknownVec rhs(n);
     rhs.head(n - 1) = L.h;
-    rhs[n - 1] = r.x[i] - value;
+    rhs[n - 1] = side_residual(side, L, r.x);
     const Eigen::FullPivLU<UnknownMat> lu(A);
     if (!lu.isInvertible()) {
       r.status = CorrectorStatus::kSingular;
@@ -97,13 +120,20 @@ CorrectorResult solve_with_fixed_unknown(const Problem& problem, const UnknownVe
     r.x -= lu.solve(rhs);
     r.iterations = it;
   }
-  Linearization L = problem.linearize(r.x);
-  ++r.linearizations;
-  ++r.evaluations[0];
-  ++r.evaluations[1];
-  r.distance = L.distance;
-  r.status = L.distance <= options.tolerance ? CorrectorStatus::kConverged : CorrectorStatus::kDiverged;
+  r.status = CorrectorStatus::kDiverged;
   return r;
+}
+
+CorrectorResult solve_with_fixed_unknown(const Problem& problem, const UnknownVec& guess, int i, double value,
+                                         const CorrectorOptions& options) {
+  UnknownVec start = guess;
+  start[i] = value;
+  return constrained_newton(problem, start, SideCondition::fixed_unknown(i, value), options);
+}
+
+CorrectorResult solve_on_plane(const Problem& problem, const UnknownVec& guess, const Vec3& normal, double offset,
+                               const CorrectorOptions& options) {
+  return constrained_newton(problem, guess, SideCondition::plane(normal, offset), options, /*polish=*/true);
 }
 
 }  // namespace ssimarch

@@ -57,9 +57,38 @@ class ConvergenceRule {
 /// iteration count is >= 1 and its residual is that of a corrected point.
 CorrectorResult gauss_newton(const Problem& problem, const UnknownVec& guess, const CorrectorOptions& options);
 
-/// Newton on the square system [H(x); x_i - value] (n equations): the point of the curve
-/// where unknown i equals `value` (used to land exactly on a domain edge).
+/// The one equation that, added to H(x) = 0, makes the system square and picks one point of the
+/// curve: an unknown fixed at a value (a parameter bound), or the point on a plane
+/// normal . point(x) = offset (a trim's face, the plane beyond a pole).
+struct SideCondition {
+  enum class Kind { kFixedUnknown, kPlane };
+  Kind kind = Kind::kFixedUnknown;
+  int unknown = 0;              ///< kFixedUnknown: which
+  Vec3 normal = Vec3::UnitZ();  ///< kPlane: unit normal
+  double value = 0;             ///< the unknown's value, or the plane's offset (model units)
+
+  static SideCondition fixed_unknown(int i, double value) { return {Kind::kFixedUnknown, i, Vec3::UnitZ(), value}; }
+  static SideCondition plane(const Vec3& normal, double offset) { return {Kind::kPlane, 0, normal, offset}; }
+};
+
+/// Newton on the square system [H(x); c(x)] with c the side condition (Jacobian [J_H; grad c]):
+/// converged when the linearization's distance and, for a plane, |normal . point - offset| are
+/// both <= tolerance after at least one update (a fixed unknown is linear: each update keeps it to
+/// rounding, so only the distance is judged). `polish`: one update more past convergence, for a
+/// curve meeting the plane at a shallow angle, whose point along the curve is fixed only to
+/// residual / sin(angle); the extra step of a quadratically converging iteration brings it to
+/// rounding, so both surface orders land on one point. kSingular when the square Jacobian is.
+CorrectorResult constrained_newton(const Problem& problem, const UnknownVec& guess, const SideCondition& side,
+                                   const CorrectorOptions& options, bool polish = false);
+
+/// constrained_newton with unknown i fixed at `value` (starting from the guess with x_i = value):
+/// the point of the curve on a domain edge.
 CorrectorResult solve_with_fixed_unknown(const Problem& problem, const UnknownVec& guess, int i, double value,
                                          const CorrectorOptions& options);
+
+/// constrained_newton on the plane normal . point = offset, polished: the point of the curve on a
+/// trim's face (docs/math/poles.md §2) or on the plane beyond a pole.
+CorrectorResult solve_on_plane(const Problem& problem, const UnknownVec& guess, const Vec3& normal, double offset,
+                               const CorrectorOptions& options);
 
 }  // namespace ssimarch
