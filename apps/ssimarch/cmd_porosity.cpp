@@ -1,6 +1,8 @@
 // `ssimarch porosity`: exact porosity profiles of a packing file (issue 5). Argument parsing and
 // output only; the run itself is the library's porosity job (pipeline/porosity_job.hpp). See
 // docs/porosity.md.
+#include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -47,15 +49,15 @@ const std::map<std::string, std::string> kFlagOfJobField = {
 
 std::pair<double, double> parse_pair(const std::string& s, const char* opt) {
   const auto comma = s.find(',');
-  if (comma == std::string::npos) throw CliError(std::string(opt) + " expects two comma-separated numbers, got '" + s + "'");
-  try {
-    std::size_t p1 = 0, p2 = 0;
-    const double a = std::stod(s.substr(0, comma), &p1), b = std::stod(s.substr(comma + 1), &p2);
-    if (p1 != comma || p2 != s.size() - comma - 1) throw std::invalid_argument("trailing");
-    return {a, b};
-  } catch (const std::exception&) {
-    throw CliError(std::string(opt) + " expects two comma-separated numbers, got '" + s + "'");
-  }
+  double a = 0, b = 0;
+  const char* end = s.data() + s.size();
+  const auto ra = std::from_chars(s.data(), s.data() + std::min(comma, s.size()), a);
+  const bool ok = comma != std::string::npos && ra.ec == std::errc() && ra.ptr == s.data() + comma && [&] {
+    const auto rb = std::from_chars(s.data() + comma + 1, end, b);
+    return rb.ec == std::errc() && rb.ptr == end;
+  }();
+  if (!ok) throw CliError(std::string(opt) + " expects two comma-separated numbers, got '" + s + "'");
+  return {a, b};
 }
 
 // CSV or VTK XML (io/porosity_outputs.hpp) by --format, or else by -o's extension.

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "ssimarch/core/contract.hpp"
 #include "ssimarch/step/writer.hpp"
 #include "ssimarch/io/output_files.hpp"
 #include "ssimarch/io/svg_plot.hpp"
@@ -73,7 +74,7 @@ void write_runs(const std::vector<IntersectionRun>& runs, OutputFormat format, c
     case OutputFormat::kObj: write_obj(out, runs); break;
     case OutputFormat::kStep: write_step(out, runs, scene); break;
     case OutputFormat::kHtml:
-      if (!scene) throw std::logic_error("write_runs: an HTML page needs the scene");
+      SSIMARCH_EXPECTS(scene, "write_runs: an HTML page needs the scene");
       write_trace_page(out, runs, *scene, runs.size() == 1 ? runs[0].spec.name : scene->source);
       break;
     case OutputFormat::kSvg:

@@ -154,6 +154,48 @@ std::pair<Vec3, Vec3> RuledCurves::point_and_derivative(const RuledLoop& loop, d
   return {Vec3(here.x, here.y, here.z), Vec3(ahead.x - behind.x, ahead.y - behind.y, ahead.z - behind.z) / (2 * h)};
 }
 
+namespace {
+
+// The loops of a section whose crossings are known: between consecutive simple roots of Delta
+// where Delta > 0, or, without simple roots, the whole circle once or twice (a closed curve that
+// changes sheet an odd number of times runs round twice). A crossing changes sheet where the root
+// has multiplicity 2 (Delta'' > 0); at a root of multiplicity 4 the square root keeps its sign.
+void add_loops(RuledSection* out, std::vector<double> simple, const TrigPolynomial& delta, const TrigPolynomial& delta2,
+               double zero) {
+  std::vector<double> switching;
+  for (double t : out->crossings)
+    if (delta2(t) > zero) switching.push_back(t);
+  std::sort(simple.begin(), simple.end());
+  if (simple.empty()) {
+    const int k = static_cast<int>(switching.size());
+    RuledLoop loop;
+    loop.arc = false;
+    loop.lo = 0;
+    loop.switches = switching;
+    loop.turns = k % 2 == 0 ? 1 : 2;
+    out->loops.push_back(loop);
+    if (k % 2 == 0) {
+      loop.sign = -1;
+      out->loops.push_back(loop);
+    }
+    return;
+  }
+  for (std::size_t i = 0; i < simple.size(); ++i) {
+    const double lo = simple[i], hi = i + 1 < simple.size() ? simple[i + 1] : simple[0] + kTwoPi;
+    if (!(delta(0.5 * (lo + hi)) > 0)) continue;
+    RuledLoop loop;
+    loop.lo = lo;
+    loop.hi = hi;
+    for (double t : switching) {
+      const double u = t < lo ? t + kTwoPi : t;
+      if (u > lo && u < hi) loop.switches.push_back(u);
+    }
+    out->loops.push_back(loop);
+  }
+}
+
+}  // namespace
+
 std::optional<RuledSection> RuledCurves::section() const {
   // a, b, c and Delta = b^2 - 4 a c as trigonometric polynomials in theta (a, c: quadratic forms
   // of the rulings' A and D, degree 2; b: a bilinear one): exact coefficients, so the roots and
@@ -224,38 +266,7 @@ std::optional<RuledSection> RuledCurves::section() const {
     out.crossings.clear();
     return out;
   }
-  // Which crossings change sheet: multiplicity 2 (Delta'' != 0); at a root of multiplicity 4 the
-  // square root keeps its sign.
-  std::vector<double> switching;
-  for (double t : out.crossings)
-    if (disc_jet(t).second > zero) switching.push_back(t);
-  std::sort(simple.begin(), simple.end());
-  if (simple.empty()) {
-    const int k = static_cast<int>(switching.size());
-    RuledLoop loop;
-    loop.arc = false;
-    loop.lo = 0;
-    loop.switches = switching;
-    loop.turns = k % 2 == 0 ? 1 : 2;
-    out.loops.push_back(loop);
-    if (k % 2 == 0) {
-      loop.sign = -1;
-      out.loops.push_back(loop);
-    }
-    return covers_no_gap(out, disc, zero) ? std::optional<RuledSection>(out) : std::nullopt;
-  }
-  for (std::size_t i = 0; i < simple.size(); ++i) {
-    const double lo = simple[i], hi = i + 1 < simple.size() ? simple[i + 1] : simple[0] + kTwoPi;
-    if (!(disc(0.5 * (lo + hi)) > 0)) continue;
-    RuledLoop loop;
-    loop.lo = lo;
-    loop.hi = hi;
-    for (double t : switching) {
-      const double u = t < lo ? t + kTwoPi : t;
-      if (u > lo && u < hi) loop.switches.push_back(u);
-    }
-    out.loops.push_back(loop);
-  }
+  add_loops(&out, std::move(simple), delta, delta2, zero);
   return covers_no_gap(out, disc, zero) ? std::optional<RuledSection>(out) : std::nullopt;
 }
 

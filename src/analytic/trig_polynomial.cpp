@@ -10,6 +10,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "ssimarch/core/contract.hpp"
 #include "ssimarch/problem/closed_form_tolerances.hpp"
 
 namespace ssimarch {
@@ -101,7 +102,7 @@ TrigPolynomial operator-(const TrigPolynomial& f, const TrigPolynomial& g) { ret
 TrigPolynomial operator*(const TrigPolynomial& f, const TrigPolynomial& g) {
   // The product's exponential coefficients are the convolution of the factors'.
   const int nf = f.degree(), ng = g.degree();
-  if (nf + ng > TrigPolynomial::kMaxDegree) throw std::invalid_argument("trigonometric polynomial product above degree 4");
+  SSIMARCH_EXPECTS(nf + ng <= TrigPolynomial::kMaxDegree, "trigonometric polynomial product above degree 4");
   const auto F = exponential_coefficients(f, nf), G = exponential_coefficients(g, ng);
   TrigPolynomial h;
   for (int m = 0; m <= nf + ng; ++m) {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "ssimarch/core/contract.hpp"
+
 namespace ssimarch {
 
 VecX BSplineCurve::at(double t) const {
@@ -121,10 +123,10 @@ BSplineCurve periodic_form(const std::vector<QuinticPiece>& pieces) {
 }  // namespace
 
 BSplineCurve bspline_from_pieces(const std::vector<QuinticPiece>& pieces, const std::vector<int>& continuity, bool periodic) {
-  if (pieces.empty()) throw std::invalid_argument("bspline_from_pieces: no pieces");
+  SSIMARCH_EXPECTS(!pieces.empty(), "bspline_from_pieces: no pieces");
   if (!periodic) return clamped(pieces, continuity);
-  if (std::any_of(continuity.begin(), continuity.end(), [](int c) { return c < 2; }))
-    throw std::invalid_argument("bspline_from_pieces: a periodic spline needs C2 joins everywhere");
+  SSIMARCH_EXPECTS(std::none_of(continuity.begin(), continuity.end(), [](int c) { return c < 2; }),
+                   "bspline_from_pieces: a periodic spline needs C2 joins everywhere");
   return periodic_form(pieces);
 }
 

@@ -7,6 +7,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "ssimarch/core/contract.hpp"
 #include "ssimarch/problem/curve_jet.hpp"
 #include "ssimarch/problem/gauss_newton.hpp"
 #include "ssimarch/surface/derivatives.hpp"
@@ -302,8 +303,8 @@ void start_at_singular_point(std::vector<Node>* nodes) {
 CurveSpline fit_curve_spline(const Problem& problem, const std::vector<VecX>& points, const std::vector<Vec3>& tangents,
                              bool closed, const CurveSplineOptions& options,
                              const std::vector<std::vector<Vec3>>* half_branches) {
-  if (points.size() < 2 || tangents.size() != points.size())
-    throw std::invalid_argument("fit_curve_spline: needs >= 2 points, each with a tangent");
+  SSIMARCH_EXPECTS(points.size() >= 2 && tangents.size() == points.size(),
+                   "fit_curve_spline: needs >= 2 points, each with a tangent");
   const auto started = std::chrono::steady_clock::now();
   const int n = problem.dim();
   std::vector<Node> nodes;
@@ -322,7 +323,7 @@ CurveSpline fit_curve_spline(const Problem& problem, const std::vector<VecX>& po
   nodes.erase(std::unique(nodes.begin(), nodes.end(),
                           [](const Node& a, const Node& b) { return a.end.value.head<3>() == b.end.value.head<3>(); }),
               nodes.end());
-  if (nodes.size() < 2) throw std::invalid_argument("fit_curve_spline: the points coincide");
+  SSIMARCH_EXPECTS(nodes.size() >= 2, "fit_curve_spline: the points coincide");
   Fit fit{problem, options, options.tolerance > 0 ? options.tolerance : 1e-9 * problem.scale(), n, {}, {}, {}, {}, 0, 0};
   for (std::size_t i = 0; i + 1 < nodes.size(); ++i) {
     if (i > 0) fit.joins.push_back(nodes[i].regular ? 2 : 0);

@@ -221,6 +221,63 @@ std::vector<CurveGeometry> ye_maekawa_tangential(const SurfaceLocal& first, cons
   return out;
 }
 
+namespace {
+
+// The coefficients of thesis ch. 3 at a tangential point of two parametric surfaces with common
+// normal N: G's parameter velocities (p', q') = A (u', v') (eq 3.4, D = (G_p x G_q).N) and both
+// surfaces' second fundamental forms along N.
+struct ThesisTangentialData {
+  double D, a11, a12, a21, a22;
+  double LF, MF, NF, LG, MG, NG;
+};
+
+// One branch of eqs 3.16-3.22 along the direction w = (u', v') (any scale): its unit tangent and
+// the curvature vector c'' from the 2 x 2 system of eqs 3.21-3.22 (a13 sign and eq 3.18 corrected).
+CurveGeometry thesis_tangential_branch(const ParametricLocal& F, const ParametricLocal& G, const Vec3& N,
+                                       const ThesisTangentialData& c, Vec2 w, double theta, const Vec3* orientation,
+                                       const GeometryTolerances& tol) {
+  const Vec3& Gp = G.fu;
+  const Vec3& Gq = G.fv;
+  Vec3 dir = w[0] * F.fu + w[1] * F.fv;
+  w /= dir.norm();  // |u' F_u + v' F_v| = 1
+  if (orientation && dir.dot(*orientation) < 0) w = -w;
+  double u1 = w[0], v1 = w[1];
+  Vec3 t = u1 * F.fu + v1 * F.fv;
+  double p1 = c.a11 * u1 + c.a12 * v1, q1 = c.a21 * u1 + c.a22 * v1;
+  Vec3 delta = G.fuu * p1 * p1 + 2 * G.fuv * p1 * q1 + G.fvv * q1 * q1 - F.fuu * u1 * u1 - 2 * F.fuv * u1 * v1 -
+               F.fvv * v1 * v1;                // eq 3.17
+  double a13 = -delta.cross(Gq).dot(N) / c.D;  // eq 3.19, corrected sign
+  double a23 = -Gp.cross(delta).dot(N) / c.D;  // eq 3.20
+  double IIIF = F.fuuu.dot(N) * u1 * u1 * u1 + 3 * F.fuuv.dot(N) * u1 * u1 * v1 + 3 * F.fuvv.dot(N) * u1 * v1 * v1 +
+                F.fvvv.dot(N) * v1 * v1 * v1;
+  double IIIG = G.fuuu.dot(N) * p1 * p1 * p1 + 3 * G.fuuv.dot(N) * p1 * p1 * q1 + 3 * G.fuvv.dot(N) * p1 * q1 * q1 +
+                G.fvvv.dot(N) * q1 * q1 * q1;
+  // eq 3.21 with p'' = a11 u'' + a12 v'' + a13, q'' = a21 u'' + a22 v'' + a23 (eq 3.18).
+  Eigen::Matrix2d A;
+  A << 3 * (c.LF * u1 + c.MF * v1) - 3 * (c.LG * p1 * c.a11 + c.MG * (c.a11 * q1 + p1 * c.a21) + c.NG * q1 * c.a21),
+      3 * (c.MF * u1 + c.NF * v1) - 3 * (c.LG * p1 * c.a12 + c.MG * (c.a12 * q1 + p1 * c.a22) + c.NG * q1 * c.a22),
+      F.fu.dot(t), F.fv.dot(t);  // eq 3.22
+  Vec2 rhs(IIIG - IIIF + 3 * (c.LG * p1 * a13 + c.MG * (a13 * q1 + p1 * a23) + c.NG * q1 * a23),
+           -(F.fuu.dot(t) * u1 * u1 + 2 * F.fuv.dot(t) * u1 * v1 + F.fvv.dot(t) * v1 * v1));
+  CurveGeometry g;
+  g.point = F.p;
+  g.theta = theta;
+  g.t = t;
+  Eigen::FullPivLU<Eigen::Matrix2d> lu(A);
+  if (!lu.isInvertible()) {
+    g.status = GeometryStatus::kHigherOrderContact;
+    return g;
+  }
+  Vec2 w2 = lu.solve(rhs);
+  Vec3 c2 = F.fuu * u1 * u1 + 2 * F.fuv * u1 * v1 + F.fvv * v1 * v1 + F.fu * w2[0] + F.fv * w2[1];  // eq 3.16
+  g.kappa = c2.norm();
+  g = frenet_frame(g, c2, nullptr, tol.zero_curvature);
+  if (g.status == GeometryStatus::kOk) g.status = GeometryStatus::kTangentialSecondOrder;
+  return g;
+}
+
+}  // namespace
+
 // Thesis ch. 3 (eqs 3.3-3.6, b12 corrected; eqs 3.16-3.22, a13 sign and eq 3.18 corrected;
 // docs/geometry.md).
 std::vector<CurveGeometry> ye_maekawa_tangential_thesis(const ParametricLocal& F, const ParametricLocal& G,
@@ -232,18 +289,21 @@ std::vector<CurveGeometry> ye_maekawa_tangential_thesis(const ParametricLocal& F
   const Vec3& N = n1;
   const Vec3& Gp = G.fu;
   const Vec3& Gq = G.fv;
-  double D = Gp.cross(Gq).dot(N);
-  double a11 = F.fu.cross(Gq).dot(N) / D, a12 = F.fv.cross(Gq).dot(N) / D;  // eq 3.4
-  double a21 = Gp.cross(F.fu).dot(N) / D, a22 = Gp.cross(F.fv).dot(N) / D;
-  double LF = F.fuu.dot(N), MF = F.fuv.dot(N), NF = F.fvv.dot(N);
-  double LG = G.fuu.dot(N), MG = G.fuv.dot(N), NG = G.fvv.dot(N);
-  double b11 = a11 * a11 * LG + 2 * a11 * a21 * MG + a21 * a21 * NG - LF;  // eq 3.5
-  double b12 = a11 * a12 * LG + (a11 * a22 + a21 * a12) * MG + a21 * a22 * NG - MF;
-  double b22 = a12 * a12 * LG + 2 * a12 * a22 * MG + a22 * a22 * NG - NF;
+  ThesisTangentialData c;
+  c.D = Gp.cross(Gq).dot(N);
+  c.a11 = F.fu.cross(Gq).dot(N) / c.D, c.a12 = F.fv.cross(Gq).dot(N) / c.D;  // eq 3.4
+  c.a21 = Gp.cross(F.fu).dot(N) / c.D, c.a22 = Gp.cross(F.fv).dot(N) / c.D;
+  c.LF = F.fuu.dot(N), c.MF = F.fuv.dot(N), c.NF = F.fvv.dot(N);
+  c.LG = G.fuu.dot(N), c.MG = G.fuv.dot(N), c.NG = G.fvv.dot(N);
+  const double a11 = c.a11, a12 = c.a12, a21 = c.a21, a22 = c.a22;
+  double b11 = a11 * a11 * c.LG + 2 * a11 * a21 * c.MG + a21 * a21 * c.NG - c.LF;  // eq 3.5
+  double b12 = a11 * a12 * c.LG + (a11 * a22 + a21 * a12) * c.MG + a21 * a22 * c.NG - c.MF;
+  double b22 = a12 * a12 * c.LG + 2 * a12 * a22 * c.MG + a22 * a22 * c.NG - c.NF;
   const Vec3 p = F.p;
-  double size = std::max({std::fabs(LF), std::fabs(MF), std::fabs(NF), std::fabs(LG), std::fabs(MG), std::fabs(NG), 1.0});
+  double size = std::max(
+      {std::fabs(c.LF), std::fabs(c.MF), std::fabs(c.NF), std::fabs(c.LG), std::fabs(c.MG), std::fabs(c.NG), 1.0});
   double big = std::max({std::fabs(b11), std::fabs(b12), std::fabs(b22)});
-  if (!std::isfinite(D) || !std::isfinite(big)) {
+  if (!std::isfinite(c.D) || !std::isfinite(big)) {
     out.push_back(only_status(p, theta, GeometryStatus::kNonFinite));
     return out;
   }
@@ -261,56 +321,12 @@ std::vector<CurveGeometry> ye_maekawa_tangential_thesis(const ParametricLocal& F
   // Eq 3.6 chooses omega = u'/v' when b11 != 0 and mu = v'/u' otherwise; we take the root
   // variable of the larger leading coefficient, which is the same case split made stable.
   std::vector<Vec2> uv;  // (u', v') up to scale
-  if (std::fabs(b11) >= std::fabs(b22)) {
-    for (double sgn : {1.0, -1.0}) {
-      uv.emplace_back((-b12 + sgn * root) / b11, 1.0);
-      if (one) break;
-    }
-  } else {
-    for (double sgn : {1.0, -1.0}) {
-      uv.emplace_back(1.0, (-b12 + sgn * root) / b22);
-      if (one) break;
-    }
+  for (double sgn : {1.0, -1.0}) {
+    uv.push_back(std::fabs(b11) >= std::fabs(b22) ? Vec2((-b12 + sgn * root) / b11, 1.0)
+                                                  : Vec2(1.0, (-b12 + sgn * root) / b22));
+    if (one) break;
   }
-  for (Vec2 w : uv) {
-    Vec3 dir = w[0] * F.fu + w[1] * F.fv;
-    w /= dir.norm();  // |u' F_u + v' F_v| = 1
-    if (orientation && dir.dot(*orientation) < 0) w = -w;
-    double u1 = w[0], v1 = w[1];
-    Vec3 t = u1 * F.fu + v1 * F.fv;
-    double p1 = a11 * u1 + a12 * v1, q1 = a21 * u1 + a22 * v1;
-    Vec3 delta = G.fuu * p1 * p1 + 2 * G.fuv * p1 * q1 + G.fvv * q1 * q1 - F.fuu * u1 * u1 - 2 * F.fuv * u1 * v1 -
-                 F.fvv * v1 * v1;  // eq 3.17
-    double a13 = -delta.cross(Gq).dot(N) / D;  // eq 3.19, corrected sign
-    double a23 = -Gp.cross(delta).dot(N) / D;  // eq 3.20
-    double IIIF = F.fuuu.dot(N) * u1 * u1 * u1 + 3 * F.fuuv.dot(N) * u1 * u1 * v1 + 3 * F.fuvv.dot(N) * u1 * v1 * v1 +
-                  F.fvvv.dot(N) * v1 * v1 * v1;
-    double IIIG = G.fuuu.dot(N) * p1 * p1 * p1 + 3 * G.fuuv.dot(N) * p1 * p1 * q1 + 3 * G.fuvv.dot(N) * p1 * q1 * q1 +
-                  G.fvvv.dot(N) * q1 * q1 * q1;
-    // eq 3.21 with p'' = a11 u'' + a12 v'' + a13, q'' = a21 u'' + a22 v'' + a23 (eq 3.18).
-    Eigen::Matrix2d A;
-    A << 3 * (LF * u1 + MF * v1) - 3 * (LG * p1 * a11 + MG * (a11 * q1 + p1 * a21) + NG * q1 * a21),
-        3 * (MF * u1 + NF * v1) - 3 * (LG * p1 * a12 + MG * (a12 * q1 + p1 * a22) + NG * q1 * a22),
-        F.fu.dot(t), F.fv.dot(t);  // eq 3.22
-    Vec2 rhs(IIIG - IIIF + 3 * (LG * p1 * a13 + MG * (a13 * q1 + p1 * a23) + NG * q1 * a23),
-             -(F.fuu.dot(t) * u1 * u1 + 2 * F.fuv.dot(t) * u1 * v1 + F.fvv.dot(t) * v1 * v1));
-    CurveGeometry g;
-    g.point = p;
-    g.theta = theta;
-    g.t = t;
-    Eigen::FullPivLU<Eigen::Matrix2d> lu(A);
-    if (!lu.isInvertible()) {
-      g.status = GeometryStatus::kHigherOrderContact;
-      out.push_back(g);
-      continue;
-    }
-    Vec2 w2 = lu.solve(rhs);
-    Vec3 c2 = F.fuu * u1 * u1 + 2 * F.fuv * u1 * v1 + F.fvv * v1 * v1 + F.fu * w2[0] + F.fv * w2[1];  // eq 3.16
-    g.kappa = c2.norm();
-    g = frenet_frame(g, c2, nullptr, tol.zero_curvature);
-    if (g.status == GeometryStatus::kOk) g.status = GeometryStatus::kTangentialSecondOrder;
-    out.push_back(g);
-  }
+  for (const Vec2& w : uv) out.push_back(thesis_tangential_branch(F, G, N, c, w, theta, orientation, tol));
   return out;
 }
 

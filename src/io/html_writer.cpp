@@ -3,6 +3,7 @@
 
 #include <optional>
 
+#include "ssimarch/core/contract.hpp"
 #include "ssimarch/surface/frame.hpp"
 #include "ssimarch/surface/unbounded.hpp"
 
@@ -146,9 +147,9 @@ nlohmann::json porosity_page_data(const PorosityJobResult& r, std::span<const Pa
 }
 
 void write_viewer_page(std::ostream& out, const nlohmann::json& data, std::string_view script) {
-  if (script.empty()) throw std::logic_error("write_viewer_page: no viewer script");
-  if (script.find("</script") != std::string_view::npos)
-    throw std::logic_error("write_viewer_page: the viewer script holds \"</script\" and cannot be inlined");
+  SSIMARCH_EXPECTS(!script.empty(), "write_viewer_page: no viewer script");
+  SSIMARCH_EXPECTS(script.find("</script") == std::string_view::npos,
+                   "write_viewer_page: the viewer script holds \"</script\" and cannot be inlined");
   const std::string json = data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   // "<\/" is the same JSON string as "</" and cannot close the data's script element.
   std::string text;

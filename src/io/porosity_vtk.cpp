@@ -5,6 +5,8 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "ssimarch/core/contract.hpp"
+
 namespace ssimarch {
 
 namespace {
@@ -25,7 +27,7 @@ double even_spacing(const std::vector<double>& v, const char* what) {
   const double h = (v.back() - v.front()) / static_cast<double>(v.size() - 1);
   for (std::size_t i = 0; i < v.size(); ++i)
     if (std::abs(v[i] - (v.front() + h * static_cast<double>(i))) > 1e-9 * std::max(std::abs(h), std::abs(v[i])))
-      throw std::invalid_argument(std::string("porosity map: the ") + what + " values are not evenly spaced");
+      SSIMARCH_CONTRACT_FAILURE(std::string("porosity map: the ") + what + " values are not evenly spaced");
   return h;
 }
 
@@ -53,9 +55,9 @@ VtkPolyData axial_profile_poly_data(const PorosityProfile& profile) {
 }
 
 VtkImageData porosity_map_image_data(const PorosityMap& map) {
-  if (map.r.empty() || map.z.empty() || map.porosity.size() != map.r.size() * map.z.size())
-    throw std::invalid_argument("porosity map: " + std::to_string(map.porosity.size()) + " values for " +
-                                std::to_string(map.r.size()) + " x " + std::to_string(map.z.size()) + " cells");
+  SSIMARCH_EXPECTS(!map.r.empty() && !map.z.empty() && map.porosity.size() == map.r.size() * map.z.size(),
+                   "porosity map: " + std::to_string(map.porosity.size()) + " values for " +
+                       std::to_string(map.r.size()) + " x " + std::to_string(map.z.size()) + " cells");
   VtkImageData d;
   d.dims = {static_cast<int>(map.r.size()), 1, static_cast<int>(map.z.size())};
   d.origin = Vec3(map.r.front(), 0.0, map.z.front());

@@ -83,14 +83,10 @@ void mark_singular_points(const TraceResult& r, Panel* p, Map map) {
     for (const SingularPointReport& s : *list) p->marks.push_back({std::string(to_string(s.type)), map(s)});
 }
 
-}  // namespace
-
-void write_svg(std::ostream& out, const IntersectionRun& run, const SvgOptions& o) {
-  const Problem& P = run.problem;
+// The 3D view: along the principal axes of the points (the plane of largest spread faces the
+// reader), or axonometric at the options' azimuth and elevation.
+Panel view_panel(const IntersectionRun& run, const SvgOptions& o) {
   const auto& curves = run.result.curves;
-  std::vector<Panel> panels;
-
-  // 3D view: principal axes of the points, or axonometric.
   double az = o.azimuth_deg * M_PI / 180, el = o.elevation_deg * M_PI / 180;
   Vec3 right(std::cos(az), std::sin(az), 0), up(-std::sin(az) * std::sin(el), std::cos(az) * std::sin(el), std::cos(el));
   std::string view_title = "3D view (azimuth " + std::to_string(static_cast<int>(o.azimuth_deg)) + "\u00b0)";
@@ -111,12 +107,9 @@ void write_svg(std::ostream& out, const IntersectionRun& run, const SvgOptions& 
       right = eig.eigenvectors().col(2);
       up = eig.eigenvectors().col(1);
       Vec3 look = right.cross(up);
-      auto fmt = [](const Vec3& v) {
-        std::ostringstream os;
-        os << std::setprecision(2) << std::fixed << "(" << v.x() << ", " << v.y() << ", " << v.z() << ")";
-        return os.str();
-      };
-      view_title = "3D view along " + fmt(look);
+      std::ostringstream os;
+      os << std::setprecision(2) << std::fixed << "(" << look.x() << ", " << look.y() << ", " << look.z() << ")";
+      view_title = "3D view along " + os.str();
     }
   }
   Panel view{view_title, "screen x", "screen y", {}, {}, {}};
@@ -131,68 +124,63 @@ void write_svg(std::ostream& out, const IntersectionRun& run, const SvgOptions& 
   }
   mark_singular_points(run.result, &view, [&](const SingularPointReport& s) { return Vec2(s.p.dot(right), s.p.dot(up)); });
   fit(&view);
-  panels.push_back(std::move(view));
+  return view;
+}
 
-  // Parameter domains (pairs of unknowns), or two orthographic views for implicit pairs.
-  auto names = P.unknown_names();
-  std::vector<std::pair<int, int>> pairs;
-  if (P.kind() == PairKind::kImplicitImplicit) pairs = {{0, 1}, {0, 2}};
-  else if (P.kind() == PairKind::kParametricImplicit) pairs = {{0, 1}};
-  else pairs = {{0, 1}, {2, 3}};
-  for (const auto& axes : pairs) {
-    // Plain ints, not a structured binding: clang 14 (the fuzz build) cannot capture one in a lambda.
-    const int a = axes.first, b = axes.second;
-    Panel p;
-    bool param = P.kind() != PairKind::kImplicitImplicit;
-    std::string which = param ? (a == 0 ? run.spec.swapped ? run.spec.surfaces[1] : run.spec.surfaces[0] : run.spec.surfaces[1]) : "";
-    p.title = param ? "domain of " + which : (b == 1 ? "top view (x, y)" : "front view (x, z)");
-    p.xlabel = names[static_cast<std::size_t>(a)];
-    p.ylabel = names[static_cast<std::size_t>(b)];
-    if (param) {
-      const Interval &ia = P.bounds()[static_cast<std::size_t>(a)], &ib = P.bounds()[static_cast<std::size_t>(b)];
-      p.xmin = ia.lo;
-      p.xmax = ia.hi;
-      p.ymin = ib.lo;
-      p.ymax = ib.hi;
-      p.fixed_range = true;
-    }
-    for (std::size_t ci = 0; ci < curves.size(); ++ci) {
-      std::vector<Vec2> l;
-      const CurvePoint* prev = nullptr;
-      for (const auto& q : curves[ci].points) {
-        Vec2 v(q.x[a], q.x[b]);
-        if (prev) {
-          double pa = P.periods()[static_cast<std::size_t>(a)], pb = P.periods()[static_cast<std::size_t>(b)];
-          bool wrapped = (pa > 0 && std::fabs(q.x[a] - prev->x[a]) > pa / 2) || (pb > 0 && std::fabs(q.x[b] - prev->x[b]) > pb / 2);
-          if (wrapped) {
-            p.lines.push_back({static_cast<int>(ci), std::move(l)});
-            l.clear();
-          }
-        }
-        l.push_back(v);
-        prev = &q;
-      }
-      if (!curves[ci].closed && !curves[ci].points.empty()) {
-        const auto& f = curves[ci].points.front().x;
-        const auto& e = curves[ci].points.back().x;
-        p.ends.push_back({static_cast<int>(ci), Vec2(f[a], f[b])});
-        p.ends.push_back({static_cast<int>(ci), Vec2(e[a], e[b])});
-      }
-      p.lines.push_back({static_cast<int>(ci), std::move(l)});
-    }
-    mark_singular_points(run.result, &p, [&](const SingularPointReport& s) { return Vec2(s.x[a], s.x[b]); });
-    fit(&p);
-    panels.push_back(std::move(p));
+// The curves in the plane of unknowns a and b: a surface's parameter domain (a line broken where
+// a periodic unknown wraps), or an orthographic view of an implicit pair.
+Panel unknowns_panel(const IntersectionRun& run, int a, int b) {
+  const Problem& P = run.problem;
+  const auto& curves = run.result.curves;
+  const auto names = P.unknown_names();
+  Panel p;
+  bool param = P.kind() != PairKind::kImplicitImplicit;
+  std::string which =
+      param ? (a == 0 ? run.spec.swapped ? run.spec.surfaces[1] : run.spec.surfaces[0] : run.spec.surfaces[1]) : "";
+  p.title = param ? "domain of " + which : (b == 1 ? "top view (x, y)" : "front view (x, z)");
+  p.xlabel = names[static_cast<std::size_t>(a)];
+  p.ylabel = names[static_cast<std::size_t>(b)];
+  if (param) {
+    const Interval &ia = P.bounds()[static_cast<std::size_t>(a)], &ib = P.bounds()[static_cast<std::size_t>(b)];
+    p.xmin = ia.lo;
+    p.xmax = ia.hi;
+    p.ymin = ib.lo;
+    p.ymax = ib.hi;
+    p.fixed_range = true;
   }
+  const double pa = P.periods()[static_cast<std::size_t>(a)], pb = P.periods()[static_cast<std::size_t>(b)];
+  for (std::size_t ci = 0; ci < curves.size(); ++ci) {
+    std::vector<Vec2> l;
+    const CurvePoint* prev = nullptr;
+    for (const auto& q : curves[ci].points) {
+      const bool wrapped = prev && ((pa > 0 && std::fabs(q.x[a] - prev->x[a]) > pa / 2) ||
+                                    (pb > 0 && std::fabs(q.x[b] - prev->x[b]) > pb / 2));
+      if (wrapped) {
+        p.lines.push_back({static_cast<int>(ci), std::move(l)});
+        l.clear();
+      }
+      l.emplace_back(q.x[a], q.x[b]);
+      prev = &q;
+    }
+    if (!curves[ci].closed && !curves[ci].points.empty()) {
+      const auto& f = curves[ci].points.front().x;
+      const auto& e = curves[ci].points.back().x;
+      p.ends.push_back({static_cast<int>(ci), Vec2(f[a], f[b])});
+      p.ends.push_back({static_cast<int>(ci), Vec2(e[a], e[b])});
+    }
+    p.lines.push_back({static_cast<int>(ci), std::move(l)});
+  }
+  mark_singular_points(run.result, &p, [&](const SingularPointReport& s) { return Vec2(s.x[a], s.x[b]); });
+  fit(&p);
+  return p;
+}
 
-  const int S = o.panel_size;
-  const int width = S * static_cast<int>(panels.size()), height = S + 60 + 18 * static_cast<int>(std::min<std::size_t>(curves.size(), 8));
-  SvgCanvas svg(out, width, height, "font-family='sans-serif'", "#fafafa");
-  for (std::size_t i = 0; i < panels.size(); ++i) draw(svg, panels[i], static_cast<double>(i * static_cast<std::size_t>(S)), S);
-  double y = S + 20;
+// Under the panels: the intersection, its surfaces and counts, then one line per curve (8 at most).
+void write_legend(SvgCanvas& svg, const IntersectionRun& run, double y) {
+  const auto& curves = run.result.curves;
   svg.text(12, y, "font-size='13' font-weight='bold'")
       << xml_escape(run.spec.name) << ": " << xml_escape(run.spec.surfaces[0]) << " \u2229 "
-      << xml_escape(run.spec.surfaces[1]) << " (" << to_string(P.kind()) << ", " << run.result.stats.points
+      << xml_escape(run.spec.surfaces[1]) << " (" << to_string(run.problem.kind()) << ", " << run.result.stats.points
       << " points, " << std::setprecision(4) << run.result.stats.time_ms << " ms)";
   svg.end_text();
   for (std::size_t ci = 0; ci < std::min<std::size_t>(curves.size(), 8); ++ci) {
@@ -204,6 +192,30 @@ void write_svg(std::ostream& out, const IntersectionRun& run, const SvgOptions& 
         << ", length " << std::setprecision(10) << c.length << ", " << c.points.size() << " points";
     svg.end_text();
   }
+}
+
+}  // namespace
+
+void write_svg(std::ostream& out, const IntersectionRun& run, const SvgOptions& o) {
+  const Problem& P = run.problem;
+  std::vector<Panel> panels{view_panel(run, o)};
+  // Parameter domains (pairs of unknowns), or two orthographic views for implicit pairs.
+  std::vector<std::pair<int, int>> pairs;
+  if (P.kind() == PairKind::kImplicitImplicit)
+    pairs = {{0, 1}, {0, 2}};
+  else if (P.kind() == PairKind::kParametricImplicit)
+    pairs = {{0, 1}};
+  else
+    pairs = {{0, 1}, {2, 3}};
+  for (const auto& [a, b] : pairs) panels.push_back(unknowns_panel(run, a, b));
+
+  const int S = o.panel_size;
+  const std::size_t legend_lines = std::min<std::size_t>(run.result.curves.size(), 8);
+  const int width = S * static_cast<int>(panels.size()), height = S + 60 + 18 * static_cast<int>(legend_lines);
+  SvgCanvas svg(out, width, height, "font-family='sans-serif'", "#fafafa");
+  for (std::size_t i = 0; i < panels.size(); ++i)
+    draw(svg, panels[i], static_cast<double>(i * static_cast<std::size_t>(S)), S);
+  write_legend(svg, run, S + 20);
   svg.finish();
 }
 

@@ -7,6 +7,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "ssimarch/core/contract.hpp"
+
 namespace ssimarch {
 
 namespace {
@@ -79,7 +81,7 @@ void write_ascii_values(std::ostream& out, const VtkArray& a) {
 
 void write_array(std::ostream& out, const VtkArray& a, VtkEncoding encoding) {
   for (const std::string& s : a.strings)
-    if (s.find('\0') != std::string::npos) throw std::invalid_argument("VTK array " + a.name + ": a string holds a NUL");
+    SSIMARCH_EXPECTS(s.find('\0') == std::string::npos, "VTK array " + a.name + ": a string holds a NUL");
   const char* element = a.type == VtkArray::Type::kString ? "Array" : "DataArray";
   out << "      <" << element << " type=\"" << type_name(a.type) << "\" Name=\"" << xml_escaped(a.name) << "\"";
   if (a.components != 1) out << " NumberOfComponents=\"" << a.components << "\"";
@@ -97,9 +99,9 @@ void write_arrays(std::ostream& out, const char* tag, const std::vector<VtkArray
                   VtkEncoding encoding, bool check) {
   out << "    <" << tag << ">\n";
   for (const VtkArray& a : arrays) {
-    if (check && a.tuples() != tuples)
-      throw std::invalid_argument(std::string("VTK ") + tag + " array " + a.name + ": " + std::to_string(a.tuples()) +
-                                  " tuples for " + std::to_string(tuples));
+    SSIMARCH_EXPECTS(!check || a.tuples() == tuples, std::string("VTK ") + tag + " array " + a.name + ": " +
+                                                         std::to_string(a.tuples()) + " tuples for " +
+                                                         std::to_string(tuples));
     write_array(out, a, encoding);
   }
   out << "    </" << tag << ">\n";
@@ -111,7 +113,7 @@ void write_cells(std::ostream& out, const char* tag, const std::vector<std::vect
   std::vector<std::int64_t> conn, offsets;
   for (const auto& c : cells) {
     for (std::int64_t i : c) {
-      if (i < 0 || static_cast<std::size_t>(i) >= points) throw std::invalid_argument("VTK cell: point index out of range");
+      SSIMARCH_EXPECTS(i >= 0 && static_cast<std::size_t>(i) < points, "VTK cell: point index out of range");
       conn.push_back(i);
     }
     offsets.push_back(static_cast<std::int64_t>(conn.size()));
@@ -213,8 +215,7 @@ void write_vtp(std::ostream& out, const VtkPolyData& d, VtkEncoding encoding) {
 }
 
 void write_vti(std::ostream& out, const VtkImageData& d, VtkEncoding encoding) {
-  for (int n : d.dims)
-    if (n < 1) throw std::invalid_argument("VTK image: every dimension needs at least one point");
+  for (int n : d.dims) SSIMARCH_EXPECTS(n >= 1, "VTK image: every dimension needs at least one point");
   const std::size_t np = static_cast<std::size_t>(d.dims[0]) * d.dims[1] * d.dims[2];
   std::ostringstream o;
   o.precision(std::numeric_limits<double>::max_digits10);

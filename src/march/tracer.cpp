@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "march_steps.hpp"
@@ -308,6 +309,32 @@ bool pass_pole_step(const Problem& P, const Pole& pole, double h, const CurvePoi
   return false;
 }
 
+// Why a march cannot leave its start: the curve is singular there, or the start lies on a domain
+// edge and the curve leaves the domain through it.
+std::optional<Event> start_event(const Problem& P, const CurvePoint& start, const DynamicCurveJet& here) {
+  if (here.status != CurveJetStatus::kOk)
+    return Event{EventKind::kSingularSuspected, BudgetBound::kNone,
+                 "the start point " + describe_point(start.p) + " is a singular point of the curve", UnknownVec{}};
+  if (const int i = internal::bound_left_at(P, start.x, here.x[1]); i >= 0)
+    return Event{
+        EventKind::kDomainEdge, BudgetBound::kNone,
+        "starts on the domain edge " + P.unknown_names()[static_cast<std::size_t>(i)] + " and leaves the domain there",
+        UnknownVec{}};
+  return std::nullopt;
+}
+
+// The closure allowance: rounding of the model's coordinates, plus the corrector tolerance
+// magnified by the conditioning of the point across the curve, 1/sin(theta) between the
+// normals (a near-tangential loop's points are known only to tolerance/sin(theta)). The
+// projection and tangent tests of closes_loop keep a generous allowance from closing early,
+// so a loop of any size relative to the step closes once (docs/marching.md, "Closure").
+double closure_slack(const Problem& P, const TraceOptions& o, const CurvePoint& start, TraceStats* stats) {
+  const Linearization L0 = P.linearize(start.x);
+  stats->add_surface_evaluations(linearize_evaluation_cost(P));
+  const double sin0 = L0.normal_first.cross(L0.normal_second).norm();
+  return 1e-8 * P.scale() + 10 * o.tolerance * (1 + 1 / std::max(sin0, 1e-8));
+}
+
 }  // namespace
 
 MarchResult Tracer::march_until_event(const CurvePoint& start_point, Direction direction, const MarchLimits& limits,
@@ -320,27 +347,12 @@ MarchResult Tracer::march_until_event(const CurvePoint& start_point, Direction d
   m.state.map_tolerance = options_.tolerance;
   m.state.here = m.jet_at(start.x, &start.t);
   m.cur = start;
-  if (m.state.here.status != CurveJetStatus::kOk) {
-    r.event = Event{EventKind::kSingularSuspected, BudgetBound::kNone,
-                    "the start point " + describe_point(start.p) + " is a singular point of the curve", UnknownVec{}};
-    return r;
-  }
-  if (const int i = internal::bound_left_at(problem_, start.x, m.state.here.x[1]); i >= 0) {
-    r.event = Event{EventKind::kDomainEdge, BudgetBound::kNone,
-                    "starts on the domain edge " + problem_.unknown_names()[static_cast<std::size_t>(i)] + " and leaves the domain there",
-                    UnknownVec{}};
+  if (std::optional<Event> e = start_event(problem_, start, m.state.here)) {
+    r.event = std::move(*e);
     return r;
   }
   std::visit([&](auto& s) { s.start(frenet_from_jet(m.state.here, problem_.scale())); }, m.rule);
-  // The closure allowance: rounding of the model's coordinates, plus the corrector tolerance
-  // magnified by the conditioning of the point across the curve, 1/sin(theta) between the
-  // normals (a near-tangential loop's points are known only to tolerance/sin(theta)). The
-  // projection and tangent tests of closes_loop keep a generous allowance from closing early,
-  // so a loop of any size relative to the step closes once (docs/marching.md, "Closure").
-  const Linearization L0 = problem_.linearize(start.x);
-  stats->add_surface_evaluations(linearize_evaluation_cost(problem_));
-  const double sin0 = L0.normal_first.cross(L0.normal_second).norm();
-  const double sagitta_slack = 1e-8 * problem_.scale() + 10 * options_.tolerance * (1 + 1 / std::max(sin0, 1e-8));
+  const double sagitta_slack = closure_slack(problem_, options_, start, stats);
   const CurvePoint& target = limits.close_at ? *limits.close_at : start;
   // A target other than the start may lie on the very first chord (just past a singular point).
   const std::size_t first_closing = (target.p - start.p).norm() > 0 ? 1 : 3;

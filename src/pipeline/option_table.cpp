@@ -5,6 +5,7 @@
 #include <charconv>
 #include <functional>
 
+#include "ssimarch/core/contract.hpp"
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/march/option_ranges.hpp"
 
@@ -45,7 +46,7 @@ struct Row {
 // A number of the marching: its range is the one TraceOptions::is_valid checks (march/option_ranges.hpp).
 Row number_row(TraceOptionSpec spec) {
   const TraceOptionRange* field = find_trace_option_range(spec.key);
-  if (!field) throw std::logic_error("trace option \"" + std::string(spec.key) + "\" has no range in march/option_ranges.cpp");
+  SSIMARCH_EXPECTS(field, "trace option \"" + std::string(spec.key) + "\" has no range in march/option_ranges.cpp");
   spec.type = field->integer ? TraceOptionSpec::Type::kInteger : TraceOptionSpec::Type::kReal;
   spec.rule = field->range.rule(field->integer);
   return Row{std::move(spec), field->range, [field](TraceJobOptions* o, double x) { field->set(o->trace, x); }, {},
@@ -197,7 +198,7 @@ const std::vector<Row>& rows() {
 const Row& row_of(const TraceOptionSpec& spec) {
   for (const Row& r : rows())
     if (r.spec.key == spec.key) return r;
-  throw std::logic_error("trace option \"" + std::string(spec.key) + "\" is not in the table");
+  SSIMARCH_CONTRACT_FAILURE("trace option \"" + std::string(spec.key) + "\" is not in the table");
 }
 
 // A number given as text (a CLI flag, a scene's constant expression). A plain number, including

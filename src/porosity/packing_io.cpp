@@ -220,104 +220,166 @@ Packing read_packing_csv(std::istream& in, const std::string& name, const InputL
   return out;
 }
 
-Packing read_lammps_dump(std::istream& in, const std::string& name, const InputLimits& limits) {
-  Errors err(name);
-  LineReader reader(in, err, limits);
-  std::string line;
-  long ln = 0;
-  Packing last;
-  bool have = false;
-  long natoms = -1;
-  double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
-  bool box = false;
-  auto next = [&](std::string& s) {
-    if (!reader.next(s)) return false;
-    ln = reader.line_number();
-    return true;
-  };
-  while (next(line)) {
-    const std::string t = trim(line);
-    if (t.empty()) continue;
-    if (t.rfind("ITEM: NUMBER OF ATOMS", 0) == 0) {
-      if (!next(line)) err.fatal(ln, "missing atom count after 'ITEM: NUMBER OF ATOMS'");
-      const auto v = parse_number(trim(line));
-      if (!v || *v < 0 || *v != std::floor(*v)) err.fatal(ln, "bad atom count '" + trim(line) + "'");
-      // Checked before the conversion (a double beyond long's range has no defined conversion):
-      // more atoms than bytes the file may hold cannot be there.
-      if (*v > static_cast<double>(limits.max_packing_bytes))
-        err.fatal(ln, "atom count " + trim(line) + " is more than the file can hold (at most " +
-                          byte_count_text(limits.max_packing_bytes) + " are read)");
-      natoms = static_cast<long>(*v);
-    } else if (t.rfind("ITEM: BOX BOUNDS", 0) == 0) {
-      for (int k = 0; k < 3; ++k) {
-        if (!next(line)) err.fatal(ln, "missing box bounds line");
-        const auto f = split(trim(line), ' ');
-        const auto a = f.size() >= 2 ? parse_number(f[0]) : std::nullopt;
-        const auto b = f.size() >= 2 ? parse_number(f[1]) : std::nullopt;
-        if (!a || !b) err.fatal(ln, "bad box bounds '" + trim(line) + "'");
-        lo[k] = *a;
-        hi[k] = *b;
+namespace {
+
+// The columns of an 'ITEM: ATOMS' header: where x, y, z (plain, unwrapped "u" or scaled "s")
+// and the radius or diameter are.
+struct AtomColumns {
+  std::map<std::string, int> index;
+  std::string axis[3];
+  bool scaled = false;
+  std::string size;  // "radius" or "diameter"
+  std::size_t count = 0;
+};
+
+// A LAMMPS dump read item by item (docs/porosity.md, "LAMMPS dumps"); every error names the line.
+class DumpReader {
+ public:
+  DumpReader(std::istream& in, const std::string& name, const InputLimits& limits)
+      : err_(name), reader_(in, err_, limits), limits_(limits) {}
+
+  Packing read(const std::string& name) {
+    Packing last;
+    bool have = false;
+    std::string line;
+    while (next(line)) {
+      const std::string t = trim(line);
+      if (t.rfind("ITEM: NUMBER OF ATOMS", 0) == 0) {
+        natoms_ = atom_count();
+      } else if (t.rfind("ITEM: BOX BOUNDS", 0) == 0) {
+        box_bounds();
+      } else if (t.rfind("ITEM: ATOMS", 0) == 0) {
+        last = snapshot(atom_columns(t));
+        have = true;
       }
-      box = true;
-    } else if (t.rfind("ITEM: ATOMS", 0) == 0) {
-      if (natoms < 0) err.fatal(ln, "'ITEM: ATOMS' before 'ITEM: NUMBER OF ATOMS'");
-      const auto cols = split(t.substr(11), ' ');
-      std::map<std::string, int> col;
-      for (int k = 0; k < static_cast<int>(cols.size()); ++k) col[cols[k]] = k;
-      std::string cx[3];
-      bool scaled = false;
-      const char* axes[3] = {"x", "y", "z"};
-      for (int k = 0; k < 3; ++k) {
-        const std::string a = axes[k];
-        if (col.count(a)) cx[k] = a;
-        else if (col.count(a + "u")) cx[k] = a + "u";
-        else if (col.count(a + "s")) { cx[k] = a + "s"; scaled = true; }
-        else err.fatal(ln, "ATOMS columns lack '" + a + "' (or " + a + "u, " + a + "s)");
-      }
-      if (scaled && !box)
-        err.fatal(
-            ln, "scaled coordinates (xs, ys, zs) but no 'ITEM: BOX BOUNDS' before 'ITEM: ATOMS': their box is unknown");
-      const bool has_r = col.count("radius") > 0, has_d = col.count("diameter") > 0;
-      if (!has_r && !has_d) err.fatal(ln, "ATOMS columns lack 'radius' (or 'diameter'): only sphere dumps are supported");
-      Packing snap;
-      for (long i = 0; i < natoms; ++i) {
-        if (!next(line)) err.fatal(ln, "file ends after " + std::to_string(i) + " of " + std::to_string(natoms) + " atoms");
-        const auto f = split(trim(line), ' ');
-        if (f.size() != cols.size()) {
-          err.add(ln, "expected " + std::to_string(cols.size()) + " fields (the ATOMS columns), found " +
-                          std::to_string(f.size()));
-          continue;
-        }
-        Particle p;
-        bool ok = true;
-        for (int k = 0; k < 3 && ok; ++k) {
-          const auto v = parse_number(f[col[cx[k]]]);
-          if (!v) {
-            err.add(ln, field_column(line, ' ', col[cx[k]]),
-                    "column '" + cx[k] + "': not a number: '" + f[col[cx[k]]] + "'");
-            ok = false;
-            break;
-          }
-          p.centre[k] = scaled ? lo[k] + *v * (hi[k] - lo[k]) : *v;
-        }
-        if (!ok) continue;
-        const std::string rc = has_r ? "radius" : "diameter";
-        const auto v = parse_number(f[col[rc]]);
-        if (!v) {
-          err.add(ln, field_column(line, ' ', col[rc]), "column '" + rc + "': not a number: '" + f[col[rc]] + "'");
-          continue;
-        }
-        p.diameter = has_r ? 2 * *v : *v;
-        if (const std::string w = internal::validate_particle(p, false); !w.empty()) { err.add(ln, w); continue; }
-        snap.particles.push_back(p);
-      }
-      last = std::move(snap);
-      have = true;
     }
+    err_.raise_if_any();
+    if (!have) throw InputError(name, "no 'ITEM: ATOMS' section found (not a LAMMPS dump?)");
+    return last;
   }
-  err.raise_if_any();
-  if (!have) throw InputError(name, "no 'ITEM: ATOMS' section found (not a LAMMPS dump?)");
-  return last;
+
+ private:
+  bool next(std::string& s) {
+    if (!reader_.next(s)) return false;
+    ln_ = reader_.line_number();
+    return true;
+  }
+
+  long atom_count() {
+    std::string line;
+    if (!next(line)) err_.fatal(ln_, "missing atom count after 'ITEM: NUMBER OF ATOMS'");
+    const auto v = parse_number(trim(line));
+    if (!v || *v < 0 || *v != std::floor(*v)) err_.fatal(ln_, "bad atom count '" + trim(line) + "'");
+    // Checked before the conversion (a double beyond long's range has no defined conversion):
+    // more atoms than bytes the file may hold cannot be there.
+    if (*v > static_cast<double>(limits_.max_packing_bytes))
+      err_.fatal(ln_, "atom count " + trim(line) + " is more than the file can hold (at most " +
+                          byte_count_text(limits_.max_packing_bytes) + " are read)");
+    return static_cast<long>(*v);
+  }
+
+  void box_bounds() {
+    std::string line;
+    for (int k = 0; k < 3; ++k) {
+      if (!next(line)) err_.fatal(ln_, "missing box bounds line");
+      const auto f = split(trim(line), ' ');
+      const auto a = f.size() >= 2 ? parse_number(f[0]) : std::nullopt;
+      const auto b = f.size() >= 2 ? parse_number(f[1]) : std::nullopt;
+      if (!a || !b) err_.fatal(ln_, "bad box bounds '" + trim(line) + "'");
+      lo_[k] = *a;
+      hi_[k] = *b;
+    }
+    box_ = true;
+  }
+
+  AtomColumns atom_columns(const std::string& header) {
+    if (natoms_ < 0) err_.fatal(ln_, "'ITEM: ATOMS' before 'ITEM: NUMBER OF ATOMS'");
+    AtomColumns c;
+    const auto cols = split(header.substr(11), ' ');
+    c.count = cols.size();
+    for (int k = 0; k < static_cast<int>(cols.size()); ++k) c.index[cols[k]] = k;
+    const char* axes[3] = {"x", "y", "z"};
+    for (int k = 0; k < 3; ++k) {
+      const std::string a = axes[k];
+      if (c.index.count(a)) {
+        c.axis[k] = a;
+      } else if (c.index.count(a + "u")) {
+        c.axis[k] = a + "u";
+      } else if (c.index.count(a + "s")) {
+        c.axis[k] = a + "s";
+        c.scaled = true;
+      } else {
+        err_.fatal(ln_, "ATOMS columns lack '" + a + "' (or " + a + "u, " + a + "s)");
+      }
+    }
+    if (c.scaled && !box_)
+      err_.fatal(
+          ln_, "scaled coordinates (xs, ys, zs) but no 'ITEM: BOX BOUNDS' before 'ITEM: ATOMS': their box is unknown");
+    if (c.index.count("radius"))
+      c.size = "radius";
+    else if (c.index.count("diameter"))
+      c.size = "diameter";
+    else
+      err_.fatal(ln_, "ATOMS columns lack 'radius' (or 'diameter'): only sphere dumps are supported");
+    return c;
+  }
+
+  // One atom's line as a sphere, or nullopt after saying what is wrong with it.
+  std::optional<Particle> atom(const std::string& line, AtomColumns& c) {
+    const auto f = split(trim(line), ' ');
+    if (f.size() != c.count) {
+      err_.add(ln_, "expected " + std::to_string(c.count) + " fields (the ATOMS columns), found " +
+                        std::to_string(f.size()));
+      return std::nullopt;
+    }
+    auto number = [&](const std::string& column) -> std::optional<double> {
+      const int k = c.index[column];
+      const auto v = parse_number(f[static_cast<std::size_t>(k)]);
+      if (!v)
+        err_.add(ln_, field_column(line, ' ', k),
+                 "column '" + column + "': not a number: '" + f[static_cast<std::size_t>(k)] + "'");
+      return v;
+    };
+    Particle p;
+    for (int k = 0; k < 3; ++k) {
+      const auto v = number(c.axis[k]);
+      if (!v) return std::nullopt;
+      p.centre[k] = c.scaled ? lo_[k] + *v * (hi_[k] - lo_[k]) : *v;
+    }
+    const auto size = number(c.size);
+    if (!size) return std::nullopt;
+    p.diameter = c.size == "radius" ? 2 * *size : *size;
+    if (const std::string w = internal::validate_particle(p, false); !w.empty()) {
+      err_.add(ln_, w);
+      return std::nullopt;
+    }
+    return p;
+  }
+
+  Packing snapshot(AtomColumns c) {
+    Packing snap;
+    std::string line;
+    for (long i = 0; i < natoms_; ++i) {
+      if (!next(line))
+        err_.fatal(ln_, "file ends after " + std::to_string(i) + " of " + std::to_string(natoms_) + " atoms");
+      if (const auto p = atom(line, c)) snap.particles.push_back(*p);
+    }
+    return snap;
+  }
+
+  Errors err_;
+  LineReader reader_;
+  const InputLimits& limits_;
+  long ln_ = 0;
+  long natoms_ = -1;
+  double lo_[3] = {0, 0, 0}, hi_[3] = {1, 1, 1};
+  bool box_ = false;
+};
+
+}  // namespace
+
+Packing read_lammps_dump(std::istream& in, const std::string& name, const InputLimits& limits) {
+  return DumpReader(in, name, limits).read(name);
 }
 
 Packing read_packing(const std::filesystem::path& path, const InputLimits& limits, unsigned threads) {

@@ -1,5 +1,7 @@
 #include "ssimarch/surface/surface.hpp"
 
+#include "ssimarch/core/contract.hpp"
+
 namespace ssimarch {
 namespace {
 
@@ -47,8 +49,8 @@ const ParamDomain& Surface::domain() const {
         if constexpr (kHasPoint<std::remove_cvref_t<decltype(s)>>) {
           return s.domain();
         } else {
-          throw std::logic_error("ssimarch::Surface::domain: a " + std::string(type_name()) +
-                                 " surface has no parametric form");
+          SSIMARCH_CONTRACT_FAILURE("ssimarch::Surface::domain: a " + std::string(type_name()) +
+                                    " surface has no parametric form");
         }
       },
       s_);

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "testing/matchers.hpp"
 #include "ssimarch/analytic/conic_pieces.hpp"
 #include "ssimarch/surface/primitives.hpp"
 
@@ -48,9 +49,9 @@ TEST(ClosedForm, PlaneSphereIsACircleOfRadiusSqrtR2MinusD2) {
   ASSERT_EQ(r.conics.size(), 1u);
   EXPECT_EQ(r.conics[0].type, ConicType::kCircle);
   EXPECT_NEAR(r.conics[0].a, std::sqrt(4 - d * d), 1e-14);
-  EXPECT_NEAR((r.conics[0].center - d * n.normalized()).norm(), 0, 1e-14);
+  EXPECT_THAT(r.conics[0].center, testing::IsNear(d * n.normalized(), 1e-14));
   EXPECT_TRUE(r.result.curves[0].closed);
-  EXPECT_NEAR(r.result.curves[0].length, 2 * kPi * std::sqrt(4 - d * d), 1e-12);
+  EXPECT_THAT(r.result.curves[0], testing::HasLength(2 * kPi * std::sqrt(4 - d * d), 1e-12));
   EXPECT_EQ(r.pair, "plane-quadric");
 }
 
@@ -61,7 +62,7 @@ TEST(ClosedForm, ObliquePlaneCylinderIsAnEllipse) {
   EXPECT_EQ(r.conics[0].type, ConicType::kEllipse);
   EXPECT_NEAR(r.conics[0].a, std::sqrt(1.25), 1e-14);
   EXPECT_NEAR(r.conics[0].b, 1, 1e-14);
-  EXPECT_NEAR(r.result.curves[0].length, ellipse_perimeter(std::sqrt(1.25), 1), 1e-10);
+  EXPECT_THAT(r.result.curves[0], testing::HasLength(ellipse_perimeter(std::sqrt(1.25), 1), 1e-10));
 }
 
 TEST(ClosedForm, PlaneParallelToTheAxisGivesTwoLinesClippedToTheTrim) {
@@ -72,7 +73,7 @@ TEST(ClosedForm, PlaneParallelToTheAxisGivesTwoLinesClippedToTheTrim) {
     EXPECT_EQ(r.conics[i].contact, Contact::kTransversal);
     EXPECT_FALSE(r.result.curves[i].closed);
     EXPECT_NEAR(std::fabs(r.result.curves[i].points[0].p.y()), std::sqrt(0.75), 1e-14);
-    EXPECT_NEAR(r.result.curves[i].length, 2, 1e-12);  // the cylinder's axial range [-1, 1]
+    EXPECT_THAT(r.result.curves[i], testing::HasLength(2, 1e-12));  // the cylinder's axial range [-1, 1]
     EXPECT_NEAR(std::fabs(r.result.curves[i].points.back().p.z()), 1, 1e-14);
   }
 }
@@ -86,7 +87,7 @@ TEST(ClosedForm, CylinderLyingOnAPlaneTouchesItAlongALine) {
   EXPECT_NEAR(r.conics[0].center.x(), 0, 1e-15);
   EXPECT_NEAR(r.conics[0].center.z(), 0, 1e-15);
   EXPECT_NEAR(std::fabs(r.conics[0].e0.y()), 1, 1e-15);
-  EXPECT_NEAR(r.result.curves[0].length, 4, 1e-12);  // y in [-2, 2] (cases.jsonl: length 4)
+  EXPECT_THAT(r.result.curves[0], testing::HasLength(4, 1e-12));  // y in [-2, 2] (cases.jsonl: length 4)
 }
 
 TEST(ClosedForm, SphereOnAPlaneTouchesItAtOnePoint) {
@@ -127,7 +128,7 @@ TEST(ClosedForm, TwoSpheresMeetInTheRadicalPlane) {
   EXPECT_EQ(r.pair, "coaxial");
   EXPECT_NEAR(r.conics[0].center.x(), 4.0 / 3, 1e-14);
   EXPECT_NEAR(r.conics[0].a, std::sqrt(20.0 / 9), 1e-14);
-  EXPECT_NEAR(r.result.curves[0].length, 2 * kPi * std::sqrt(20.0 / 9), 1e-12);
+  EXPECT_THAT(r.result.curves[0], testing::HasLength(2 * kPi * std::sqrt(20.0 / 9), 1e-12));
 }
 
 TEST(ClosedForm, SphereOnACylindersAxisMeetsItInTwoCircles) {
@@ -147,9 +148,9 @@ TEST(ClosedForm, ConeOnASpheresAxisOpenCascadeBug21494) {
   ASSERT_EQ(r.conics.size(), 1u);
   EXPECT_NEAR(r.conics[0].center.z(), 25 / 6.5, 1e-13);
   EXPECT_NEAR(r.conics[0].a, 120.0 / 13, 1e-13);
-  EXPECT_NEAR(r.result.curves[0].length, 2 * kPi * 120 / 13, 1e-11);
+  EXPECT_THAT(r.result.curves[0], testing::HasLength(2 * kPi * 120 / 13, 1e-11));
   ASSERT_EQ(r.result.isolated_points.size(), 1u);
-  EXPECT_NEAR((r.result.isolated_points[0].p - Vec3(0, 0, 10)).norm(), 0, 1e-13);
+  EXPECT_THAT(r.result.isolated_points[0].p, testing::IsNear(Vec3(0, 0, 10), 1e-13));
 }
 
 TEST(ClosedForm, SphereInsideAnEqualCylinderTouchesAlongTheEquator) {
@@ -158,7 +159,7 @@ TEST(ClosedForm, SphereInsideAnEqualCylinderTouchesAlongTheEquator) {
   ASSERT_EQ(r.conics.size(), 1u);
   EXPECT_EQ(r.conics[0].contact, Contact::kTangential);
   EXPECT_NEAR(r.conics[0].center.norm(), 0, 1e-13);
-  EXPECT_NEAR(r.result.curves[0].length, 20 * kPi, 1e-11);
+  EXPECT_THAT(r.result.curves[0], testing::HasLength(20 * kPi, 1e-11));
 }
 
 TEST(ClosedForm, PairsWithoutAClosedFormAreLeftToTheTracer) {

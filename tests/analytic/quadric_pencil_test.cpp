@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "testing/matchers.hpp"
 #include "ssimarch/analytic/closed_form.hpp"
 #include "ssimarch/analytic/quadric_form.hpp"
 #include "ssimarch/surface/primitives.hpp"
@@ -73,7 +74,7 @@ TEST(QuadricPencil, PeersEllipsoidsAreTwoEllipsesThroughTwoNodes) {
   ASSERT_EQ(r.result.singular_points.size(), 2u);
   for (const SingularPointReport& s : r.result.singular_points) {
     EXPECT_EQ(s.type, SingularType::kNode);
-    EXPECT_NEAR((s.p.cwiseAbs() - Vec3(0, 1.6, 0)).norm(), 0, 1e-12);
+    EXPECT_THAT(s.p.cwiseAbs(), testing::IsNear(Vec3(0, 1.6, 0), 1e-12));
     EXPECT_EQ(s.curves.size(), 2u);
   }
 }

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "testing/matchers.hpp"
 #include "ssimarch/analytic/closed_form.hpp"
 #include "ssimarch/singular/locate.hpp"
 #include "ssimarch/surface/primitives.hpp"
@@ -42,7 +43,7 @@ void expect_nodes_as_classified(const Problem& P, std::size_t nodes) {
     Vec3 located;
     // Start the general search off the point, so that it finds the point itself.
     const SingularPointReport gen = general_report(P, cf.p + Vec3(2e-3, -1e-3, 1.5e-3), &located);
-    EXPECT_LE((located - cf.p).norm(), 1e-12 * std::max(1.0, P.scale()));
+    EXPECT_THAT(located, testing::IsNear(cf.p, 1e-12 * std::max(1.0, P.scale())));
     EXPECT_EQ(cf.type, SingularType::kNode);
     EXPECT_EQ(gen.type, cf.type);
     EXPECT_EQ(gen.ak, cf.ak);
@@ -62,7 +63,7 @@ void expect_nodes_as_classified(const Problem& P, std::size_t nodes) {
       EXPECT_NEAR(a.tangent.norm(), 1, 1e-14);
       EXPECT_NEAR(a.normal.dot(a.tangent), 0, 1e-14);
       const auto& b = gen.half_branches[static_cast<std::size_t>(match[i])];
-      EXPECT_NEAR((a.normal - b.normal).norm(), 0, 1e-10);
+      EXPECT_THAT(a.normal, testing::IsNear(b.normal, 1e-10));
       // Continuations correspond, and the expansions agree term by term (absent = 0).
       ASSERT_GE(a.continuation, 0);
       EXPECT_EQ(match[static_cast<std::size_t>(a.continuation)], b.continuation);

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "testing/matchers.hpp"
 #include "ssimarch/analytic/closed_form.hpp"
 #include "ssimarch/surface/primitives.hpp"
 #include "ssimarch/trace/trace_all.hpp"
@@ -76,10 +77,10 @@ TEST(RuledSection, VivianiIsOneClosedCurveThroughItsNode) {
   ASSERT_EQ(r.result.curves.size(), 1u);
   EXPECT_TRUE(r.result.curves[0].closed);
   // integral_0^{4 pi} sqrt(1 + cos^2(s/2)) ds = 4 sqrt(2) E(1/2) (Viviani's curve).
-  EXPECT_NEAR(r.result.curves[0].length, 15.280791156174, 1e-9);
+  EXPECT_THAT(r.result.curves[0], testing::HasLength(15.280791156174, 1e-9));
   ASSERT_EQ(r.result.singular_points.size(), 1u);
   EXPECT_EQ(r.result.singular_points[0].type, SingularType::kNode);
-  EXPECT_NEAR((r.result.singular_points[0].p - Vec3(0, -2, 0)).norm(), 0, 1e-10);
+  EXPECT_THAT(r.result.singular_points[0].p, testing::IsNear(Vec3(0, -2, 0), 1e-10));
 }
 
 // The closed form against the tracer on the same pair: curve count, closed flags, lengths.

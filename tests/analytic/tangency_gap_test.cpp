@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "testing/matchers.hpp"
 #include "ssimarch/analytic/closed_form.hpp"
 #include "ssimarch/surface/primitives.hpp"
 
@@ -45,9 +46,10 @@ TEST(TangencyGap, SpherePlaneNearContactIsTheExactCircle) {
     EXPECT_TRUE(r.result.isolated_points.empty());
     EXPECT_EQ(r.conics[0].type, ConicType::kCircle);
     EXPECT_NEAR(r.conics[0].a, radius, radius_tolerance(R, radius));
-    EXPECT_NEAR((r.conics[0].center - (centre - (R - g) * n)).norm(), 0, 1e-14);
+    EXPECT_THAT(r.conics[0].center, testing::IsNear((centre - (R - g) * n), 1e-14));
     EXPECT_TRUE(r.result.curves[0].closed);
-    EXPECT_NEAR(r.result.curves[0].length, 2 * kPi * radius, 2 * kPi * radius_tolerance(R, radius) + 1e-9 * radius);
+    EXPECT_THAT(r.result.curves[0],
+                testing::HasLength(2 * kPi * radius, 2 * kPi * radius_tolerance(R, radius) + 1e-9 * radius));
   }
 }
 
@@ -60,7 +62,7 @@ TEST(TangencyGap, SpherePlaneWithinTheToleranceIsOneContactPoint) {
     const auto r = solve(Sphere(centre, 1), Plane(centre - (1 - g) * n, n, ParamDomain{{-3, 3}, {-3, 3}}));
     EXPECT_TRUE(r.result.curves.empty());
     ASSERT_EQ(r.result.isolated_points.size(), 1u);
-    EXPECT_NEAR((r.result.isolated_points[0].p - (centre - n)).norm(), 0, 1e-12);
+    EXPECT_THAT(r.result.isolated_points[0].p, testing::IsNear((centre - n), 1e-12));
   }
   // Ten tolerances short of the sphere: nothing.
   const auto miss = solve(Sphere(centre, 1), Plane(centre - (1 + 10 * kTolerance) * n, n, ParamDomain{{-3, 3}, {-3, 3}}));
@@ -111,7 +113,7 @@ TEST(TangencyGap, TwoSpheresDecideContactByTheSameGap) {
   const auto touch = solve(Sphere(c1, R1), Sphere(c1 + (R1 + R2) * axis, R2));
   EXPECT_TRUE(touch.result.curves.empty());
   ASSERT_EQ(touch.result.isolated_points.size(), 1u);
-  EXPECT_NEAR((touch.result.isolated_points[0].p - (c1 + R1 * axis)).norm(), 0, 1e-12);
+  EXPECT_THAT(touch.result.isolated_points[0].p, testing::IsNear((c1 + R1 * axis), 1e-12));
 }
 
 // A sphere in a coaxial cylinder 1e-10 narrower than it: two circles 2 sqrt(2 R g) apart, not the

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <numeric>
 
+#include "testing/matchers.hpp"
 #include "ssimarch/problem/closest_point.hpp"
 #include "ssimarch/problem/gauss_newton.hpp"
 #include "ssimarch/surface/derivatives.hpp"
@@ -50,8 +51,8 @@ TEST(QuinticHermite, ReproducesAQuinticAndLowersTheDegreeWhereDataAreMissing) {
   const double a = 0.3, h = 0.7;
   const QuinticPiece p = quintic_hermite(q.end(a), q.end(a + h), h);
   for (double u = 0; u <= 1; u += 0.05) {
-    EXPECT_LT((p.at(u) - q.at(a + u * h)).norm(), 1e-14);
-    EXPECT_LT((p.derivative(u) - q.d1(a + u * h)).norm(), 1e-12);
+    EXPECT_THAT(p.at(u), testing::IsNear(q.at(a + u * h), 1e-14));
+    EXPECT_THAT(p.derivative(u), testing::IsNear(q.d1(a + u * h), 1e-12));
   }
   // A cubic is reproduced from positions and first derivatives only (orders 1 and 1).
   Quintic cubic = q;
@@ -60,7 +61,7 @@ TEST(QuinticHermite, ReproducesAQuinticAndLowersTheDegreeWhereDataAreMissing) {
   HermiteEnd ea = cubic.end(a), eb = cubic.end(a + h);
   ea.order = eb.order = 1;
   const QuinticPiece pc = quintic_hermite(ea, eb, h);
-  for (double u = 0; u <= 1; u += 0.1) EXPECT_LT((pc.at(u) - cubic.at(a + u * h)).norm(), 1e-14);
+  for (double u = 0; u <= 1; u += 0.1) EXPECT_THAT(pc.at(u), testing::IsNear(cubic.at(a + u * h), 1e-14));
 }
 
 // Pieces of a smooth closed curve (circle in the first two coordinates, data in four).
@@ -111,7 +112,7 @@ TEST(BSplineFromPieces, IsExactWithC2C1AndC0Knots) {
   EXPECT_EQ(mult, (std::vector<int>{6, 3, 5, 4, 3, 6}));
   EXPECT_EQ(sum(mult), static_cast<int>(b.control_points.size()) + b.degree + 1);
   EXPECT_NEAR(b.end(), 3.0, 1e-15);
-  for (double t = 0; t <= 3.0; t += 0.0137) EXPECT_LT((b.at(t) - piecewise_at(pieces, t)).norm(), 1e-13) << t;
+  for (double t = 0; t <= 3.0; t += 0.0137) EXPECT_THAT(b.at(t), testing::IsNear(piecewise_at(pieces, t), 1e-13)) << t;
 }
 
 TEST(BSplineFromPieces, ClosedSmoothChainIsOnePeriodicSpline) {
@@ -128,7 +129,7 @@ TEST(BSplineFromPieces, ClosedSmoothChainIsOnePeriodicSpline) {
   for (std::size_t j = 0; j < 5; ++j) EXPECT_EQ(b.control_points[n - 5 + j], b.control_points[j]);
   EXPECT_NEAR(b.start(), 0, 1e-15);
   EXPECT_NEAR(b.end(), T, 1e-14);
-  for (double t = 0; t <= T; t += 0.0191) EXPECT_LT((b.at(t) - piecewise_at(pieces, t)).norm(), 1e-13) << t;
+  for (double t = 0; t <= T; t += 0.0191) EXPECT_THAT(b.at(t), testing::IsNear(piecewise_at(pieces, t), 1e-13)) << t;
 }
 
 // Distance from P to Viviani's curve c(s) = (sin s, -1 - cos s, 2 sin(s/2)), s in [0, 4 pi):
@@ -292,7 +293,7 @@ TEST(FitCurveSpline, SmoothLoopIsPeriodicAndRefinesToTheTolerance) {
       const double to_plane = std::fabs(P.z() - 0.5 * P.y() - 1) / std::sqrt(1.25);
       dense = std::max({dense, to_cylinder, to_plane});
       const VecX uv = sp.pcurves[0].at(t);
-      EXPECT_LE((to_vec3(problem.first().point(uv[0], uv[1])) - P).norm(), 2 * sp.max_deviation + 1e-14);
+      EXPECT_THAT(to_vec3(problem.first().point(uv[0], uv[1])), testing::IsNear(P, 2 * sp.max_deviation + 1e-14));
     }
     EXPECT_LE(dense, sp.max_deviation + 1e-14) << tol;
   }

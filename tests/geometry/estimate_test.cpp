@@ -3,6 +3,7 @@
 #include "ssimarch/geometry/estimate.hpp"
 
 #include <gtest/gtest.h>
+#include "testing/matchers.hpp"
 
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -40,7 +41,7 @@ TEST(Circles, OracleConstructions) {
   Circle geo = wu_andrade_circle(p, tp, q, tq, false), lit = wu_andrade_circle(p, tp, q, tq, true);
   ASSERT_TRUE(geo.valid && lit.valid);
   auto lit_want = e["value"]["literal"].get<std::vector<double>>();
-  EXPECT_LT((lit.center - Vec3(lit_want[0], lit_want[1], lit_want[2])).norm(), 1e-11);
+  EXPECT_THAT(lit.center, testing::IsNear(Vec3(lit_want[0], lit_want[1], lit_want[2]), 1e-11));
   EXPECT_LT(geo.center.norm(), 1e-15);
   EXPECT_NEAR(geo.radius, 1.0, 1e-15);
   EXPECT_NEAR(lit.radius, 1.0, 1e-15);
@@ -96,8 +97,8 @@ void expect_convergence(const Curve& c, double s0, EstimateCircle kind, double f
       EXPECT_LT(ek, final_tol);
       EXPECT_LT(et, final_tol);
       EXPECT_LT(std::fabs(g.kappa_prime - exact.kappa_prime), final_tol);
-      EXPECT_LT((g.n - exact.n).norm(), 10 * final_tol);
-      EXPECT_LT((g.b - exact.b).norm(), 10 * final_tol);
+      EXPECT_THAT(g.n, testing::IsNear(exact.n, 10 * final_tol));
+      EXPECT_THAT(g.b, testing::IsNear(exact.b, 10 * final_tol));
       EXPECT_GT(g.tau * exact.tau, 0.0) << "torsion sign";
     }
   }
@@ -143,7 +144,7 @@ TEST(Estimate, TorsionSignFollowsHandedness) {
     EXPECT_GT(r.tau, 0.0);
     EXPECT_LT(l.tau, 0.0);
     // n points to the axis (the centre of curvature) in every variant.
-    EXPECT_LT((r.n - Vec3(-1, 0, 0)).norm(), 0.01);
+    EXPECT_THAT(r.n, testing::IsNear(Vec3(-1, 0, 0), 0.01));
   }
 }
 

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "testing/matchers.hpp"
 #include "ssimarch/geometry/curve_geometry.hpp"
 #include "ssimarch/problem/curve_jet.hpp"
 #include "ssimarch/surface/plane.hpp"
@@ -26,11 +27,11 @@ TEST(FrenetFromJet, CircleOfRadiusTwoAgreesWithTheGeneralFormulas) {
   EXPECT_NEAR(f.kappa, 0.5, 1e-14);
   EXPECT_NEAR(f.tau, 0.0, 1e-14);
   EXPECT_NEAR(f.kappa_prime, 0.0, 1e-14);
-  EXPECT_NEAR((f.n - Vec3(-1, 0, 0)).norm(), 0.0, 1e-14);
+  EXPECT_THAT(f.n, testing::IsNear(Vec3(-1, 0, 0), 1e-14));
   const CurveGeometry g = frenet_from_derivatives(jet.alpha[1], 2.0 * jet.alpha[2], 6.0 * jet.alpha[3]);
   EXPECT_NEAR(f.kappa, g.kappa, 1e-14);
-  EXPECT_NEAR((f.n - g.n).norm(), 0.0, 1e-14);
-  EXPECT_NEAR((f.b - g.b).norm(), 0.0, 1e-14);
+  EXPECT_THAT(f.n, testing::IsNear(g.n, 1e-14));
+  EXPECT_THAT(f.b, testing::IsNear(g.b, 1e-14));
 }
 
 TEST(FrenetFromJet, AnOrder2JetLeavesTorsionAndKappaPrimeUndetermined) {

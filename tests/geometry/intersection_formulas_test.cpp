@@ -3,6 +3,7 @@
 #include "ssimarch/geometry/intersection_formulas.hpp"
 
 #include <gtest/gtest.h>
+#include "testing/matchers.hpp"
 
 #include <random>
 #include <string>
@@ -17,9 +18,11 @@ using namespace testing;
 void expect_geometry(const CurveGeometry& got, const CurveGeometry& want, double tol, const std::string& what,
                      bool third_order = true) {
   EXPECT_NEAR(got.kappa, want.kappa, tol) << what;
-  EXPECT_LT((got.t - want.t).norm(), tol) << what << " t=" << got.t.transpose() << " want " << want.t.transpose();
-  EXPECT_LT((got.n - want.n).norm(), tol) << what << " n=" << got.n.transpose() << " want " << want.n.transpose();
-  EXPECT_LT((got.b - want.b).norm(), tol) << what;
+  EXPECT_THAT(got.t, testing::IsNear(want.t, tol))
+      << what << " t=" << got.t.transpose() << " want " << want.t.transpose();
+  EXPECT_THAT(got.n, testing::IsNear(want.n, tol))
+      << what << " n=" << got.n.transpose() << " want " << want.n.transpose();
+  EXPECT_THAT(got.b, testing::IsNear(want.b, tol)) << what;
   if (third_order) {
     EXPECT_NEAR(got.tau, want.tau, tol) << what;
     EXPECT_NEAR(got.kappa_prime, want.kappa_prime, tol) << what;
@@ -54,7 +57,7 @@ TEST(FrenetFromDerivatives, ClosedFormsOfHelixAndViviani) {
     EXPECT_NEAR(h.kappa_prime, 0.0, 1e-15);
   }
   CurveGeometry v = exact_frenet(Viviani{}, std::numbers::pi / 2);
-  EXPECT_LT((v.point - kP).norm(), 1e-15);
+  EXPECT_THAT(v.point, testing::IsNear(kP, 1e-15));
   expect_geometry(v, viviani_truth(), 1e-14, "viviani closed form");
   // A straight line has no frame: status, not zeros.
   CurveGeometry line = frenet_from_derivatives(Vec3(1, 2, 3), Vec3(2, 4, 6), Vec3(0, 0, 0));
@@ -71,15 +74,15 @@ TEST(Viviani, SeedValuesByEveryClosedFormMethod) {
   const double pi = std::numbers::pi;
   const SurfaceLocal fp = parametric_local(UnitSphereParametric{}, pi / 4, pi / 4);
   const SurfaceLocal gp = parametric_local(VivianiCylinderParametric{}, pi / 2, kS2 / 2);
-  ASSERT_LT((local_point(fp) - kP).norm(), 1e-15);
-  ASSERT_LT((local_point(gp) - kP).norm(), 1e-15);
+  ASSERT_THAT(local_point(fp), testing::IsNear(kP, 1e-15));
+  ASSERT_THAT(local_point(gp), testing::IsNear(kP, 1e-15));
 
   // Intermediate values of seed 004 (oracle s004.normal_curvatures, s004.lambda_third, s004.alpha3).
   const Vec3 nf = unit_normal(f), ng = unit_normal(g);
   EXPECT_NEAR(normal_curvature(f, kSeedT, nf), -1.0, 1e-14);
   EXPECT_NEAR(normal_curvature(g, kSeedT, ng), -4.0 / 3.0, 1e-14);
   const Vec3 c2 = want.kappa * want.n;
-  EXPECT_LT((c2 - Vec3(-2.0 / 9, -4.0 / 3, -2 * kS2 / 9)).norm(), 1e-14);
+  EXPECT_THAT(c2, testing::IsNear(Vec3(-2.0 / 9, -4.0 / 3, -2 * kS2 / 9), 1e-14));
   EXPECT_NEAR(third_normal(f, kSeedT, c2, nf), 0.0, 1e-14);
   EXPECT_NEAR(third_normal(g, kSeedT, c2, ng), -4 * kS6 / 9, 1e-14);
   // The same projections on the parametric forms.
@@ -109,7 +112,7 @@ TEST(Viviani, SeedValuesByEveryClosedFormMethod) {
   for (const CurveGeometry& r : {wr, yr}) {
     EXPECT_NEAR(r.kappa_prime, -want.kappa_prime, tol);
     EXPECT_NEAR(r.tau, want.tau, tol);
-    EXPECT_LT((r.n - want.n).norm(), tol);
+    EXPECT_THAT(r.n, testing::IsNear(want.n, tol));
     EXPECT_LT((r.b + want.b).norm(), tol);
   }
 }
@@ -163,7 +166,8 @@ std::vector<PairAtPoint> pairs_at(double s) {
     r.push_back({"helix pp", cyl, hel, truth});
     r.push_back({"helix pi", hel, cyli, truth});
   }
-  for (auto& pr : r) EXPECT_LT((local_point(pr.first) - local_point(pr.second)).norm(), 1e-13) << pr.name << " s=" << s;
+  for (auto& pr : r)
+    EXPECT_THAT(local_point(pr.first), testing::IsNear(local_point(pr.second), 1e-13)) << pr.name << " s=" << s;
   return r;
 }
 
@@ -260,7 +264,7 @@ TEST(Tangential, SphereCylinderDoublePointC2) {
     std::vector<CurveGeometry> branches = ye_maekawa_tangential(a, b, nullptr, {});
     EXPECT_EQ(branches.size(), 2u) << name;
     Vec3 t = intersection_tangent(a, b, &b1.t, {});
-    EXPECT_LT((t - b1.t).norm(), 1e-12) << name;
+    EXPECT_THAT(t, testing::IsNear(b1.t, 1e-12)) << name;
   }
 }
 
@@ -324,7 +328,7 @@ TEST(Tangential, OraclePairBothFormsMatchTheExactBranches) {
     for (const CurveGeometry& b : results[1])
       if (std::fabs(std::fabs(a.t.dot(b.t)) - 1) < 1e-12) {
         found = true;
-        EXPECT_LT((a.kappa * a.n - b.kappa * b.n).norm(), 1e-12);
+        EXPECT_THAT(a.kappa * a.n, testing::IsNear(b.kappa * b.n, 1e-12));
       }
     EXPECT_TRUE(found);
   }

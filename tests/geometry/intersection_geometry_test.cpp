@@ -7,6 +7,7 @@
 #include <random>
 
 #include "geometry/test_curves.hpp"
+#include "testing/matchers.hpp"
 #include "ssimarch/surface/expr_surface.hpp"
 
 namespace ssimarch {
@@ -79,9 +80,9 @@ void expect_geometry(const CurveGeometry& got, const CurveGeometry& want, double
   EXPECT_NEAR(got.kappa, want.kappa, tol) << what;
   EXPECT_NEAR(got.tau, want.tau, tol) << what;
   EXPECT_NEAR(got.kappa_prime, want.kappa_prime, tol) << what;
-  EXPECT_LT((got.t - want.t).norm(), tol) << what;
-  EXPECT_LT((got.n - want.n).norm(), tol) << what;
-  EXPECT_LT((got.b - want.b).norm(), tol) << what;
+  EXPECT_THAT(got.t, testing::IsNear(want.t, tol)) << what;
+  EXPECT_THAT(got.n, testing::IsNear(want.n, tol)) << what;
+  EXPECT_THAT(got.b, testing::IsNear(want.b, tol)) << what;
 }
 
 const std::array<GeometryMethod, 3> kClosedForm{GeometryMethod::kExact, GeometryMethod::kYeMaekawa,
@@ -95,7 +96,7 @@ TEST(EvaluateGeometry, SeedVivianiAllMethodsAllPairKinds) {
   for (PairKind kind : {PairKind::kImplicitImplicit, PairKind::kParametricImplicit, PairKind::kParametricParametric}) {
     Problem pb = viviani(kind);
     VecX x = viviani_x(kind, t0);
-    ASSERT_LT((pb.point(x) - want.point).norm(), 1e-15);
+    ASSERT_THAT(pb.point(x), testing::IsNear(want.point, 1e-15));
     GeometryContext ctx;
     ctx.orientation = want.t;
     for (GeometryMethod m : kClosedForm) {
@@ -104,7 +105,7 @@ TEST(EvaluateGeometry, SeedVivianiAllMethodsAllPairKinds) {
       ASSERT_EQ(g.status, GeometryStatus::kOk) << what;
       expect_geometry(g, want, 1e-12, what);
       EXPECT_NEAR(g.theta, kPi / 3, 1e-14) << what;
-      EXPECT_LT((g.point - want.point).norm(), 1e-15);
+      EXPECT_THAT(g.point, testing::IsNear(want.point, 1e-15));
     }
     CurveGeometry w = evaluate_geometry(pb, x, GeometryMethod::kWillmore, ctx);
     if (kind == PairKind::kImplicitImplicit) {
@@ -129,7 +130,7 @@ TEST(EvaluateGeometry, SeedVivianiAllMethodsAllPairKinds) {
         double err = std::max({std::fabs(e.kappa - want.kappa), std::fabs(e.tau - want.tau),
                                std::fabs(e.kappa_prime - want.kappa_prime)});
         EXPECT_LT(err, 5 * step) << to_string(m) << " step " << step;
-        EXPECT_LT((e.t - want.t).norm(), 1e-12);
+        EXPECT_THAT(e.t, testing::IsNear(want.t, 1e-12));
         if (m == GeometryMethod::kEstimate) {
           EXPECT_LT(err, last);
           last = err;
@@ -216,7 +217,7 @@ TEST(Table33, EstimateConvergesAtC1AndAtTheSingularPointC2) {
       EXPECT_LT(et, std::max(last_t, 1e-9));
       last_k = ek;
       last_t = et;
-      EXPECT_LT((g.t - c.exact.t).norm(), 1e-12);
+      EXPECT_THAT(g.t, testing::IsNear(c.exact.t, 1e-12));
       // mixed = the estimate wherever sin(theta) < 0.1, in particular at C2(0).
       if (c.name != "C1(0)") {
         CurveGeometry m = evaluate_geometry(c.problem, c.x(0.0), GeometryMethod::kMixed, ctx);
@@ -239,7 +240,7 @@ TEST(Table33, EstimateConvergesAtC1AndAtTheSingularPointC2) {
   EXPECT_EQ(ym.status, GeometryStatus::kTangentialSecondOrder);
   EXPECT_NEAR(ym.kappa, 0.5, 1e-12);
   EXPECT_TRUE(std::isnan(ym.tau));
-  EXPECT_LT((ym.t - cases[1].exact.t).norm(), 1e-12);
+  EXPECT_THAT(ym.t, testing::IsNear(cases[1].exact.t, 1e-12));
 }
 
 TEST(Sampling, ProjectAndWalkAlongTheCurveThroughASingularPoint) {
@@ -248,7 +249,7 @@ TEST(Sampling, ProjectAndWalkAlongTheCurveThroughASingularPoint) {
   auto x = project_to_curve(pb, P + Vec3(3e-3, -2e-3, 1e-3));
   ASSERT_TRUE(x.has_value());
   EXPECT_LT(pb.linearize(*x).distance, 1e-12);
-  EXPECT_LT((pb.point(*x) - P).norm(), 1e-2);
+  EXPECT_THAT(pb.point(*x), testing::IsNear(P, 1e-2));
   // At the double point C2(0) the samples stay on the branch of the given tangent.
   for (PairKind kind : {PairKind::kParametricParametric, PairKind::kImplicitImplicit}) {
     Problem p2 = pair2(kind);
@@ -261,7 +262,7 @@ TEST(Sampling, ProjectAndWalkAlongTheCurveThroughASingularPoint) {
     for (const VecX& xi : sc.previous) {
       Vec3 p = p2.point(xi);
       EXPECT_LT(p.z(), 0.0);  // C2(s<0) has z < 0, its mirror branch z > 0
-      EXPECT_LT((p - curve_point(CurveC2{}, 2 * std::asin(p.z() / 2))).norm(), 1e-12);
+      EXPECT_THAT(p, testing::IsNear(curve_point(CurveC2{}, 2 * std::asin(p.z() / 2)), 1e-12));
     }
     EXPECT_GT(p2.point(sc.next[0]).z(), 0.0);
     CurveGeometry e = evaluate_geometry(p2, pair2_x(kind, 0.0), GeometryMethod::kEstimate, sc);

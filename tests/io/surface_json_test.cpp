@@ -8,6 +8,7 @@
 #include <random>
 #include <vector>
 
+#include "testing/matchers.hpp"
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/surface/derivatives.hpp"
 
@@ -39,7 +40,7 @@ TEST(SurfaceJson, IssueExampleScene) {
   EXPECT_FALSE(cyl.domain().periodic_v);
   EXPECT_DOUBLE_EQ(cyl.domain().u.hi, 2 * kPi);
   EXPECT_EQ(cyl.domain().v.lo, -3);
-  EXPECT_LE((point(cyl, kPi / 2, 0.25) - Vec3(0, 0, 0.25)).norm(), 1e-15);
+  EXPECT_THAT(point(cyl, kPi / 2, 0.25), testing::IsNear(Vec3(0, 0, 0.25), 1e-15));
   const Surface cyl2 = surface_from_json(scene["cyl2"], kConstants, "surfaces.cyl2");
   EXPECT_EQ(cyl2.type_name(), "implicit");
   EXPECT_FALSE(cyl2.is_parametric());
@@ -81,13 +82,13 @@ TEST(SurfaceJson, EveryPrimitive) {
   EXPECT_DOUBLE_EQ(parse(R"j({"plane": {"point": [0,0,0], "normal": [0,0,1]}})j").domain().v.hi, 1);
   EXPECT_DOUBLE_EQ(parse(R"j({"cone": {"apex": [0,0,0], "axis": [0,0,1], "half_angle": 0.3}})j").domain().v.lo, 0);
   const Surface sph = parse(R"j({"sphere": {"center": [1,0,0], "radius": 1, "axis": [1,1,0], "reference": [0,0,1]}})j");
-  EXPECT_LE((sph.get_if<Sphere>()->frame().e0 - Vec3::UnitZ()).norm(), 1e-15);
+  EXPECT_THAT(sph.get_if<Sphere>()->frame().e0, testing::IsNear(Vec3::UnitZ(), 1e-15));
 }
 
 TEST(SurfaceJson, Patches) {
   const Surface b = parse(R"j({"bezier": {"control_points": [[[0,0,0],[0,1,0]],[[1,0,0],[1,1,"R/2"]]]}})j");
   EXPECT_EQ(b.type_name(), "bezier");
-  EXPECT_LE((point(b, 0.5, 0.5) - Vec3(0.5, 0.5, 0.25)).norm(), 1e-15);
+  EXPECT_THAT(point(b, 0.5, 0.5), testing::IsNear(Vec3(0.5, 0.5, 0.25), 1e-15));
   const Surface rb = parse(R"j({"bezier": {"control_points": [[[1,0,0],[1,0,1]],[[1,1,0],[1,1,1]],[[0,1,0],[0,1,1]]],
                                            "weights": [[1,1],["sqrt(2)/2","sqrt(2)/2"],[1,1]]}})j");
   const Vec3 p = point(rb, 0.3, 0.6);
@@ -96,10 +97,10 @@ TEST(SurfaceJson, Patches) {
                                         "control_points": [[[1,0,0],[1,0,1]],[[1,1,0],[1,1,1]],[[0,1,0],[0,1,1]]],
                                         "weights": [[1,1],[0.7071067811865476,0.7071067811865476],[1,1]]}})j");
   EXPECT_EQ(n.type_name(), "bspline");
-  EXPECT_LE((point(n, 0.3, 0.6) - p).norm(), 1e-15);
+  EXPECT_THAT(point(n, 0.3, 0.6), testing::IsNear(p, 1e-15));
   const Surface bs = parse(R"j({"bspline": {"degree": 1, "knots_u": [0,0,1,1], "knots_v": [0,0,"h",1,1],
                                          "control_points": [[[0,0,0],[0,1,0],[0,2,1]],[[1,0,0],[1,1,0],[1,2,1]]]}})j");
-  EXPECT_LE((point(bs, 0.5, 0.75) - Vec3(0.5, 1.5, 0.5)).norm(), 1e-15);
+  EXPECT_THAT(point(bs, 0.5, 0.75), testing::IsNear(Vec3(0.5, 1.5, 0.5), 1e-15));
 }
 
 // The InputError's where() and a fragment of its message.

@@ -10,6 +10,7 @@
 #include <regex>
 #include <sstream>
 
+#include "ssimarch/core/contract.hpp"
 #include "ssimarch/io/porosity_vtk.hpp"
 #include "ssimarch/io/scene.hpp"
 #include "ssimarch/io/vtk_xml.hpp"
@@ -96,10 +97,10 @@ TEST(VtkXml, ArraysOfTheWrongLengthAreRefused) {
   d.points = {Vec3(0, 0, 0)};
   d.point_data = {VtkArray::real("kappa", {1, 2})};
   std::ostringstream os;
-  EXPECT_THROW(write_vtp(os, d, VtkEncoding::kAscii), std::invalid_argument);
+  EXPECT_THROW(write_vtp(os, d, VtkEncoding::kAscii), ContractViolation);
   d.point_data.clear();
   d.lines = {{0, 1}};
-  EXPECT_THROW(write_vtp(os, d, VtkEncoding::kAscii), std::invalid_argument);
+  EXPECT_THROW(write_vtp(os, d, VtkEncoding::kAscii), ContractViolation);
 }
 
 TEST(VtkXml, ImageDataAndMultiblockHeaders) {
@@ -112,7 +113,7 @@ TEST(VtkXml, ImageDataAndMultiblockHeaders) {
   EXPECT_NE(os.str().find("WholeExtent=\"0 1 0 0 0 2\" Origin=\"0.25 0 1.5\" Spacing=\"0.5 1 1\""), std::string::npos);
   EXPECT_EQ(array_body(os.str(), "porosity"), "0 1 2 3 4 5");
   m.z = {1.5, 2.5, 3.6};
-  EXPECT_THROW(porosity_map_image_data(m), std::invalid_argument);
+  EXPECT_THROW(porosity_map_image_data(m), ContractViolation);
   std::ostringstream vtm;
   write_vtm(vtm, {{"curves", "a.vtp"}, {"points", "a_points.vtp"}});
   EXPECT_NE(vtm.str().find("<DataSet index=\"1\" name=\"points\" file=\"a_points.vtp\"/>"), std::string::npos);

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "testing/matchers.hpp"
 #include "testing/surface_pairs.hpp"
 #include "ssimarch/surface/sphere.hpp"
 #include "ssimarch/surface/torus.hpp"
@@ -54,7 +55,7 @@ TEST(Corrector, BothConvergeOnEveryPairKindAndCountTheirWork) {
         EXPECT_LE(L.distance, 1e-12);
         EXPECT_NEAR(r.distance, L.distance, 1e-15);
         // Landed near the point it started from (no jump along or off the curve).
-        EXPECT_LT((L.point - c.problem.point(c.on_curve)).norm(), 5 * size);
+        EXPECT_THAT(L.point, testing::IsNear(c.problem.point(c.on_curve), 5 * size));
         // Quadratic convergence: few iterations, fewer from the closer guess.
         EXPECT_LE(r.iterations, size > 1e-3 ? 5 : 3);
         EXPECT_GE(r.linearizations, r.iterations);
@@ -77,7 +78,7 @@ TEST(Corrector, ProjectionLandsWhereTheSeedSays) {
   CorrectorResult r = TangentPlaneProjection{}.correct(P, Vec3(0.3, 0.2, -0.1), CorrectorOptions{1e-12, 12});
   ASSERT_EQ(r.status, CorrectorStatus::kConverged);
   EXPECT_EQ(r.iterations, 1);
-  EXPECT_NEAR((r.x - Vec3(0.3, 0, 0)).norm(), 0.0, 1e-15);
+  EXPECT_THAT(r.x, testing::IsNear(Vec3(0.3, 0, 0), 1e-15));
 }
 
 TEST(Corrector, SingularAndDivergedAreReported) {

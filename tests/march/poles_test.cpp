@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "testing/matchers.hpp"
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/march/model_size.hpp"
 #include "ssimarch/march/tracer.hpp"
@@ -53,8 +54,8 @@ void expect_one_closed_curve(const TraceResult& r, double length, double rel) {
 TEST(DegenerateEdges, SpherePolesConeApexAndTheRationalSphere) {
   const auto sphere = degenerate_edges(Sphere(Vec3(1, 2, 3), 2));
   ASSERT_EQ(sphere.size(), 2u);
-  EXPECT_NEAR((sphere[0].point - Vec3(1, 2, 1)).norm(), 0.0, 1e-15);
-  EXPECT_NEAR((sphere[1].point - Vec3(1, 2, 5)).norm(), 0.0, 1e-15);
+  EXPECT_THAT(sphere[0].point, testing::IsNear(Vec3(1, 2, 1), 1e-15));
+  EXPECT_THAT(sphere[1].point, testing::IsNear(Vec3(1, 2, 5), 1e-15));
   EXPECT_TRUE(degenerate_edges(Cylinder(Vec3::Zero(), Vec3::UnitZ(), 1, {-1, 1})).empty());
   const auto cone = degenerate_edges(Cone(Vec3::Zero(), Vec3::UnitZ(), 0.5, {0, 1}));
   ASSERT_EQ(cone.size(), 1u);
@@ -62,7 +63,7 @@ TEST(DegenerateEdges, SpherePolesConeApexAndTheRationalSphere) {
   const Surface nurbs = nurbs_sphere();
   const auto poles = degenerate_edges(nurbs);
   ASSERT_EQ(poles.size(), 2u);
-  EXPECT_NEAR((poles[0].point - Vec3(0, 0, -1)).norm(), 0.0, 1e-15);
+  EXPECT_THAT(poles[0].point, testing::IsNear(Vec3(0, 0, -1), 1e-15));
   // The patch's seam u = 0 ~ 1 is one curve: the patch is periodic in u (bspline_surface.hpp),
   // so the sampled seam test has nothing left to add; v runs pole to pole.
   EXPECT_TRUE(nurbs.domain().periodic_u);
@@ -175,7 +176,7 @@ TEST(Closure, LoopFarSmallerThanTheStepClosesOnce) {
   ASSERT_TRUE(uv.has_value());
   VecX x(2);
   x << (*uv)[0], (*uv)[1];
-  ASSERT_LT((P.point(x) - on).norm(), 1e-15);
+  ASSERT_THAT(P.point(x), testing::IsNear(on, 1e-15));
   const CurvePoint start{x, P.point(x), curve_jet_dynamic(P, x, 1).tangent()};
   TraceStats stats;
   MarchLimits limits = tracer.limits();

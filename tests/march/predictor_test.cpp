@@ -8,6 +8,7 @@
 #include <cmath>
 #include <string>
 
+#include "testing/matchers.hpp"
 #include "testing/surface_pairs.hpp"
 #include "exact_curves.hpp"
 #include "ssimarch/geometry/curve_geometry.hpp"
@@ -174,7 +175,7 @@ TEST(Predictor, FrameFromTheJetMatchesTable33) {
   EXPECT_NEAR(f.tau, -0.1254355400696864, 1e-12);  // standard sign; the thesis prints +0.1254 (do Carmo)
   EXPECT_NEAR(f.kappa_prime, 0.0, 1e-12);
   EXPECT_NEAR(f.t.dot(f.n), 0.0, 1e-14);
-  EXPECT_NEAR((f.b - f.t.cross(f.n)).norm(), 0.0, 1e-15);
+  EXPECT_THAT(f.b, testing::IsNear(f.t.cross(f.n), 1e-15));
 }
 
 TEST(Predictor, PolynomialIsTheCubicTaylorPolynomialAndHelixMatchesItsClosedForm) {
@@ -185,12 +186,12 @@ TEST(Predictor, PolynomialIsTheCubicTaylorPolynomialAndHelixMatchesItsClosedForm
     Prediction poly = Order3PolynomialPredictor{}.predict(c.problem, st, L);
     const Vec3 alpha2 = 2.0 * st.here.alpha[2], alpha3 = 6.0 * st.here.alpha[3];
     Vec3 cubic = f.point + L * f.t + (L * L / 2) * alpha2 + (L * L * L / 6) * alpha3;
-    EXPECT_NEAR((poly.point - cubic).norm(), 0.0, 1e-14);
+    EXPECT_THAT(poly.point, testing::IsNear(cubic, 1e-14));
     // Standard-torsion closed form (thesis §4.2, eq 2.9).
     double w = std::sqrt(f.kappa * f.kappa + f.tau * f.tau), k = f.kappa, t = f.tau;
     Vec3 helix = f.point + (t * t * L / (w * w) + k * k * std::sin(w * L) / (w * w * w)) * f.t +
                  (k / (w * w)) * (1 - std::cos(w * L)) * f.n + (k * t / (w * w)) * (L - std::sin(w * L) / w) * f.b;
-    EXPECT_NEAR((OsculatingHelixPredictor{}.predict(c.problem, st, L).point - helix).norm(), 0.0, 1e-13);
+    EXPECT_THAT(OsculatingHelixPredictor{}.predict(c.problem, st, L).point, testing::IsNear(helix, 1e-13));
   }
 }
 
@@ -217,11 +218,11 @@ TEST(Predictor, CirclesFallBackToTheTangentStepWithoutAPreviousPoint) {
   for (const AnyPredictor& p : {AnyPredictor(OsculatingCirclePredictor{}), AnyPredictor(WuAndradeCirclePredictor{})}) {
     Prediction r = predict(p, line, ls, 0.1);
     EXPECT_TRUE(r.fallback);
-    EXPECT_NEAR((r.point - Vec3(0.6, 0, 0)).norm(), 0.0, 1e-15);
+    EXPECT_THAT(r.point, testing::IsNear(Vec3(0.6, 0, 0), 1e-15));
   }
   // Helix and polynomial on a straight line: the line itself.
-  EXPECT_NEAR((OsculatingHelixPredictor{}.predict(line, ls, 0.1).point - Vec3(0.6, 0, 0)).norm(), 0.0, 1e-15);
-  EXPECT_NEAR((Order3PolynomialPredictor{}.predict(line, ls, 0.1).point - Vec3(0.6, 0, 0)).norm(), 0.0, 1e-15);
+  EXPECT_THAT(OsculatingHelixPredictor{}.predict(line, ls, 0.1).point, testing::IsNear(Vec3(0.6, 0, 0), 1e-15));
+  EXPECT_THAT(Order3PolynomialPredictor{}.predict(line, ls, 0.1).point, testing::IsNear(Vec3(0.6, 0, 0), 1e-15));
 }
 
 // --- seed 000, Example 1 (seed 000, Example 1; oracle s000.ex1.*) ---------------------------------------
@@ -240,20 +241,20 @@ TEST(Seed000Example1, HelixWithExactTangents) {
     OsculatingCircle c = osculating_circle(P, Q, u, v, origin);
     ASSERT_EQ(c.status, CircleStatus::kOk);
     EXPECT_EQ(c.how, OsculatingCircle::Equidistant::kSolved);
-    EXPECT_NEAR((c.centre - Vec3(-0.0737728760483, -1.04030230587, 1.5)).norm(), 0.0, 1e-10);
+    EXPECT_THAT(c.centre, testing::IsNear(Vec3(-0.0737728760483, -1.04030230587, 1.5), 1e-10));
     EXPECT_NEAR(c.radius, 2.041606976513223, 1e-11);
     EXPECT_NEAR((Q - c.centre).norm(), c.radius, 1e-12);  // equidistant
     Vec3 A = osculating_circle_arc_point(P, Q, c.centre, c.radius, 1.0);
-    EXPECT_NEAR((A - Vec3(-1.0226997942, 0.399225745928, 2.59336898559)).norm(), 0.0, 1e-9);
+    EXPECT_THAT(A, testing::IsNear(Vec3(-1.0226997942, 0.399225745928, 2.59336898559), 1e-9));
     EXPECT_NEAR(testing::distance_to_curve(helix_fn(), A, 2.7), 0.16059857389, 1e-9);
     // Rodrigues form of the same arc (seed 000 §3).
     Vec3 k = (P - c.centre).cross(Q - c.centre).normalized(), w = Q - c.centre;
     double th = 1.0 / c.radius;
-    EXPECT_NEAR((A - (c.centre + w * std::cos(th) + k.cross(w) * std::sin(th))).norm(), 0.0, 1e-13);
+    EXPECT_THAT(A, testing::IsNear((c.centre + w * std::cos(th) + k.cross(w) * std::sin(th)), 1e-13));
   }
   // The classical step from Q is farther: 0.234802.
   Vec3 T = Q + v.normalized();
-  EXPECT_NEAR((T - Vec3(-1.05911721317, 0.615037176734, 2.70710678119)).norm(), 0.0, 1e-10);
+  EXPECT_THAT(T, testing::IsNear(Vec3(-1.05911721317, 0.615037176734, 2.70710678119), 1e-10));
   EXPECT_NEAR(testing::distance_to_curve(helix_fn(), T, 2.7), 0.23480158345, 1e-9);
 }
 
@@ -263,15 +264,15 @@ TEST(Seed000Example1, HelixWithThePapersTangentReproducesItsNumbers) {
   const Vec3 printed_tangent_point(-1.0591, 0.5789, 2.8104), w = printed_tangent_point - Q;
   OsculatingCircle c = osculating_circle(P, Q, u, w, Vec3::Zero());
   ASSERT_EQ(c.status, CircleStatus::kOk);
-  EXPECT_NEAR((c.centre - Vec3(-0.157038077106, -1.02003951544, 1.41898671688)).norm(), 0.0, 1e-9);
+  EXPECT_THAT(c.centre, testing::IsNear(Vec3(-0.157038077106, -1.02003951544, 1.41898671688), 1e-9));
   EXPECT_NEAR(c.radius, 2.0315154001845017, 1e-10);
   Vec3 A = osculating_circle_arc_point(P, Q, c.centre, c.radius, 1.0);
-  EXPECT_NEAR((A - Vec3(-1.04604498715, 0.399504016767, 2.56860304211)).norm(), 0.0, 1e-9);
+  EXPECT_THAT(A, testing::IsNear(Vec3(-1.04604498715, 0.399504016767, 2.56860304211), 1e-9));
   // Against the paper's printed (4-digit) values: C = (-0.1568, -1.0200, 1.4192), r = 2.031534,
   // A = (-1.0459, 0.3994, 2.5686); distances 0.241830 and 0.192835 of its printed points.
-  EXPECT_NEAR((c.centre - Vec3(-0.1568, -1.0200, 1.4192)).norm(), 0.0, 5e-4);
+  EXPECT_THAT(c.centre, testing::IsNear(Vec3(-0.1568, -1.0200, 1.4192), 5e-4));
   EXPECT_NEAR(c.radius, 2.031534, 5e-5);
-  EXPECT_NEAR((A - Vec3(-1.0459, 0.3994, 2.5686)).norm(), 0.0, 3e-4);
+  EXPECT_THAT(A, testing::IsNear(Vec3(-1.0459, 0.3994, 2.5686), 3e-4));
   EXPECT_NEAR(testing::distance_to_curve(helix_fn(), printed_tangent_point, 2.7), 0.241830, 5e-5);
   EXPECT_NEAR(testing::distance_to_curve(helix_fn(), Vec3(-1.0459, 0.3994, 2.5686), 2.6), 0.192835, 5e-5);
 }
@@ -279,34 +280,34 @@ TEST(Seed000Example1, HelixWithThePapersTangentReproducesItsNumbers) {
 TEST(Seed000Example1, RationalCurve) {
   const CurveFn f = rational_fn();
   const Vec3 P = testing::point_at(f, 1), Q = testing::point_at(f, 2);
-  EXPECT_NEAR((P - Vec3(0.5, 8, -8)).norm(), 0.0, 1e-14);
-  EXPECT_NEAR((Q - Vec3(1.4, 15, -12.8)).norm(), 0.0, 1e-14);
+  EXPECT_THAT(P, testing::IsNear(Vec3(0.5, 8, -8), 1e-14));
+  EXPECT_THAT(Q, testing::IsNear(Vec3(1.4, 15, -12.8), 1e-14));
   const Vec3 u = testing::derivs(f, 1).d1, v = testing::derivs(f, 2).d1;
-  EXPECT_NEAR((u - Vec3(0.5, 6, -5)).norm(), 0.0, 1e-13);
-  EXPECT_NEAR((v - Vec3(1.08, 8, -4.76)).norm(), 0.0, 1e-13);
+  EXPECT_THAT(u, testing::IsNear(Vec3(0.5, 6, -5), 1e-13));
+  EXPECT_THAT(v, testing::IsNear(Vec3(1.08, 8, -4.76), 1e-13));
   OsculatingCircle c = osculating_circle(P, Q, u, v, Q);
   ASSERT_EQ(c.status, CircleStatus::kOk);
-  EXPECT_NEAR((c.centre - Vec3(-73.2566037736, 62.3570754717, 49.8528301887)).norm(), 0.0, 1e-8);
+  EXPECT_THAT(c.centre, testing::IsNear(Vec3(-73.2566037736, 62.3570754717, 49.8528301887), 1e-8));
   EXPECT_NEAR(c.radius, 108.35902461210367, 1e-9);
   Vec3 A = osculating_circle_arc_point(P, Q, c.centre, c.radius, 0.1);
-  EXPECT_NEAR((A - Vec3(1.40780537399, 15.0838195088, -12.8539755998)).norm(), 0.0, 1e-9);
+  EXPECT_THAT(A, testing::IsNear(Vec3(1.40780537399, 15.0838195088, -12.8539755998), 1e-9));
   Vec3 T = Q + 0.1 * v.normalized();
-  EXPECT_NEAR((T - Vec3(1.41152436882, 15.085365695, -12.8507925885)).norm(), 0.0, 1e-9);
+  EXPECT_THAT(T, testing::IsNear(Vec3(1.41152436882, 15.085365695, -12.8507925885), 1e-9));
   // With exact tangents the tangent step wins here: 5.5e-5 against 5.2e-3.
   EXPECT_NEAR(testing::distance_to_curve(f, T, 2.01), 5.52059110155e-05, 1e-9);
   EXPECT_NEAR(testing::distance_to_curve(f, A, 2.01), 0.00516590227256, 1e-9);
   // The paper's tangent direction at Q (towards its printed "tangent step" point) reproduces its circle.
   Vec3 w(1.1524, 8.5287, -4.8399);
   OsculatingCircle s = osculating_circle(P, Q, u, w, Vec3::Zero());
-  EXPECT_NEAR((s.centre - Vec3(-15.4801051874, 42.7876162731, 32.147129009)).norm(), 0.0, 1e-7);
+  EXPECT_THAT(s.centre, testing::IsNear(Vec3(-15.4801051874, 42.7876162731, 32.147129009), 1e-7));
   EXPECT_NEAR(s.radius, 55.47372328801364, 1e-8);
   Vec3 As = osculating_circle_arc_point(P, Q, s.centre, s.radius, 0.1);
-  EXPECT_NEAR((As - Vec3(1.4082005821, 15.0861669871, -12.8500799169)).norm(), 0.0, 1e-9);
+  EXPECT_THAT(As, testing::IsNear(Vec3(1.4082005821, 15.0861669871, -12.8500799169), 1e-9));
   EXPECT_NEAR(testing::distance_to_curve(f, As, 2.01), 0.00347128201713, 1e-9);
   // Printed: C = (-15.4835, 42.7887, 32.1481), r = 55.4761, A = (1.4082, 15.0861, -12.8500).
-  EXPECT_NEAR((s.centre - Vec3(-15.4835, 42.7887, 32.1481)).norm(), 0.0, 5e-3);
+  EXPECT_THAT(s.centre, testing::IsNear(Vec3(-15.4835, 42.7887, 32.1481), 5e-3));
   EXPECT_NEAR(s.radius, 55.4761, 5e-3);
-  EXPECT_NEAR((As - Vec3(1.4082, 15.0861, -12.8500)).norm(), 0.0, 2e-4);
+  EXPECT_THAT(As, testing::IsNear(Vec3(1.4082, 15.0861, -12.8500), 2e-4));
 }
 
 TEST(Seed000, RotationMatrixAndOrientation) {
@@ -321,14 +322,14 @@ TEST(Seed000, RotationMatrixAndOrientation) {
     if (i == 0) n = Vec3(2, 0, 0);
     if (i == 1) n = Vec3(-3, 0, 0);
     Eigen::Matrix3d R = osculating_circle_rotation(n);
-    EXPECT_NEAR((n.transpose() * R - Eigen::RowVector3d(0, 0, n.norm())).norm(), 0.0, 1e-14 * (1 + n.norm()));
-    EXPECT_NEAR((R * R.transpose() - Eigen::Matrix3d::Identity()).norm(), 0.0, 1e-14);
+    EXPECT_THAT(n.transpose() * R, testing::IsNear(Eigen::RowVector3d(0, 0, n.norm()), 1e-14 * (1 + n.norm())));
+    EXPECT_THAT(R * R.transpose(), testing::IsNear(Eigen::Matrix3d::Identity(), 1e-14));
     // The arc continues P -> Q (oracle s000.sec4.orientation): A is on the far side of Q from P.
     Vec3 C(rnd(), rnd(), rnd()), e1 = n.unitOrthogonal(), e2 = n.normalized().cross(e1);
     double a = 3 * rnd(), da = 0.5 * (rnd() + 1.2), rho = 1 + rnd() * 0.5;
     Vec3 P = C + rho * (std::cos(a) * e1 + std::sin(a) * e2), Q = C + rho * (std::cos(a + da) * e1 + std::sin(a + da) * e2);
     Vec3 expected = C + rho * (std::cos(a + da + 0.3 / rho) * e1 + std::sin(a + da + 0.3 / rho) * e2);
-    EXPECT_NEAR((osculating_circle_arc_point(P, Q, C, rho, 0.3) - expected).norm(), 0.0, 1e-12);
+    EXPECT_THAT(osculating_circle_arc_point(P, Q, C, rho, 0.3), testing::IsNear(expected, 1e-12));
   }
 }
 
@@ -359,17 +360,17 @@ TEST(Seed000Example3, PlanarArcTakesTheThirdPlaneFallback) {
   ASSERT_EQ(c.status, CircleStatus::kOk);
   EXPECT_EQ(c.how, OsculatingCircle::Equidistant::kThirdPlane);
   EXPECT_NEAR(c.b, 0.0, 1e-12);
-  EXPECT_NEAR((c.centre - Vec3(0, 0, 4)).norm(), 0.0, 1e-12);
+  EXPECT_THAT(c.centre, testing::IsNear(Vec3(0, 0, 4), 1e-12));
   EXPECT_NEAR(c.radius, 1.99994892435, 1e-10);
   Vec3 A = osculating_circle_arc_point(P, Q, c.centre, (Q - c.centre).norm(), 1.0);
-  EXPECT_NEAR((A - Vec3(-0.262064032869, 1.98268761097, 4.0)).norm(), 0.0, 1e-6);
-  EXPECT_NEAR((Q + v - Vec3(-0.212231749469, 2.22591226344, 4.0)).norm(), 0.0, 1e-10);  // tangent step
+  EXPECT_THAT(A, testing::IsNear(Vec3(-0.262064032869, 1.98268761097, 4.0), 1e-6));
+  EXPECT_THAT(Q + v, testing::IsNear(Vec3(-0.212231749469, 2.22591226344, 4.0), 1e-10));  // tangent step
   // The paper's own rule, "reuse t from the previous step": t is the centre's coordinate along
   // the fixed axis (z here), 4 at the previous step.
   double previous_t = 4.0;
   OsculatingCircle r = osculating_circle(P, Q, u, v, Vec3::Zero(), &previous_t, 2);
   EXPECT_EQ(r.how, OsculatingCircle::Equidistant::kReusedPrevious);
-  EXPECT_NEAR((r.centre - Vec3(0, 0, 4)).norm(), 0.0, 1e-12);
+  EXPECT_THAT(r.centre, testing::IsNear(Vec3(0, 0, 4), 1e-12));
 }
 
 TEST(WuAndrade, CentreAndAngleHeuristic) {
@@ -385,7 +386,7 @@ TEST(WuAndrade, CentreAndAngleHeuristic) {
   auto tan = [&](double a) { return Vec3(-std::sin(a) * e1 + std::cos(a) * e2); };
   Vec3 X;
   ASSERT_TRUE(wu_andrade_centre(at(0.2), at(0.5), tan(0.2), tan(0.5), &X));
-  EXPECT_NEAR((X - C).norm(), 0.0, 1e-13);
+  EXPECT_THAT(X, testing::IsNear(C, 1e-13));
   EXPECT_FALSE(wu_andrade_centre(at(0.2), at(0.5), tan(0.2), tan(0.2), &X));
 }
 

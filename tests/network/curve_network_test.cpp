@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "testing/matchers.hpp"
 #include "ssimarch/io/scene.hpp"
 #include "ssimarch/pipeline/trace_job.hpp"
 #include "ssimarch/trace/branch_length_bound.hpp"
@@ -144,7 +145,7 @@ TEST(CurveNetwork, VivianiFigureEight) {
   const CurveNetwork& net = run.network;
   ASSERT_EQ(net.vertices.size(), 1u);
   EXPECT_EQ(net.vertices[0].kind, VertexKind::kSingularPoint);
-  EXPECT_NEAR((net.vertices[0].p - Vec3(0, -2, 0)).norm(), 0, 1e-10);
+  EXPECT_THAT(net.vertices[0].p, testing::IsNear(Vec3(0, -2, 0), 1e-10));
   ASSERT_EQ(net.edges.size(), 2u);
   for (const NetworkEdge& e : net.edges) {
     EXPECT_EQ(e.from, 0);
@@ -217,8 +218,8 @@ TEST(CurveNetwork, ParamsOfBothSurfaces) {
     for (const CurvePoint& q : c.points) {
       const auto a = run.problem.first().point(q.x[0], q.x[1]);
       const auto b = run.problem.second().point(q.x[2], q.x[3]);
-      EXPECT_NEAR((Vec3(a.x, a.y, a.z) - q.p).norm(), 0, tol);
-      EXPECT_NEAR((Vec3(b.x, b.y, b.z) - q.p).norm(), 0, tol);
+      EXPECT_THAT(Vec3(a.x, a.y, a.z), testing::IsNear(q.p, tol));
+      EXPECT_THAT(Vec3(b.x, b.y, b.z), testing::IsNear(q.p, tol));
     }
 }
 

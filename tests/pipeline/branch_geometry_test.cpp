@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "testing/matchers.hpp"
 #include "ssimarch/io/scene.hpp"
 #include "ssimarch/pipeline/branch_geometry.hpp"
 #include "ssimarch/pipeline/point_geometry.hpp"
@@ -23,9 +24,9 @@ TEST(BranchGeometry, MixedAtTheVivianiNodeFollowsEachBranch) {
     q.toward = Vec3(1, 0, sz);
     const PointGeometry g = geometry_at_point(P, q);
     ASSERT_TRUE(g.x.has_value());
-    EXPECT_LE((g.point - Vec3(0, -2, 0)).norm(), 1e-10);
+    EXPECT_THAT(g.point, testing::IsNear(Vec3(0, -2, 0), 1e-10));
     EXPECT_EQ(g.geometry.status, GeometryStatus::kOk);
-    EXPECT_LE((g.geometry.t - Vec3(1, 0, sz).normalized()).norm(), 1e-9);
+    EXPECT_THAT(g.geometry.t, testing::IsNear(Vec3(1, 0, sz).normalized(), 1e-9));
     EXPECT_NEAR(g.geometry.kappa, 0.5, 1e-7);
     EXPECT_NEAR(g.geometry.tau, 0.375 * sz, 1e-6);
     EXPECT_NEAR(std::sin(g.geometry.theta), 0.0, 1e-9);

@@ -4,6 +4,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "testing/matchers.hpp"
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/io/scene.hpp"
 
@@ -29,7 +30,7 @@ TEST(TraceJob, TracesEveryIntersectionWithItsDecorations) {
   EXPECT_TRUE(job.complete());
   const IntersectionRun& v = job.runs[0];
   ASSERT_EQ(v.result.curves.size(), 1u);
-  EXPECT_NEAR(v.result.curves[0].length, 15.2807911561, 1e-5);
+  EXPECT_THAT(v.result.curves[0], testing::HasLength(15.2807911561, 1e-5));
   ASSERT_EQ(v.geometry.size(), 1u);
   ASSERT_EQ(v.geometry[0].size(), v.result.curves[0].points.size());
   // Viviani's curve at its start (1, -1, sqrt 2): kappa = sqrt(13/8) / (3/2)^(3/2).
@@ -131,7 +132,7 @@ TEST(TraceJob, CoincidentSurfacesAreReportedWithTheSharedRegion) {
     EXPECT_TRUE(r.result.curves.empty());
     ASSERT_TRUE(r.coincidence.has_value());
     EXPECT_EQ(r.coincidence->shared, r.coincidence->samples);
-    EXPECT_THAT(testing::PrintToString(r.result.warnings), HasSubstr("the surfaces coincide"));
+    EXPECT_THAT(::testing::PrintToString(r.result.warnings), HasSubstr("the surfaces coincide"));
   }
   // The sphere samples cover it: the region is its bounding box to within the sample spacing.
   const Box& b = job.runs[0].coincidence->region;

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "testing/matchers.hpp"
 #include "testing/surface_pairs.hpp"
 #include "ssimarch/surface/sphere.hpp"
 #include "ssimarch/surface/torus.hpp"
@@ -34,7 +35,7 @@ void expect_matches(const CurveJet<6>& j, const Frenet& f) {
   EXPECT_NEAR(a1.norm(), 1.0, 1e-13);
   EXPECT_NEAR(a1.dot(a2), 0.0, 1e-12);  // unit speed
   Frenet g = frenet(a1, a2, a3);
-  EXPECT_NEAR((g.t - f.t).norm(), 0.0, 1e-12);
+  EXPECT_THAT(g.t, testing::IsNear(f.t, 1e-12));
   EXPECT_NEAR(g.kappa, f.kappa, 1e-11);
   EXPECT_NEAR(g.tau, f.tau, 1e-10);
 }
@@ -52,7 +53,7 @@ TEST(CurveJet, TorusCurveFromEveryPairKindMatchesFrenetValues) {
     y << s, 0.0;
     auto jy = curve_jet<6>(pi, y, &f.t);
     expect_matches(jy, f);
-    EXPECT_NEAR((jy.alpha[0] - p).norm(), 0.0, 1e-14);
+    EXPECT_THAT(jy.alpha[0], testing::IsNear(p, 1e-14));
   }
   // Seed value at C1(0): kappa = 0.512195, standard torsion -0.125436 (thesis Table 3.3).
   Problem pp(testing::ruled_surface(), testing::torus_g1(), PairKind::kParametricParametric);
@@ -74,8 +75,8 @@ TEST(CurveJet, VivianiImplicitImplicitMatchesSeed004) {
   Vec3 hint(-1, 0, 1);
   auto j = curve_jet<5>(P, x, &hint);
   ASSERT_EQ(j.status, CurveJetStatus::kOk);
-  EXPECT_NEAR((j.derivative(1) - Vec3(-std::sqrt(6.0) / 3, 0, std::sqrt(3.0) / 3)).norm(), 0.0, 1e-14);
-  EXPECT_NEAR((j.derivative(2) - Vec3(-2.0 / 9, -4.0 / 3, -2 * std::sqrt(2.0) / 9)).norm(), 0.0, 1e-13);
+  EXPECT_THAT(j.derivative(1), testing::IsNear(Vec3(-std::sqrt(6.0) / 3, 0, std::sqrt(3.0) / 3), 1e-14));
+  EXPECT_THAT(j.derivative(2), testing::IsNear(Vec3(-2.0 / 9, -4.0 / 3, -2 * std::sqrt(2.0) / 9), 1e-13));
   Vec3 c = j.derivative(1).cross(j.derivative(2));
   EXPECT_NEAR(j.derivative(2).norm(), 2 * std::sqrt(39.0) / 9, 1e-13);
   EXPECT_NEAR(std::fabs(c.dot(j.derivative(3)) / c.squaredNorm()), 6 * std::sqrt(2.0) / 13, 1e-12);

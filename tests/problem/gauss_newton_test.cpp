@@ -54,6 +54,33 @@ TEST(SolveWithFixedUnknown, LandsOnTheCurveWithThatUnknownExactly) {
   EXPECT_NEAR(std::fabs(p.x()), std::fabs(std::sin(2 * std::asin(0.8))), 1e-11);
 }
 
+TEST(SolveOnPlane, LandsOnTheCurveOnThePlane) {
+  // The plane 0.6 x + 0.8 z = 0.9 cuts Viviani's curve in isolated points; the one found lies on
+  // the plane, the sphere and the cylinder (three equations, the independent check) to the
+  // tolerance, after the polishing update (iterations >= 2).
+  const Problem P = viviani_problem();
+  const Vec3 normal(0.6, 0, 0.8);
+  VecX guess(2);
+  guess << 0.4, 1.3;
+  const CorrectorResult r = solve_on_plane(P, guess, normal, 0.9, CorrectorOptions{1e-12, 20});
+  ASSERT_EQ(r.status, CorrectorStatus::kConverged);
+  EXPECT_GE(r.iterations, 2);
+  const Vec3 p = P.point(r.x);
+  EXPECT_NEAR(normal.dot(p), 0.9, 1e-14);
+  EXPECT_NEAR(p.norm(), 2.0, 1e-12);
+  EXPECT_NEAR(std::hypot(p.x(), p.y() + 1), 1.0, 1e-12);
+}
+
+TEST(ConstrainedNewton, ASingularSquareSystemIsSaidSo) {
+  // The plane z = 0 at the node (0, -2, 0): J_H = 0 there, so [J_H; grad c] has rank 1.
+  const Problem P = viviani_problem();
+  VecX node(2);
+  node << -M_PI / 2, 0.0;
+  const CorrectorResult r =
+      constrained_newton(P, node, SideCondition::plane(Vec3::UnitZ(), 0.0), CorrectorOptions{1e-30, 12});
+  EXPECT_EQ(r.status, CorrectorStatus::kSingular);
+}
+
 TEST(ConvergenceRule, ConvergedBelowToleranceDivergingAfterTwoGrowths) {
   CorrectorOptions o{1e-6, 12};
   CorrectorResult r;

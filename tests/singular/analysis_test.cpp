@@ -4,6 +4,7 @@
 #include "ssimarch/singular/analysis.hpp"
 
 #include <gtest/gtest.h>
+#include "testing/matchers.hpp"
 
 #include <cmath>
 
@@ -30,7 +31,7 @@ TEST(SingularAnalysis, VivianiNodeIsLocatedClassifiedAndHasFourHalfBranches) {
   const Problem P = viviani_pi();
   const SingularAnalysis a = analyse_singular_point(P, at(1.5 * M_PI + 0.05, 0.04));
   ASSERT_EQ(a.status, SingularAnalysisStatus::kAnalysed) << to_string(a.status);
-  EXPECT_LE((a.location.point - Vec3(0, -2, 0)).norm(), 1e-10);
+  EXPECT_THAT(a.location.point, testing::IsNear(Vec3(0, -2, 0), 1e-10));
   EXPECT_EQ(a.kind.type, SingularType::kNode);
   EXPECT_EQ(a.kind.ak, "A1");
   ASSERT_EQ(a.branches.size(), 4u);
@@ -77,7 +78,7 @@ TEST(SingularAnalysis, ARegularPointOfTheCurveIsClassifiedRegular) {
   const SingularAnalysis given = analyse_singular_point(P, at(M_PI / 2, 2.0), here);
   ASSERT_TRUE(given.analysed()) << to_string(given.status);
   EXPECT_EQ(given.kind.type, SingularType::kRegular);
-  EXPECT_LE((given.location.point - Vec3(0, 0, 2)).norm(), 1e-15);
+  EXPECT_THAT(given.location.point, testing::IsNear(Vec3(0, 0, 2), 1e-15));
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "singular/pairs.hpp"
+#include "testing/matchers.hpp"
 #include "ssimarch/problem/curve_jet.hpp"
 
 namespace ssimarch {
@@ -81,7 +82,7 @@ TEST(Detection, HuntFindsEveryThesisSingularPoint) {
   ASSERT_EQ(ex18.size(), 2u);
   std::sort(ex18.begin(), ex18.end(), [](const Vec2& a, const Vec2& b) { return a[1] < b[1]; });
   EXPECT_LE(ex18[0].norm(), 1e-12);
-  EXPECT_LE((ex18[1] - Vec2(0, 1)).norm(), 1e-12);
+  EXPECT_THAT(ex18[1], testing::IsNear(Vec2(0, 1), 1e-12));
   // Ex. 16: the isolated point at the origin, which no trace passes near.
   std::vector<Vec2> ex16 = hunt(testing::graph_vs_plane_pi("3*u^4/4+u^3+u^2/4+7*u^2*v^2/2+u*v^2+v^4"));
   ASSERT_EQ(ex16.size(), 1u);
@@ -89,8 +90,8 @@ TEST(Detection, HuntFindsEveryThesisSingularPoint) {
   // Ex. 21 at 11/12: the two nodes (+-1, 0) (oracle s003.ex21.singular_points); none at 0.917.
   std::vector<Vec2> ex21 = hunt(testing::graph_vs_plane_pi("u^6/6-5*u^4/4+2*u^2+v^2", "11/12"));
   ASSERT_EQ(ex21.size(), 2u);
-  EXPECT_LE((ex21[0] - Vec2(-1, 0)).norm(), 1e-12);
-  EXPECT_LE((ex21[1] - Vec2(1, 0)).norm(), 1e-12);
+  EXPECT_THAT(ex21[0], testing::IsNear(Vec2(-1, 0), 1e-12));
+  EXPECT_THAT(ex21[1], testing::IsNear(Vec2(1, 0), 1e-12));
   EXPECT_TRUE(hunt(testing::graph_vs_plane_pi("u^6/6-5*u^4/4+2*u^2+v^2", "0.917")).empty());
 }
 
@@ -101,7 +102,7 @@ TEST(Detection, HuntFindsVivianisNodeForEveryPairKind) {
   for (const Problem& pr : {viviani_pi(), viviani_ii(), pp}) {
     std::vector<SingularLocation> s = hunt_singular_points(pr);
     ASSERT_EQ(s.size(), 1u) << to_string(pr.kind());
-    EXPECT_LE((s[0].point - Vec3(0, -2, 0)).norm(), 1e-12);
+    EXPECT_THAT(s[0].point, testing::IsNear(Vec3(0, -2, 0), 1e-12));
   }
   HuntOptions bad;
   bad.grid = 2;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "singular/pairs.hpp"
+#include "testing/matchers.hpp"
 #include "ssimarch/singular/classify.hpp"
 #include "ssimarch/singular/detection.hpp"
 #include "ssimarch/singular/half_branches.hpp"
@@ -68,7 +69,7 @@ TEST(LocalCurve, ParametricParametricEllipsoidsMatchTheSurfaces) {
     Vec3T<double> F = pr.first().point(y[0], y[1]), G = pr.second().point(y[2], y[3]);
     Vec3 d(F.x - G.x, F.y - G.y, F.z - G.z);
     const double h = evaluate(c.h, st).value;
-    EXPECT_NEAR((d - h * c.normal).norm(), 0.0, 1e-13);
+    EXPECT_THAT(d, testing::IsNear(h * c.normal, 1e-13));
   }
 }
 
@@ -147,7 +148,7 @@ TEST(LocalCurve, ConeApexOnASpherePoleIsAnIsolatedPoint) {
   const Problem P(cone, sphere, PairKind::kParametricParametric);
   const std::vector<SingularLocation> at_poles = singular_points_at_poles(P);
   ASSERT_EQ(at_poles.size(), 1u);
-  EXPECT_LT((at_poles[0].point - Vec3(0, 0, 10)).norm(), 1e-12);
+  EXPECT_THAT(at_poles[0].point, testing::IsNear(Vec3(0, 0, 10), 1e-12));
   const LocalCurve c = local_curve(P, at_poles[0].x);
   ASSERT_EQ(c.status, LocalCurveStatus::kOk);
   const Classification k = classify(c.h);

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "testing/matchers.hpp"
 #include "testing/surface_pairs.hpp"
 #include "ssimarch/surface/plane.hpp"
 #include "ssimarch/surface/sphere.hpp"
@@ -65,7 +66,7 @@ TEST(IsolatedBox, SpheresTouchingImplicitAndParametric) {
   const Problem pp(a, b, PairKind::kParametricParametric);
   VecX y(4);
   y << 0, 0, std::numbers::pi, 0;
-  ASSERT_LT((pp.point(y) - Vec3(1, 0, 0)).norm(), 1e-15);
+  ASSERT_THAT(pp.point(y), testing::IsNear(Vec3(1, 0, 0), 1e-15));
   const IntervalBox box4{
       {-1e-3, 1e-3}, {-1e-3, 1e-3}, {std::numbers::pi - 1e-3, std::numbers::pi + 1e-3}, {-1e-3, 1e-3}};
   const IsolatedBoxResult r4 = decide_isolated_box(pp, y, box4, kRadius, kDepth);

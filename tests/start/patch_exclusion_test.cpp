@@ -10,6 +10,7 @@
 #include <cmath>
 #include <random>
 
+#include "testing/matchers.hpp"
 #include "ssimarch/problem/closed_form_tolerances.hpp"
 #include "ssimarch/problem/closest_point.hpp"
 #include "ssimarch/surface/surface.hpp"
@@ -68,7 +69,7 @@ TEST(PatchExclusion, NoBoxAroundAPointOfTheCurveIsExcluded) {
     const Vec3 p(x0, rho * std::cos(phi), rho * std::sin(phi));
     const std::optional<VecX> x = unknowns_near(P, p);
     if (!x) continue;
-    ASSERT_LT((P.point(*x) - p).norm(), 1e-9);
+    ASSERT_THAT(P.point(*x), testing::IsNear(p, 1e-9));
     for (double w : {1e-6, 1e-3, 0.1, 0.5, 2.0}) {
       IntervalNumber box[4];
       for (int i = 0; i < 4; ++i) {

@@ -10,6 +10,7 @@
 #include <regex>
 #include <sstream>
 
+#include "testing/matchers.hpp"
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/io/scene.hpp"
 #include "ssimarch/step/reader.hpp"
@@ -100,7 +101,7 @@ Vec3 at(const Surface& s, double u, double v) {
 }
 
 void expect_near(const Vec3& a, const Vec3& b, double tol) {
-  EXPECT_LT((a - b).norm(), tol) << a.transpose() << " vs " << b.transpose();
+  EXPECT_THAT(a, testing::IsNear(b, tol)) << a.transpose() << " vs " << b.transpose();
 }
 
 TEST(StepReader, AnalyticSurfacesFollowIso10303_42) {

@@ -8,6 +8,7 @@
 #include <numbers>
 #include <string>
 
+#include "testing/matchers.hpp"
 #include "ssimarch/io/scene.hpp"
 #include "ssimarch/step/reader.hpp"
 #include "ssimarch/pipeline/trace_job.hpp"
@@ -118,7 +119,7 @@ TEST(StepTrim, RegionSideOfThePlate) {
         Case{{3.5, 1, 0}, -0.5, {3, 1, 0}}, Case{{0.6, 0.8, 0}, 0.0, {0.6, 0.8, 0}}}) {
     const FaceRegion::Side side = region->side(k.p, up);
     EXPECT_NEAR(side.signed_distance, k.distance, 1e-14) << k.p.transpose();
-    EXPECT_NEAR((side.nearest - k.nearest).norm(), 0.0, 1e-14) << k.p.transpose();
+    EXPECT_THAT(side.nearest, testing::IsNear(k.nearest, 1e-14)) << k.p.transpose();
   }
   // The cylinder's rims bound it; its seam (one edge used both ways) does not.
   const auto cylinder = m.face_region(m.faces()[1].entity);

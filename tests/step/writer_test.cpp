@@ -7,6 +7,7 @@
 #include <regex>
 #include <sstream>
 
+#include "testing/matchers.hpp"
 #include "ssimarch/io/scene.hpp"
 #include "ssimarch/step/writer.hpp"
 #include "ssimarch/io/trace_writers.hpp"
@@ -127,8 +128,8 @@ TEST(StepWriter, JsonSplineMatchesTheCurvePoints) {
   const auto& pts = c["points"];
   const Vec3 first(pts[0]["xyz"][0], pts[0]["xyz"][1], pts[0]["xyz"][2]);
   const auto& l = pts[pts.size() - 1]["xyz"];
-  EXPECT_LT((b.at(b.start()) - first).norm(), 1e-14);
-  EXPECT_LT((b.at(b.end()) - Vec3(l[0], l[1], l[2])).norm(), 1e-14);
+  EXPECT_THAT(b.at(b.start()), testing::IsNear(first, 1e-14));
+  EXPECT_THAT(b.at(b.end()), testing::IsNear(Vec3(l[0], l[1], l[2]), 1e-14));
   EXPECT_NEAR(b.end(), runs[2].result.curves[0].length, 1e-6);
 }
 

@@ -2,6 +2,7 @@
 #include "ssimarch/surface/derivatives.hpp"
 
 #include <gtest/gtest.h>
+#include "testing/matchers.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -118,7 +119,7 @@ TEST(Derivatives, SphereJetOfOrderSixMatchesClosedForms) {
       const double x = r * dcos(v, b) * dcos(u, a), y = r * dcos(v, b) * dsin(u, a);
       const double z = a == 0 ? r * dsin(v, b) : 0.0;
       const Vec3 want = (a + b == 0 ? kC : Vec3::Zero()) + x * fr.e0 + y * fr.e1 + z * fr.e2;
-      EXPECT_LE((partial(F, a, b) - want).norm(), 1e-12) << "a=" << a << " b=" << b;
+      EXPECT_THAT(partial(F, a, b), testing::IsNear(want, 1e-12)) << "a=" << a << " b=" << b;
     }
 }
 
@@ -175,7 +176,7 @@ TEST(Degenerate, ImplicitPointsAreReported) {
   EXPECT_FALSE(implicit_curvatures(cone, Vec3::Zero()));
   EXPECT_FALSE(normal_curvature(cone, Vec3::Zero(), Vec3(1, 0, 0)));
   ASSERT_TRUE(unit_normal(cone, Vec3(1, 0, 1)));
-  EXPECT_LE((*unit_normal(cone, Vec3(1, 0, 1)) - Vec3(1, 0, -1).normalized()).norm(), 1e-15);
+  EXPECT_THAT(*unit_normal(cone, Vec3(1, 0, 1)), testing::IsNear(Vec3(1, 0, -1).normalized(), 1e-15));
   const Surface root = ExprImplicit::compile("sqrt(x) - y", {{-1, 1}, {-1, 1}, {-1, 1}}, {});
   EXPECT_FALSE(unit_normal(root, Vec3(0, 0, 0)));  // infinite derivative
   // A custom threshold.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "testing/matchers.hpp"
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/surface/derivatives.hpp"
 #include "ssimarch/surface/primitives.hpp"
@@ -18,7 +19,7 @@ const Vec3 kAxis(1.0, 2.0, -0.5);
 double f(const Surface& s, const Vec3& p) { return s.value<double>(Vec3T<double>(p)); }
 
 void expect_vec(const Vec3& a, const Vec3& b, double tol) {
-  EXPECT_LE((a - b).norm(), tol) << "got " << a.transpose() << ", expected " << b.transpose();
+  EXPECT_THAT(a, testing::IsNear(b, tol)) << "got " << a.transpose() << ", expected " << b.transpose();
 }
 
 TEST(Frame, DefaultsToTheCoordinateFrameForZ) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "testing/matchers.hpp"
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/surface/derivatives.hpp"
 
@@ -14,7 +15,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 
 void expect_vec(const Vec3& a, const Vec3& b, double tol, const std::string& what = {}) {
-  EXPECT_LE((a - b).norm(), tol) << what << " got " << a.transpose() << ", expected " << b.transpose();
+  EXPECT_THAT(a, testing::IsNear(b, tol)) << what << " got " << a.transpose() << ", expected " << b.transpose();
 }
 
 double binom(int n, int k) {

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "testing/matchers.hpp"
 #include "ssimarch/surface/derivatives.hpp"
 #include "surface/cases.hpp"
 
@@ -29,7 +30,7 @@ class SurfaceContract : public ::testing::TestWithParam<SurfaceCase> {
 
 // |a - b| <= tol * max(1, |b|), printing where.
 void expect_near_vec(const Vec3& a, const Vec3& b, double tol, const std::string& what) {
-  EXPECT_LE((a - b).norm(), tol * std::max(1.0, b.norm()))
+  EXPECT_THAT(a, testing::IsNear(b, tol * std::max(1.0, b.norm())))
       << what << "\n  got      " << a.transpose() << "\n  expected " << b.transpose();
 }
 

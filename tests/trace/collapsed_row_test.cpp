@@ -10,6 +10,7 @@
 #include <numbers>
 #include <vector>
 
+#include "testing/matchers.hpp"
 #include "ssimarch/singular/classify.hpp"
 #include "ssimarch/singular/half_branches.hpp"
 #include "ssimarch/singular/locate.hpp"
@@ -48,7 +49,7 @@ void expect_viviani_with_its_node(const TraceResult& r, const char* label) {
   ASSERT_EQ(r.singular_points.size(), 1u) << label;
   const SingularPointReport& s = r.singular_points[0];
   EXPECT_EQ(s.type, SingularType::kNode) << label;
-  EXPECT_LT((s.p - node).norm(), 1e-10) << label;
+  EXPECT_THAT(s.p, testing::IsNear(node, 1e-10)) << label;
   EXPECT_EQ(s.half_branches.size(), 4u) << label;
   EXPECT_EQ(s.curves, std::vector<int>{0}) << label;
   EXPECT_TRUE(std::any_of(r.curves[0].points.begin(), r.curves[0].points.end(), [&](const CurvePoint& q) {
@@ -78,7 +79,7 @@ TEST(CollapsedRow, VivianiNodeOnARationalSpheresPoleIsClassified) {
   x << 0.3, 1.0;  // on the pole row v = 1, any u
   const SingularLocation s = locate_singular_point(P, x);
   ASSERT_EQ(s.status, LocateStatus::kConverged);
-  EXPECT_LT((s.point - Vec3(2, 0, 0)).norm(), 1e-10);
+  EXPECT_THAT(s.point, testing::IsNear(Vec3(2, 0, 0), 1e-10));
   const LocalCurve c = local_curve(P, s.x);
   ASSERT_EQ(c.status, LocalCurveStatus::kOk);
   const Classification kind = classify(c.h);
@@ -115,7 +116,7 @@ TEST(CollapsedRow, RationalSpherePoleRestingOnAPlaneIsOneIsolatedPoint) {
                                        : trace_all(Problem(plane, s, PairKind::kParametricParametric), {});
     EXPECT_TRUE(r.curves.empty()) << "sphere first: " << sphere_first;
     ASSERT_EQ(r.isolated_points.size(), 1u) << "sphere first: " << sphere_first;
-    EXPECT_LT((r.isolated_points[0].p - Vec3(0, 0, -1)).norm(), 1e-9);
+    EXPECT_THAT(r.isolated_points[0].p, testing::IsNear(Vec3(0, 0, -1), 1e-9));
     EXPECT_EQ(r.isolated_points[0].type, SingularType::kIsolated);
   }
 }
@@ -137,7 +138,7 @@ TEST(CollapsedRow, CurveThroughARationalSpheresPoleIsOneClosedCurve) {
   EXPECT_NEAR(r.curves[0].length / ref.curves[0].length - 1, 0.0, 1e-8);
   ASSERT_EQ(r.singular_points.size(), 1u);
   EXPECT_EQ(r.singular_points[0].type, SingularType::kNode);
-  EXPECT_LT((r.singular_points[0].p - (Vec3(1, 0, 1) - c)).norm(), 1e-9);
+  EXPECT_THAT(r.singular_points[0].p, testing::IsNear((Vec3(1, 0, 1) - c), 1e-9));
 }
 
 // Issue 27: two loops, each through one pole of the rational sphere of radius 2 (the cylinder

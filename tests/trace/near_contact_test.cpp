@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include "testing/matchers.hpp"
 #include "ssimarch/surface/plane.hpp"
 #include "ssimarch/surface/sphere.hpp"
 #include "ssimarch/trace/trace_all.hpp"
@@ -38,8 +39,8 @@ TEST(NearContact, TinyCirclesAboveTheToleranceCloseOnce) {
     EXPECT_TRUE(r.singular_points.empty());
     // The points are known to tolerance / sin(theta) across the curve, sin(theta) = radius:
     // 1e-12 / radius relative to the radius, and the chord sum is 1e-6 short at most.
-    EXPECT_NEAR(r.curves[0].length, 2 * std::numbers::pi * radius,
-                2 * std::numbers::pi * radius * (1e-6 + 1e-12 / (radius * radius)));
+    EXPECT_THAT(r.curves[0], testing::HasLength(2 * std::numbers::pi * radius,
+                                                2 * std::numbers::pi * radius * (1e-6 + 1e-12 / (radius * radius))));
     for (const CurvePoint& p : r.curves[0].points) EXPECT_NEAR(p.p.z(), gap, 1e-12);
   }
 }

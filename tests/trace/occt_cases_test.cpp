@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "testing/matchers.hpp"
 #include "ssimarch/io/scene.hpp"
 #include "ssimarch/pipeline/trace_job.hpp"
 
@@ -50,7 +51,7 @@ TEST(OcctCases, Bug32850NodeNextToTheStripEdgeBothBranchesOnce) {
   const TraceResult r = trace_example("occt_bug32850_cylinders.json", "bug32850");
   ASSERT_EQ(r.singular_points.size(), 1u);
   EXPECT_EQ(r.singular_points[0].type, SingularType::kNode);
-  EXPECT_LT((r.singular_points[0].p - node).norm(), 1e-10 * R);
+  EXPECT_THAT(r.singular_points[0].p, testing::IsNear(node, 1e-10 * R));
   ASSERT_EQ(r.curves.size(), 2u);
   std::vector<double> lengths;
   for (const TracedCurve& c : r.curves) {
@@ -100,9 +101,9 @@ TEST(OcctCases, CurveThroughAConesApexHasItsNodeThereInEveryForm) {
     const TraceResult r = trace_example("cone_apex_cylinder.json", name);
     ASSERT_EQ(r.curves.size(), 1u) << name;
     EXPECT_TRUE(r.curves[0].closed) << name;
-    EXPECT_NEAR(r.curves[0].length, length, 1e-6 * length) << name;
+    EXPECT_THAT(r.curves[0], testing::HasLength(length, 1e-6 * length)) << name;
     if (implicit_length == 0) implicit_length = r.curves[0].length;
-    EXPECT_NEAR(r.curves[0].length, implicit_length, 1e-8 * length) << name;
+    EXPECT_THAT(r.curves[0], testing::HasLength(implicit_length, 1e-8 * length)) << name;
     ASSERT_EQ(r.singular_points.size(), 1u) << name;
     const SingularPointReport& s = r.singular_points[0];
     EXPECT_EQ(s.type, SingularType::kNode) << name;
@@ -129,13 +130,13 @@ TEST(OcctCases, Bug21494ApexOnThePoleIsAnIsolatedPointInEveryForm) {
     const TraceResult r = trace_example("occt_bug21494_2_cone_sphere.json", name);
     ASSERT_EQ(r.curves.size(), 1u) << name;
     EXPECT_TRUE(r.curves[0].closed) << name;
-    EXPECT_NEAR(r.curves[0].length, 240 * std::numbers::pi / 13, 1e-8) << name;
+    EXPECT_THAT(r.curves[0], testing::HasLength(240 * std::numbers::pi / 13, 1e-8)) << name;
     std::vector<Vec3> isolated;
     for (const auto& s : r.singular_points)
       if (s.type == SingularType::kIsolated) isolated.push_back(s.p);
     for (const auto& s : r.isolated_points) isolated.push_back(s.p);
     ASSERT_FALSE(isolated.empty()) << name;
-    for (const Vec3& p : isolated) EXPECT_LT((p - Vec3(0, 0, 10)).norm(), 1e-10) << name;
+    for (const Vec3& p : isolated) EXPECT_THAT(p, testing::IsNear(Vec3(0, 0, 10), 1e-10)) << name;
   }
 }
 
@@ -156,7 +157,7 @@ TEST(OcctCases, Bug21494ApexTouchingThePoleIsOneIsolatedPointNeverACurve) {
     const TraceResult r = run_intersection(scene, spec).result;
     EXPECT_TRUE(r.curves.empty());
     ASSERT_EQ(r.isolated_points.size(), 1u);
-    EXPECT_LT((r.isolated_points[0].p - Vec3(0, 0, 10)).norm(), 1e-10);
+    EXPECT_THAT(r.isolated_points[0].p, testing::IsNear(Vec3(0, 0, 10), 1e-10));
     EXPECT_EQ(r.isolated_points[0].type, SingularType::kIsolated);
   }
 }

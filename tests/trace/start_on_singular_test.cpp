@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "testing/matchers.hpp"
 #include "ssimarch/analytic/closed_form.hpp"
 #include "ssimarch/io/scene.hpp"
 #include "ssimarch/pipeline/trace_job.hpp"
@@ -41,7 +42,7 @@ TEST(StartOnSingular, CardioidFromItsCuspIsOneClosedCurve) {
     const TraceResult r = trace_from("thesis_ex20_cardioid.json", {Vec3::Zero()}, step);
     ASSERT_EQ(r.curves.size(), 1u) << step;
     EXPECT_TRUE(r.curves[0].closed) << step;
-    EXPECT_NEAR(r.curves[0].length, 16.0, 1e-5) << step;
+    EXPECT_THAT(r.curves[0], testing::HasLength(16.0, 1e-5)) << step;
     EXPECT_TRUE(passes(r.curves[0], Vec3::Zero(), 1e-10)) << step;
     ASSERT_EQ(r.singular_points.size(), 1u) << step;
     EXPECT_EQ(r.singular_points[0].type, SingularType::kCusp) << step;
@@ -79,7 +80,7 @@ void expect_viviani_node(const std::vector<SingularPointReport>& points, const s
   ASSERT_EQ(points.size(), 1u) << label;
   const SingularPointReport& node = points[0];
   EXPECT_EQ(node.type, SingularType::kNode) << label;
-  EXPECT_LT((node.p - Vec3(0, -2, 0)).norm(), 1e-10) << label;
+  EXPECT_THAT(node.p, testing::IsNear(Vec3(0, -2, 0), 1e-10)) << label;
   ASSERT_EQ(node.half_branches.size(), 4u) << label;
   auto P = [](double s) { return Vec3(std::sin(s), -1 - std::cos(s), 2 * std::sin(s / 2)); };
   for (const auto& b : node.half_branches) {

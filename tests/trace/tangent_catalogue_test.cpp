@@ -20,6 +20,7 @@
 #include <numbers>
 #include <string>
 
+#include "testing/matchers.hpp"
 #include "ssimarch/io/scene.hpp"
 #include "ssimarch/pipeline/trace_job.hpp"
 
@@ -70,7 +71,7 @@ TEST(TangentCatalogue, VillarceauTwoCirclesThroughTwoNodes) {
       const Vec3 node(1.5 * s, 0, s * std::sqrt(3.0) / 2);
       const SingularPointReport* n = nearest(r, node, "node");
       ASSERT_NE(n, nullptr);
-      EXPECT_LT((n->p - node).norm(), kPointTolerance);
+      EXPECT_THAT(n->p, testing::IsNear(node, kPointTolerance));
     }
     EXPECT_TRUE(run_complete(run));
   });
@@ -88,10 +89,10 @@ TEST(TangentCatalogue, LemniscateOneClosedCurveThroughItsNode) {
     // (docs/marching.md): on the lemniscate kappa = 3 r / a^2, so |kappa'| <= 3 / a^2, and next to
     // the node (kappa = 0) the chordal rule takes its longest steps, h <= 0.25 in all four forms;
     // the sum is at most kappa'^2 h^4 L / 1440 = 3.8e-7 L (measured: 2e-8 .. 7e-8 L).
-    EXPECT_NEAR(r.curves[0].length, length, 3.8e-7 * length);
+    EXPECT_THAT(r.curves[0], testing::HasLength(length, 3.8e-7 * length));
     const SingularPointReport* n = nearest(r, Vec3(1, 0, 0), "node");
     ASSERT_NE(n, nullptr);
-    EXPECT_LT((n->p - Vec3(1, 0, 0)).norm(), kPointTolerance);
+    EXPECT_THAT(n->p, testing::IsNear(Vec3(1, 0, 0), kPointTolerance));
     EXPECT_TRUE(run_complete(run));
   });
 }
@@ -103,7 +104,7 @@ TEST(TangentCatalogue, TorusTopContactCircle) {
               ASSERT_EQ(r.curves.size(), 1u);
               EXPECT_TRUE(r.curves[0].closed);
               EXPECT_TRUE(r.curves[0].tangential_contact);
-              EXPECT_NEAR(r.curves[0].length, 4 * kPi, 1e-8);
+              EXPECT_THAT(r.curves[0], testing::HasLength(4 * kPi, 1e-8));
               EXPECT_TRUE(run_complete(run));
             },
             {"_pi", "_ip"});
@@ -117,7 +118,7 @@ void expect_isolated(const std::string& stem, const Vec3& p) {
     EXPECT_TRUE(r.curves.empty());
     ASSERT_EQ(r.isolated_points.size(), 1u);
     // An isolated tangency is located to sqrt(rounding) along the contact at worst.
-    EXPECT_LT((r.isolated_points[0].p - p).norm(), 1e-7);
+    EXPECT_THAT(r.isolated_points[0].p, testing::IsNear(p, 1e-7));
     EXPECT_TRUE(r.start_search.certified) << r.start_search.note;
     EXPECT_TRUE(r.start_search.uncertain_regions.empty());
     // Where the search ran (not a closed form), it is the convex box that certified the point.
@@ -138,7 +139,7 @@ TEST(TangentCatalogue, ConeTouchedAlongAGeneratorThroughItsApex) {
     const TraceResult& r = run.result;
     ASSERT_EQ(r.curves.size(), 1u);
     EXPECT_TRUE(r.curves[0].tangential_contact);
-    EXPECT_NEAR(r.curves[0].length, 4 * std::sqrt(2.0), 1e-8);
+    EXPECT_THAT(r.curves[0], testing::HasLength(4 * std::sqrt(2.0), 1e-8));
     // The apex is a singular point of the cone, not of the intersection's contact line: nothing
     // is reported off it (a sign change of lambda through its pole there is no crossing).
     for (const SingularPointReport& s : r.singular_points) EXPECT_LT(s.p.norm(), kPointTolerance) << to_string(s.type);
@@ -158,7 +159,7 @@ TEST(TangentCatalogue, SpheresOverlappingSlightlyCutACircle) {
                 EXPECT_TRUE(r.curves[0].closed);
                 // A point of the circle is known to the point tolerance over sin(theta) ~ radius (the
                 // normals' angle): relative 1e-6 of the length for the 1e-9 overlap, far less otherwise.
-                EXPECT_NEAR(r.curves[0].length, 2 * kPi * radius, 1e-6 * 2 * kPi * radius);
+                EXPECT_THAT(r.curves[0], testing::HasLength(2 * kPi * radius, 1e-6 * 2 * kPi * radius));
                 EXPECT_TRUE(run_complete(run));
               },
               {"_ii", "_pi", "_ip"});

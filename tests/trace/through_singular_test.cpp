@@ -9,6 +9,7 @@
 #include <numbers>
 #include <string>
 
+#include "testing/matchers.hpp"
 #include "ssimarch/pipeline/trace_job.hpp"
 #include "ssimarch/io/scene.hpp"
 #include "ssimarch/trace/trace_all.hpp"
@@ -56,7 +57,7 @@ TEST(ThroughSingular, VivianiIsOneClosedCurveThroughItsNode) {
   ASSERT_EQ(r.singular_points.size(), 1u);
   EXPECT_EQ(r.singular_points[0].type, SingularType::kNode);
   EXPECT_EQ(r.singular_points[0].ak, "A1");
-  EXPECT_LE((r.singular_points[0].p - node).norm(), 1e-10);
+  EXPECT_THAT(r.singular_points[0].p, testing::IsNear(node, 1e-10));
   EXPECT_EQ(r.singular_points[0].half_branches.size(), 4u);
   EXPECT_EQ(r.singular_points[0].curves, std::vector<int>{0});
   // Straight across: the tangents just before and after each pass agree.
@@ -87,7 +88,7 @@ TEST(ThroughSingular, VivianiFromItsNodeIsTheWholeLoopAtEveryStepLength) {
     ASSERT_EQ(r.curves.size(), 1u) << step;
     EXPECT_TRUE(r.curves[0].closed) << step;
     // (1 + cos t, sin t, 2 cos(t/2)) up to a motion: length 8 sqrt2 E(1/2) = 15.2807911561.
-    EXPECT_NEAR(r.curves[0].length, 15.2807911561, 1e-6) << step;
+    EXPECT_THAT(r.curves[0], testing::HasLength(15.2807911561, 1e-6)) << step;
     EXPECT_TRUE(has_point(r.curves[0], node, 1e-10)) << step;
     ASSERT_EQ(r.singular_points.size(), 1u) << step;
     EXPECT_EQ(r.singular_points[0].curves, std::vector<int>{0}) << step;
@@ -203,8 +204,9 @@ TEST(ThroughSingular, NearMissStaysSmooth) {
   EXPECT_TRUE(r.isolated_points.empty());
   ASSERT_EQ(r.curves.size(), 1u);
   EXPECT_TRUE(r.curves[0].closed);
-  EXPECT_NEAR(r.curves[0].length, 19.4212355910927,
-              2e-4);  // measured 7.7e-5 (step 0.02); a jump between the arcs loses ~0.02
+  EXPECT_THAT(
+      r.curves[0],
+      testing::HasLength(19.4212355910927, 2e-4));  // measured 7.7e-5 (step 0.02); a jump between the arcs loses ~0.02
 }
 
 TEST(ThroughSingular, NearTangentPairIsNotMerged) {
@@ -253,7 +255,7 @@ TEST(ThroughSingular, RamphoidCuspCurveHasTheClosedFormLength) {
   const TraceResult r = run_example("thesis_ex14_ramphoid_cusp.json").result;
   ASSERT_EQ(r.curves.size(), 1u);
   EXPECT_TRUE(r.curves[0].closed);
-  EXPECT_NEAR(r.curves[0].length, reference, 1e-5);  // measured 1.5e-6
+  EXPECT_THAT(r.curves[0], testing::HasLength(reference, 1e-5));  // measured 1.5e-6
 }
 
 }  // namespace

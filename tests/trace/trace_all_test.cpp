@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "testing/matchers.hpp"
 #include "testing/surface_pairs.hpp"
 #include "ssimarch/surface/sphere.hpp"
 #include "ssimarch/surface/torus.hpp"
@@ -14,7 +15,7 @@ namespace {
 // Every point within `tol` of the exact curve c(s), with s recovered from the point by `param`.
 template <class Curve, class Param>
 void expect_on_curve(const TracedCurve& c, Curve curve, Param param, double tol) {
-  for (const auto& p : c.points) ASSERT_NEAR((curve(param(p.p)) - p.p).norm(), 0.0, tol) << p.p.transpose();
+  for (const auto& p : c.points) ASSERT_THAT(curve(param(p.p)), testing::IsNear(p.p, tol)) << p.p.transpose();
 }
 
 // No stretch traced twice: the curve parameters of consecutive points advance monotonically
@@ -107,7 +108,7 @@ void check_viviani(const Problem& P) {
   EXPECT_NEAR(total_parameter_advance(without_node(c), viviani_param, 4 * M_PI), 4 * M_PI, 1e-12);
   ASSERT_EQ(r.singular_points.size(), 1u);
   EXPECT_EQ(r.singular_points[0].type, SingularType::kNode);
-  EXPECT_LE((r.singular_points[0].p - Vec3(0, -2, 0)).norm(), 1e-10);
+  EXPECT_THAT(r.singular_points[0].p, testing::IsNear(Vec3(0, -2, 0), 1e-10));
   for (const auto& p : c.points) EXPECT_LE(P.linearize(p.x).distance, 1e-10);
 }
 

@@ -29,6 +29,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "ssimarch/core/contract.hpp"
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/expr/parse_error.hpp"
 
@@ -141,7 +142,7 @@ class Program {
   /// True when the expression uses no variable at all (then constant_value() is its value).
   bool is_constant() const { return code_.size() == 1 && code_[0].op == OpCode::kConst; }
   double constant_value() const {
-    if (!is_constant()) throw std::logic_error("ssimarch::Program::constant_value: not a constant");
+    SSIMARCH_EXPECTS(is_constant(), "ssimarch::Program::constant_value: not a constant");
     return code_[0].imm;
   }
 

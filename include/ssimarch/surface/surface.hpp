@@ -16,6 +16,7 @@
 #include <type_traits>
 #include <variant>
 
+#include "ssimarch/core/contract.hpp"
 #include "ssimarch/surface/bezier_patch.hpp"
 #include "ssimarch/surface/bspline_surface.hpp"
 #include "ssimarch/surface/domain.hpp"
@@ -53,8 +54,8 @@ class Surface {
           if constexpr (requires { s.template point<T>(u, v); }) {
             return s.template point<T>(u, v);
           } else {
-            throw std::logic_error(std::string("ssimarch::Surface::point: a ") + std::string(type_name()) +
-                                   " surface has no parametric form");
+            SSIMARCH_CONTRACT_FAILURE(std::string("ssimarch::Surface::point: a ") + std::string(type_name()) +
+                                      " surface has no parametric form");
           }
         },
         s_);
@@ -68,8 +69,8 @@ class Surface {
           if constexpr (requires { s.template value<T>(p); }) {
             return s.template value<T>(p);
           } else {
-            throw std::logic_error(std::string("ssimarch::Surface::value: a ") + std::string(type_name()) +
-                                   " surface has no implicit form");
+            SSIMARCH_CONTRACT_FAILURE(std::string("ssimarch::Surface::value: a ") + std::string(type_name()) +
+                                      " surface has no implicit form");
           }
         },
         s_);
