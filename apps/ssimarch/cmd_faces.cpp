@@ -26,8 +26,16 @@ struct FacesArgs {
 nlohmann::json face_json(const StepModel& model, const StepFace& f) {
   nlohmann::json j{{"face", f.index},          {"entity", f.entity}, {"line", f.line},
                    {"surface_entity", f.surface_entity}, {"step_type", f.surface_type}, {"same_sense", f.same_sense}};
+  if (!f.instance.empty()) {
+    // Where the assembly puts this occurrence: p -> rotation p + translation (rows of the rotation).
+    const auto& R = f.placement.rotation;
+    j["instance"] = f.instance;
+    j["placement"] = {
+        {"rotation", {{R(0, 0), R(0, 1), R(0, 2)}, {R(1, 0), R(1, 1), R(1, 2)}, {R(2, 0), R(2, 1), R(2, 2)}}},
+        {"translation", {f.placement.translation.x(), f.placement.translation.y(), f.placement.translation.z()}}};
+  }
   try {
-    const Surface s = model.surface(f.entity);
+    const Surface s = model.surface(f.entity, f.placement);
     const ParamDomain& d = s.domain();
     j["surface"] = std::string(s.type_name());
     j["u"] = {d.u.lo, d.u.hi};
@@ -74,6 +82,7 @@ int run_faces(const FacesArgs& a) {
       what = fmt::format("{} u [{:.6g}, {:.6g}]{} v [{:.6g}, {:.6g}]{}", j["surface"].get<std::string>(), j["u"][0].get<double>(),
                          j["u"][1].get<double>(), j["periodic"][0].get<bool>() ? " periodic" : "", j["v"][0].get<double>(),
                          j["v"][1].get<double>(), j["periodic"][1].get<bool>() ? " periodic" : "");
+    if (j.contains("instance")) what += ", placed as " + j["instance"].get<std::string>();
     std::cout << fmt::format("{:>5} {:>9} {:>7}  {:<28} {}\n", j["face"].get<int>(), "#" + std::to_string(j["entity"].get<std::int64_t>()),
                              j["line"].get<int>(), j["step_type"].get<std::string>(), what);
   }
@@ -85,8 +94,11 @@ int run_faces(const FacesArgs& a) {
 void add_faces_command(CLI::App& app, Commands& commands) {
   auto args = std::make_shared<FacesArgs>();
   CLI::App* cmd = app.add_subcommand("faces", "List the faces of a STEP file (AP203/AP214/AP242) with their surfaces");
-  cmd->footer("A scene names a face as {\"step\": \"MODEL.step\", \"face\": N} or by its instance id, "
-              "{\"step\": \"MODEL.step\", \"entity\": ID} (docs/scene-format.md, docs/cad.md).");
+  cmd->footer(
+      "A scene names a face as {\"step\": \"MODEL.step\", \"face\": N} or by its instance id, "
+      "{\"step\": \"MODEL.step\", \"entity\": ID} (docs/scene-format.md, docs/cad.md). In an assembly a part's "
+      "faces are listed once per placement, in the assembly's coordinates (\"face\": N is that occurrence); "
+      "\"entity\" is the face in its part's own coordinates.");
   cmd->add_option("file", args->file, "STEP file (ISO 10303-21)")->required();
   cmd->add_flag("--json", args->json, "print JSON instead of a table");
   add_budget_options(cmd);

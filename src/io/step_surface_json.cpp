@@ -39,16 +39,19 @@ Surface step_surface_from_json(const nlohmann::json& spec, const std::filesystem
   const std::filesystem::path resolved = file.is_absolute() || base_dir.empty() ? file : base_dir / file;
   const StepModel& model = cache->get(resolved, limits);
   std::int64_t id = 0;
+  PartPlacement placement;  // a face of a placed part sits where the assembly puts it
   if (f.has("face")) {
     const std::int64_t k = positive_integer(f.at("face"), f.path("face"));
-    id = model.face(static_cast<int>(std::min<std::int64_t>(k, 1 << 30)), f.path("face")).entity;
+    const StepFace& face = model.face(static_cast<int>(std::min<std::int64_t>(k, 1 << 30)), f.path("face"));
+    id = face.entity;
+    placement = face.placement;
   } else {
     id = positive_integer(f.at("entity"), f.path("entity"));
     if (!model.file().find(id)) throw InputError(f.path("entity"), internal::cat(model.file().source, " has no instance #", id));
   }
-  Surface surface = model.surface(id);
-  if (region) *region = model.face_region(id);
-  if (spline) *spline = model.spline_data(id);
+  Surface surface = model.surface(id, placement);
+  if (region) *region = model.face_region(id, placement);
+  if (spline) *spline = model.spline_data(id, placement);
   return surface;
 }
 

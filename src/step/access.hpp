@@ -10,6 +10,7 @@
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/core/vec3.hpp"
 #include "ssimarch/step/part21.hpp"
+#include "ssimarch/step/reader.hpp"
 #include "ssimarch/pipeline/face_region.hpp"
 #include "ssimarch/pipeline/spline_surface_data.hpp"
 #include "ssimarch/surface/surface.hpp"
@@ -17,9 +18,12 @@
 
 namespace ssimarch::internal {
 
+// Every 3D point and direction read through it is moved by the placement of the part occurrence
+// being read (identity by default); 2D points and directions (parameter space) are not.
 class StepAccess {
  public:
-  explicit StepAccess(const StepFile& file) : file_(file) {}
+  explicit StepAccess(const StepFile& file, const PartPlacement& placement = {}) : file_(file), placement_(placement) {}
+  const PartPlacement& placement() const { return placement_; }
   const StepFile& file() const { return file_; }
 
   [[noreturn]] void fail(const StepInstance& inst, const std::string& message) const {
@@ -67,19 +71,31 @@ class StepAccess {
     if (v.kind != StepValue::Kind::kRef) fail(inst, cat(what, " must be a reference #id"));
     return file_.at(v.ref, inst);
   }
-  /// CARTESIAN_POINT or DIRECTION coordinates (2D points get z = 0).
-  Vec3 coordinates(const StepInstance& inst, const char* type) const {
+  /// CARTESIAN_POINT or DIRECTION coordinates as written (2D points get z = 0), and whether the
+  /// instance is 3D.
+  Vec3 coordinates(const StepInstance& inst, const char* type, bool* three_d = nullptr) const {
     const StepRecord& r = record(inst, type);
     const std::vector<double> c = numbers(inst, param(inst, r, 1, "coordinates"), "coordinates");
     if (c.size() < 2 || c.size() > 3) fail(inst, "must have 2 or 3 coordinates");
+    if (three_d) *three_d = c.size() == 3;
     return {c[0], c[1], c.size() == 3 ? c[2] : 0.0};
   }
+  /// A CARTESIAN_POINT, placed.
   Vec3 point(const StepInstance& from, const StepValue& v, const char* what) const {
-    return coordinates(ref(from, v, what), "CARTESIAN_POINT");
+    bool three_d = false;
+    const Vec3 p = coordinates(ref(from, v, what), "CARTESIAN_POINT", &three_d);
+    return three_d ? placement_.apply(p) : p;
+  }
+  /// A DIRECTION instance, placed (rotated).
+  Vec3 direction(const StepInstance& inst) const {
+    bool three_d = false;
+    const Vec3 d = coordinates(inst, "DIRECTION", &three_d);
+    return three_d ? placement_.rotate(d) : d;
   }
 
  private:
   const StepFile& file_;
+  PartPlacement placement_;
 };
 
 /// An AXIS2_PLACEMENT_3D: location, axis (default z) and reference direction (default: none,
@@ -89,6 +105,21 @@ struct StepPlacement {
   std::optional<Vec3> reference;
 };
 StepPlacement step_placement(const StepAccess& a, const StepInstance& inst);
+
+/// A placement as a rigid motion: p -> [e0 e1 e2] p + origin, its frame (Frame::from_axis) read
+/// through `a` (so already placed where `a` places).
+PartPlacement placement_motion(const StepAccess& a, const StepInstance& inst);
+
+/// One occurrence of a face in the model: the face instance, where it sits, its assembly path.
+struct PlacedFace {
+  std::int64_t face = 0;
+  PartPlacement placement;
+  std::string instance;
+};
+/// Every face of the file with its occurrences in the product structure (step/assembly.cpp,
+/// docs/cad.md "Assemblies"), in file order, a face's occurrences together; a face outside any
+/// assembly once, unplaced.
+std::vector<PlacedFace> placed_faces(const StepAccess& a);
 
 /// Points along a face's boundary (see step/reader.hpp, "Trimming"): empty when the face
 /// has no bounds.

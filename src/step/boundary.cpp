@@ -14,11 +14,28 @@ StepPlacement step_placement(const StepAccess& a, const StepInstance& inst) {
   StepPlacement p;
   p.origin = a.point(inst, a.param(inst, r, 1, "location"), "location");
   const StepValue& axis = a.param(inst, r, 2, "axis");
-  p.axis = axis.kind == StepValue::Kind::kUnset ? Vec3::UnitZ() : a.coordinates(a.ref(inst, axis, "axis"), "DIRECTION");
+  const PartPlacement& moved = a.placement();
+  p.axis = axis.kind == StepValue::Kind::kUnset ? moved.rotate(Vec3::UnitZ()) : a.direction(a.ref(inst, axis, "axis"));
   const StepValue& ref = a.param(inst, r, 3, "ref_direction");
-  if (ref.kind != StepValue::Kind::kUnset) p.reference = a.coordinates(a.ref(inst, ref, "ref_direction"), "DIRECTION");
+  if (ref.kind != StepValue::Kind::kUnset) p.reference = a.direction(a.ref(inst, ref, "ref_direction"));
   if (!(p.axis.norm() > 0)) a.fail(inst, "the axis is a zero vector");
+  // Without a reference the frame's default e0 is chosen from the axis (Frame::from_axis): taken
+  // in the part's own coordinates and moved with it, so a placed part keeps its parametrisation.
+  if (!p.reference && !moved.is_identity())
+    p.reference = moved.rotate(
+        Frame::from_axis(Vec3::Zero(), moved.rotation.transpose() * p.axis, std::nullopt, a.file().where(inst)).e0);
   return p;
+}
+
+PartPlacement placement_motion(const StepAccess& a, const StepInstance& inst) {
+  const StepPlacement p = step_placement(a, inst);
+  const Frame f = Frame::from_axis(p.origin, p.axis, p.reference, a.file().where(inst));
+  PartPlacement m;
+  m.rotation.col(0) = f.e0;
+  m.rotation.col(1) = f.e1;
+  m.rotation.col(2) = f.e2;
+  m.translation = f.origin;
+  return m;
 }
 
 namespace {

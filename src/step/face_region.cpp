@@ -139,9 +139,8 @@ EdgePiece edge_piece(const StepAccess& a, const StepInstance& edge, double direc
     const Vec3 p = a.point(curve, a.param(curve, cr, 1, "pnt"), "pnt");
     const StepInstance& vec = a.ref(curve, a.param(curve, cr, 2, "dir"), "dir");
     const StepRecord& vr = a.record(vec, "VECTOR");
-    const Vec3 d =
-        a.coordinates(a.ref(vec, a.param(vec, vr, 1, "orientation"), "orientation"), "DIRECTION").normalized() *
-        a.number(vec, a.param(vec, vr, 2, "magnitude"), "magnitude");
+    const Vec3 d = a.direction(a.ref(vec, a.param(vec, vr, 1, "orientation"), "orientation")).normalized() *
+                   a.number(vec, a.param(vec, vr, 2, "magnitude"), "magnitude");
     if (!(d.norm() > 0)) a.fail(vec, "a line's direction must not be zero");
     e.at = [p, d](double s) { return Vec3(p + s * d); };
     e.derivative = [d](double) { return d; };

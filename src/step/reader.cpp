@@ -223,13 +223,12 @@ double plane_angle_unit(const StepAccess& a) {
 StepModel::StepModel(StepFile file) : file_(std::move(file)) {
   const StepAccess a(file_);
   angle_unit_ = plane_angle_unit(a);
-  for (std::int64_t id : file_.order) {
-    const StepInstance& f = *file_.find(id);
-    if (!is_face(f)) continue;
+  for (const internal::PlacedFace& placed : internal::placed_faces(a)) {
+    const StepInstance& f = *file_.find(placed.face);
     const StepRecord& r = f.records.front();
     const StepInstance& s = a.ref(f, a.param(f, r, 2, "face_geometry"), "face_geometry");
-    faces_.push_back({static_cast<int>(faces_.size()) + 1, id, s.id, f.line, surface_type_of(s),
-                      a.boolean(f, a.param(f, r, 3, "same_sense"), "same_sense")});
+    faces_.push_back({static_cast<int>(faces_.size()) + 1, placed.face, s.id, f.line, surface_type_of(s),
+                      a.boolean(f, a.param(f, r, 3, "same_sense"), "same_sense"), placed.placement, placed.instance});
   }
 }
 
@@ -244,19 +243,19 @@ const StepFace& StepModel::face(int index, const std::string& where) const {
   return faces_[static_cast<std::size_t>(index) - 1];
 }
 
-Surface StepModel::surface(std::int64_t entity) const {
+Surface StepModel::surface(std::int64_t entity, const PartPlacement& placement) const {
   const StepInstance* inst = file_.find(entity);
   if (!inst) throw InputError(file_.source, cat("has no instance #", entity));
-  const StepAccess a(file_);
+  const StepAccess a(file_, placement);
   if (!is_face(*inst)) return any_surface(a, *inst, {}, angle_unit_);
   const StepInstance& s = a.ref(*inst, inst->records.front().params.at(2), "face_geometry");
   return any_surface(a, s, Trim{internal::step_boundary_points(a, *inst), std::nullopt}, angle_unit_);
 }
 
-std::optional<SplineSurfaceData> StepModel::spline_data(std::int64_t entity) const {
+std::optional<SplineSurfaceData> StepModel::spline_data(std::int64_t entity, const PartPlacement& placement) const {
   const StepInstance* inst = file_.find(entity);
   if (!inst) throw InputError(file_.source, cat("has no instance #", entity));
-  const StepAccess a(file_);
+  const StepAccess a(file_, placement);
   const StepInstance* s = is_face(*inst) ? &a.ref(*inst, inst->records.front().params.at(2), "face_geometry") : inst;
   std::optional<Interval> v_range;
   if (s->records.size() == 1 && s->records.front().type == "RECTANGULAR_TRIMMED_SURFACE") {
@@ -270,11 +269,12 @@ std::optional<SplineSurfaceData> StepModel::spline_data(std::int64_t entity) con
       a, *s, is_face(*inst) ? internal::step_boundary_points(a, *inst) : std::vector<Vec3>{}, v_range);
 }
 
-std::shared_ptr<const FaceRegion> StepModel::face_region(std::int64_t entity) const {
+std::shared_ptr<const FaceRegion> StepModel::face_region(std::int64_t entity, const PartPlacement& placement) const {
   const StepInstance* inst = file_.find(entity);
   if (!inst) throw InputError(file_.source, cat("has no instance #", entity));
   if (!is_face(*inst)) return nullptr;
-  return internal::step_face_region(StepAccess(file_), *inst, cat("STEP face #", entity, " of ", file_.source));
+  return internal::step_face_region(StepAccess(file_, placement), *inst,
+                                    cat("STEP face #", entity, " of ", file_.source));
 }
 
 BSplineCurve StepModel::bspline_curve(std::int64_t entity) const {

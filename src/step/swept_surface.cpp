@@ -80,9 +80,8 @@ Line step_line(const StepAccess& a, const StepInstance& c) {
   const Vec3 p = a.point(c, a.param(c, r, 1, "pnt"), "pnt");
   const StepInstance& vec = a.ref(c, a.param(c, r, 2, "dir"), "dir");
   const StepRecord& vr = a.record(vec, "VECTOR");
-  const Vec3 d =
-      a.coordinates(a.ref(vec, a.param(vec, vr, 1, "orientation"), "orientation"), "DIRECTION").normalized() *
-      a.number(vec, a.param(vec, vr, 2, "magnitude"), "magnitude");
+  const Vec3 d = a.direction(a.ref(vec, a.param(vec, vr, 1, "orientation"), "orientation")).normalized() *
+                 a.number(vec, a.param(vec, vr, 2, "magnitude"), "magnitude");
   if (!(d.norm() > 0)) a.fail(vec, "a line's direction must not be zero");
   return {p, d};
 }
@@ -145,9 +144,8 @@ SplineSurfaceData extrusion(const StepAccess& a, const StepInstance& s, const st
   const StepRecord& r = s.records.front();
   const StepInstance& vec = a.ref(s, a.param(s, r, 2, "extrusion_axis"), "extrusion_axis");
   const StepRecord& vr = a.record(vec, "VECTOR");
-  const Vec3 V =
-      a.coordinates(a.ref(vec, a.param(vec, vr, 1, "orientation"), "orientation"), "DIRECTION").normalized() *
-      a.number(vec, a.param(vec, vr, 2, "magnitude"), "magnitude");
+  const Vec3 V = a.direction(a.ref(vec, a.param(vec, vr, 1, "orientation"), "orientation")).normalized() *
+                 a.number(vec, a.param(vec, vr, 2, "magnitude"), "magnitude");
   if (!(V.norm() > 0)) a.fail(vec, "the extrusion vector must not be zero");
   // A swept line's range: s of p = L(s) + t V at the boundary points (least squares in s, t).
   auto line_range = [&](const Line& l) {
@@ -193,8 +191,8 @@ SplineSurfaceData revolution(const StepAccess& a, const StepInstance& s, const s
   const StepRecord& ar = a.record(ax, "AXIS1_PLACEMENT");
   const Vec3 O = a.point(ax, a.param(ax, ar, 1, "location"), "location");
   const StepValue& av = a.param(ax, ar, 2, "axis");
-  const Vec3 A = av.kind == StepValue::Kind::kUnset ? Vec3::UnitZ()
-                                                    : a.coordinates(a.ref(ax, av, "axis"), "DIRECTION").normalized();
+  const Vec3 A = av.kind == StepValue::Kind::kUnset ? a.placement().rotate(Vec3::UnitZ())
+                                                    : a.direction(a.ref(ax, av, "axis")).normalized();
   // A swept line's range from the boundary: its axial coordinate is linear in s; a line normal
   // to the axis is bounded by the boundary's distances from the axis.
   auto line_range = [&](const Line& l) {

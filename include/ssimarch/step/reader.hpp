@@ -11,6 +11,10 @@
 // of a plane, the axial range of a cylinder or cone. Spheres, tori and B-spline surfaces keep
 // their whole domain. The loops themselves (holes, curved outer bounds) are the face's region
 // (face_region), to which a scene cuts the traced curves.
+// Assemblies (docs/cad.md, "Assemblies"): a part placed in an assembly (NEXT_ASSEMBLY_USAGE_OCCURRENCE
+// with a CONTEXT_DEPENDENT_SHAPE_REPRESENTATION whose relationship carries an
+// ITEM_DEFINED_TRANSFORMATION, or a MAPPED_ITEM) has its faces listed once per placement, in the
+// root product's coordinates: the transformations composed down the product structure.
 // Plane angles are converted to radians by the file's plane-angle unit (a CONVERSION_BASED_UNIT
 // such as degrees); lengths stay in the file's unit.
 // Every error is an InputError naming "file:line: #id" of the instance at fault.
@@ -23,6 +27,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "ssimarch/geometry/bspline_curve.hpp"
 #include "ssimarch/step/part21.hpp"
 #include "ssimarch/pipeline/face_region.hpp"
@@ -31,7 +37,24 @@
 
 namespace ssimarch {
 
-/// A face of the file, numbered 1, 2, ... in the order the file defines them.
+/// Where an occurrence of a part sits in the model: p -> rotation p + translation (a rigid motion:
+/// the composed placements of the assembly, from the part's representation to the root's).
+struct PartPlacement {
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+  Vec3 translation = Vec3::Zero();
+
+  Vec3 apply(const Vec3& p) const { return rotation * p + translation; }
+  Vec3 rotate(const Vec3& d) const { return rotation * d; }
+  /// This placement followed by `outer` (a part placed in a sub-assembly placed in the root).
+  PartPlacement then(const PartPlacement& outer) const {
+    return {outer.rotation * rotation, outer.rotation * translation + outer.translation};
+  }
+  PartPlacement inverse() const { return {rotation.transpose(), -(rotation.transpose() * translation)}; }
+  bool is_identity() const { return rotation == Eigen::Matrix3d::Identity() && translation == Vec3::Zero(); }
+};
+
+/// A face of the file, numbered 1, 2, ... in the order the file defines them; a face of a part
+/// placed several times in an assembly is listed once per placement, next to each other.
 struct StepFace {
   int index = 0;
   std::int64_t entity = 0;          // the ADVANCED_FACE / FACE_SURFACE instance
@@ -39,6 +62,8 @@ struct StepFace {
   int line = 0;
   std::string surface_type;  // the surface instance's type as written, e.g. CYLINDRICAL_SURFACE
   bool same_sense = true;    // face normal along the surface normal
+  PartPlacement placement;   // where this occurrence of the face sits (identity outside assemblies)
+  std::string instance;      // the occurrence's path in the assembly ("rod-assembly/nut_2"); empty outside
 };
 
 class StepModel {
@@ -51,15 +76,16 @@ class StepModel {
   /// Face `index` (1-based); throws InputError(where) naming how many faces there are.
   const StepFace& face(int index, const std::string& where) const;
   /// The surface of a face instance (trimmed to its boundary's range, see above) or of a
-  /// surface instance. Throws InputError for other entities and unsupported surface types.
-  Surface surface(std::int64_t entity) const;
+  /// surface instance, moved by `placement` (a StepFace's). Throws InputError for other entities
+  /// and unsupported surface types.
+  Surface surface(std::int64_t entity, const PartPlacement& placement = {}) const;
   /// The control data of a face's (or surface instance's) B-spline or Bezier surface, through a
-  /// RECTANGULAR_TRIMMED_SURFACE; empty for other surfaces.
-  std::optional<SplineSurfaceData> spline_data(std::int64_t entity) const;
+  /// RECTANGULAR_TRIMMED_SURFACE, moved by `placement`; empty for other surfaces.
+  std::optional<SplineSurfaceData> spline_data(std::int64_t entity, const PartPlacement& placement = {}) const;
   /// The region a face instance keeps inside its trimming loops (outer and inner bounds, each
-  /// edge's exact curve: LINE, CIRCLE, ELLIPSE, B-spline; docs/cad.md "Trimming loops"); null
-  /// for a surface instance and for a face bounded only by seams and vertices.
-  std::shared_ptr<const FaceRegion> face_region(std::int64_t entity) const;
+  /// edge's exact curve: LINE, CIRCLE, ELLIPSE, B-spline; docs/cad.md "Trimming loops"), moved by
+  /// `placement`; null for a surface instance and for a face bounded only by seams and vertices.
+  std::shared_ptr<const FaceRegion> face_region(std::int64_t entity, const PartPlacement& placement = {}) const;
   /// A B_SPLINE_CURVE_WITH_KNOTS (2D or 3D, not rational) as a B-spline curve.
   BSplineCurve bspline_curve(std::int64_t entity) const;
   /// Radians per plane-angle unit of the file (1 unless it declares another unit).
