@@ -86,6 +86,15 @@ class StepAccess {
     const Vec3 p = coordinates(ref(from, v, what), "CARTESIAN_POINT", &three_d);
     return three_d ? placement_.apply(p) : p;
   }
+  /// A VECTOR instance: its orientation (a DIRECTION, placed) made unit times its magnitude; a
+  /// zero vector fails naming it with `what` ("a line's direction").
+  Vec3 vector(const StepInstance& vec, const char* what) const {
+    const StepRecord& vr = record(vec, "VECTOR");
+    const Vec3 d = direction(ref(vec, param(vec, vr, 1, "orientation"), "orientation")).normalized() *
+                   number(vec, param(vec, vr, 2, "magnitude"), "magnitude");
+    if (!(d.norm() > 0)) fail(vec, cat(what, " must not be zero"));
+    return d;
+  }
   /// A DIRECTION instance, placed (rotated).
   Vec3 direction(const StepInstance& inst) const {
     bool three_d = false;

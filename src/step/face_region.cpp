@@ -137,11 +137,7 @@ EdgePiece edge_piece(const StepAccess& a, const StepInstance& edge, double direc
   const bool closed = (start - end).norm() <= 1e-12 * std::max(1.0, start.norm());
   if (curve.records.size() == 1 && cr.type == "LINE") {
     const Vec3 p = a.point(curve, a.param(curve, cr, 1, "pnt"), "pnt");
-    const StepInstance& vec = a.ref(curve, a.param(curve, cr, 2, "dir"), "dir");
-    const StepRecord& vr = a.record(vec, "VECTOR");
-    const Vec3 d = a.direction(a.ref(vec, a.param(vec, vr, 1, "orientation"), "orientation")).normalized() *
-                   a.number(vec, a.param(vec, vr, 2, "magnitude"), "magnitude");
-    if (!(d.norm() > 0)) a.fail(vec, "a line's direction must not be zero");
+    const Vec3 d = a.vector(a.ref(curve, a.param(curve, cr, 2, "dir"), "dir"), "a line's direction");
     e.at = [p, d](double s) { return Vec3(p + s * d); };
     e.derivative = [d](double) { return d; };
     e.lo = (from - p).dot(d) / d.squaredNorm();

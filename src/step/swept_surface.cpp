@@ -78,12 +78,7 @@ struct Line {
 Line step_line(const StepAccess& a, const StepInstance& c) {
   const StepRecord& r = c.records.front();
   const Vec3 p = a.point(c, a.param(c, r, 1, "pnt"), "pnt");
-  const StepInstance& vec = a.ref(c, a.param(c, r, 2, "dir"), "dir");
-  const StepRecord& vr = a.record(vec, "VECTOR");
-  const Vec3 d = a.direction(a.ref(vec, a.param(vec, vr, 1, "orientation"), "orientation")).normalized() *
-                 a.number(vec, a.param(vec, vr, 2, "magnitude"), "magnitude");
-  if (!(d.norm() > 0)) a.fail(vec, "a line's direction must not be zero");
-  return {p, d};
+  return {p, a.vector(a.ref(c, a.param(c, r, 2, "dir"), "dir"), "a line's direction")};
 }
 
 NurbsCurve3 line_piece(const Line& l, double s0, double s1) {
@@ -142,11 +137,7 @@ NurbsCurve3 swept_curve(const StepAccess& a, const StepInstance& c, LineRange li
 SplineSurfaceData extrusion(const StepAccess& a, const StepInstance& s, const std::vector<Vec3>& boundary,
                             const std::optional<Interval>& v_range) {
   const StepRecord& r = s.records.front();
-  const StepInstance& vec = a.ref(s, a.param(s, r, 2, "extrusion_axis"), "extrusion_axis");
-  const StepRecord& vr = a.record(vec, "VECTOR");
-  const Vec3 V = a.direction(a.ref(vec, a.param(vec, vr, 1, "orientation"), "orientation")).normalized() *
-                 a.number(vec, a.param(vec, vr, 2, "magnitude"), "magnitude");
-  if (!(V.norm() > 0)) a.fail(vec, "the extrusion vector must not be zero");
+  const Vec3 V = a.vector(a.ref(s, a.param(s, r, 2, "extrusion_axis"), "extrusion_axis"), "the extrusion vector");
   // A swept line's range: s of p = L(s) + t V at the boundary points (least squares in s, t).
   auto line_range = [&](const Line& l) {
     if (boundary.empty()) unbounded(a, s);
