@@ -335,6 +335,45 @@ double closure_slack(const Problem& P, const TraceOptions& o, const CurvePoint& 
   return 1e-8 * P.scale() + 10 * o.tolerance * (1 + 1 / std::max(sin0, 1e-8));
 }
 
+// A step that meets a pole, passed by pass_pole_step: true when the march ends there. A step
+// that neither passes through the pole nor finds a curve point beyond it goes on: a loop round
+// the pole smaller than the step (stress seed 12 pair 2649) is followed by shorter steps on this
+// side of it, until the step rule gives up.
+bool pole_step_ends(const Problem& P, const Pole& pole, double h, const CurvePoint& target, double slack,
+                    bool may_close, bool step_crossed_pole, const Marcher::Attempt& a, Marcher* m, MarchResult* r,
+                    TraceStats* stats) {
+  bool no_passage = false;
+  if (!pass_pole_step(P, pole, h, target, slack, may_close, m, r, stats, &no_passage)) return false;
+  if (!(no_passage && step_crossed_pole && m->reject(a))) return true;
+  r->event = Event{};
+  return false;
+}
+
+// The march's own budget (points, length) spent: the event that ends it.
+std::optional<Event> budget_reached(const MarchResult& r, const MarchLimits& limits) {
+  if (static_cast<long>(r.points.size()) >= limits.max_points)
+    return budget_event(BudgetBound::kPoints, "reached max_points = " + std::to_string(limits.max_points));
+  if (r.length >= limits.max_length) return budget_event(BudgetBound::kLength, "reached max_length");
+  return std::nullopt;
+}
+
+// The index condition (closure_turning.hpp) applies to a loop this march traces whole, in a
+// parameter plane: from the start back to it in the same direction; otherwise none is kept.
+ClosureTurning closure_turning(const Problem& P, const CurvePoint& start, const CurvePoint& target,
+                               const DynamicCurveJet& here) {
+  if (P.kind() == PairKind::kImplicitImplicit || (target.p - start.p).norm() != 0 || !(target.t.dot(start.t) > 0))
+    return ClosureTurning{};
+  const auto& T = P.periods();
+  return ClosureTurning(Vec2(here.x[1][0], here.x[1][1]), Vec2(T[0], T[1]));
+}
+
+// The loop closes at `target`: its last chord and the closed event.
+void close_at(const CurvePoint& target, const CurvePoint& from, MarchResult* r) {
+  r->length += arc_length_estimate(from.p, from.t, target.p, target.t);
+  r->points.push_back(target);
+  r->event = Event{EventKind::kClosed, BudgetBound::kNone, "closed loop", UnknownVec{}};
+}
+
 }  // namespace
 
 MarchResult Tracer::march_until_event(const CurvePoint& start_point, Direction direction, const MarchLimits& limits,
@@ -356,23 +395,15 @@ MarchResult Tracer::march_until_event(const CurvePoint& start_point, Direction d
   const CurvePoint& target = limits.close_at ? *limits.close_at : start;
   // A target other than the start may lie on the very first chord (just past a singular point).
   const std::size_t first_closing = (target.p - start.p).norm() > 0 ? 1 : 3;
-  // The index condition applies to a loop this march traces whole, in a parameter plane.
-  if (problem_.kind() != PairKind::kImplicitImplicit && (target.p - start.p).norm() == 0 && target.t.dot(start.t) > 0) {
-    const auto& T = problem_.periods();
-    m.turning = ClosureTurning(Vec2(m.state.here.x[1][0], m.state.here.x[1][1]), Vec2(T[0], T[1]));
-  }
+  m.turning = closure_turning(problem_, start, target, m.state.here);
   bool watch = limits.watch_crossings && !limits.skip_first_watch;
   double previous_rank = 0;  // rank ratio at the point before m.cur (0: none, no minimum at the start)
   double previous_middle = 0;  // rank ratio at the middle of the step that reached m.cur (0: none)
   const std::vector<Pole> poles = problem_poles(problem_);
   auto may_close = [&] { return limits.detect_closure && r.points.size() >= first_closing; };
   while (true) {
-    if (static_cast<long>(r.points.size()) >= limits.max_points) {
-      r.event = budget_event(BudgetBound::kPoints, "reached max_points = " + std::to_string(limits.max_points));
-      return r;
-    }
-    if (r.length >= limits.max_length) {
-      r.event = budget_event(BudgetBound::kLength, "reached max_length");
+    if (std::optional<Event> e = budget_reached(r, limits)) {
+      r.event = std::move(*e);
       return r;
     }
     Marcher::Attempt a = m.step();
@@ -387,13 +418,8 @@ MarchResult Tracer::march_until_event(const CurvePoint& start_point, Direction d
       }
     }
     if (pole) {
-      bool no_passage = false;
-      if (!pass_pole_step(problem_, *pole, h, target, sagitta_slack, may_close(), &m, &r, stats, &no_passage)) continue;
-      // No curve point beyond the pole from here: a loop round the pole smaller than the step
-      // (stress seed 12 pair 2649) is followed by shorter steps on this side of it, until the
-      // step rule gives up.
-      if (!(no_passage && step_crossed_pole && m.reject(a))) return r;
-      r.event = Event{};
+      if (pole_step_ends(problem_, *pole, h, target, sagitta_slack, may_close(), step_crossed_pole, a, &m, &r, stats))
+        return r;
       continue;
     }
     if (!a.ok) continue;
@@ -406,20 +432,16 @@ MarchResult Tracer::march_until_event(const CurvePoint& start_point, Direction d
     // caller must register the passage, or the node's half-branches stay unused and are traced
     // again (issue 11: every branch exactly once). The caller closes the loop at the located
     // point when the target lies before it (trace/through_singular.cpp, closes_before).
-    if (watch) {
-      Event e = watch_event(m.cur, previous_rank, previous_middle, m.state.here, a);
-      if (e.kind == EventKind::kSingularSuspected) {
-        r.event = std::move(e);
-        return r;
-      }
+    if (Event e = watch ? watch_event(m.cur, previous_rank, previous_middle, m.state.here, a) : Event{};
+        e.kind == EventKind::kSingularSuspected) {
+      r.event = std::move(e);
+      return r;
     }
     // Proximity and first order (closes_loop), then the index condition (closure_turning.hpp):
     // a strand passing by the start after a partial turn is not the loop closing.
     if (may_close() && internal::closes_loop(target, m.cur, a.p1, a.next.tangent(), sagitta_slack) &&
         m.turning.admits_closure()) {
-      r.length += arc_length_estimate(m.cur.p, m.cur.t, target.p, target.t);
-      r.points.push_back(target);
-      r.event = Event{EventKind::kClosed, BudgetBound::kNone, "closed loop", UnknownVec{}};
+      close_at(target, m.cur, &r);
       return r;
     }
     watch = limits.watch_crossings;
