@@ -13,6 +13,7 @@
 #include "ssimarch/march/option_ranges.hpp"
 #include "ssimarch/march/pole_passage.hpp"
 #include "ssimarch/march/predictor.hpp"
+#include "ssimarch/march/resolved_options.hpp"
 #include "ssimarch/march/step_control.hpp"
 #include "ssimarch/march/step_tolerances.hpp"
 #include "ssimarch/problem/singular_tolerances.hpp"
@@ -68,32 +69,10 @@ bool near_traced_curve(const Vec3& p, const std::vector<TracedCurve>& curves, do
   return false;
 }
 
-namespace {
-// The key an invalid option's error names: the first field out of its range (a subnormal
-// step_length names step_length), else "options" for a rule between fields.
-std::string_view invalid_option_key(const TraceOptions& o) {
-  for (const TraceOptionRange& r : trace_option_ranges())
-    if (!r.range.check(r.get(o), r.integer).empty()) return r.key;
-  return "options";
-}
-}  // namespace
-
-Tracer::Tracer(const Problem& problem, TraceOptions options) : problem_(problem), options_(options) {
-  std::string error;
-  if (!options_.is_valid(&error)) throw InputError(std::string(invalid_option_key(options_)), error);
-  std::string key;
-  if (!fits_model(options_, problem_.scale(), &key, &error)) throw InputError(key, error);
-  options_.tolerance = resolved_tolerance(options_, problem_.scale());
-  const bool adaptive = options_.step != StepRule::kConstant;
-  // The automatic lengths never fall below the step floor (options.hpp): a step that cannot
-  // move the point would loop without end.
-  const double floor = step_floor(problem_.scale(), options_.tolerance);
-  spacing_ = options_.step_length > 0 ? options_.step_length : std::max(problem_.scale() / 100.0, floor);
-  if (options_.step_length == 0) options_.step_length = std::max(problem_.scale() / (adaptive ? 10.0 : 100.0), floor);
-  if (options_.min_step_length == 0) options_.min_step_length = std::max(1e-3 * options_.step_length, floor);
-  if (options_.min_step == 0) options_.min_step = std::max(1e-7 * options_.step_length, floor);
-  options_.min_step = std::min(options_.min_step, options_.min_step_length);
-  if (options_.deviation == 0) options_.deviation = 1e-4 * problem_.scale();
+Tracer::Tracer(const Problem& problem, TraceOptions options) : problem_(problem) {
+  const ResolvedTraceOptions resolved = resolve_trace_options(options, problem_.scale());
+  options_ = resolved.options;
+  spacing_ = resolved.spacing;
 }
 
 MarchLimits Tracer::limits() const {
