@@ -43,10 +43,12 @@ struct Row {
   std::function<double(const TraceJobOptions&)> number;  // kReal, kInteger: the value as a double
 };
 
-// A number of the marching: its range is the one TraceOptions::is_valid checks (march/option_ranges.hpp).
-Row number_row(TraceOptionSpec spec) {
-  const TraceOptionRange* field = find_trace_option_range(spec.key);
-  SSIMARCH_EXPECTS(field, "trace option \"" + std::string(spec.key) + "\" has no range in march/option_ranges.cpp");
+// A number of the marching: its row is march's (march/option_ranges.hpp: range, unit, default,
+// meaning), the one TraceOptions::is_valid checks.
+Row number_row(std::string_view key) {
+  const TraceOptionRange* field = find_trace_option_range(key);
+  SSIMARCH_EXPECTS(field, "trace option \"" + std::string(key) + "\" has no row in march/option_ranges.cpp");
+  TraceOptionSpec spec = describe(field->key, field->unit, field->default_text, field->help);
   spec.type = field->integer ? TraceOptionSpec::Type::kInteger : TraceOptionSpec::Type::kReal;
   spec.rule = field->range.rule(field->integer);
   return Row{std::move(spec), field->range, [field](TraceJobOptions* o, double x) { field->set(o->trace, x); }, {},
@@ -147,31 +149,24 @@ std::vector<Row> make_rows() {
                                {C::kNewton, C::kProjection}, &TraceOptions::corrector));
   rows.push_back(choice_row<S>(describe("step", "", "`chordal`", "step rule", "step rule"),
                                {S::kConstant, S::kAngular, S::kDeviation, S::kOrder3, S::kChordal}, &TraceOptions::step));
-  rows.push_back(number_row(describe("step_length", "model length", "0 = automatic", "the constant rule's step L; the adaptive rules' largest step. Automatic: extent/100 (constant), "
-                              "extent/10 (adaptive), extent = diagonal of the problem's region")));
-  rows.push_back(number_row(describe("min_step_length", "model length", "0 = 1e-3 step_length", "smallest step an adaptive rule proposes")));
-  rows.push_back(number_row(describe("deviation", "model length", "0 = 1e-4 extent", "chordal deviation delta: the `chordal` rule keeps each chord's midpoint within delta of the curve")));
-  rows.push_back(number_row(describe("turn_angle", "radians", "0.1", "the `angular` rule's tangent turn per step")));
-  rows.push_back(number_row(describe("min_step", "model length", "0 = 1e-7 step_length", "below this the tracer stops at the point and reports why")));
-  rows.push_back(number_row(describe("taylor_order", "", "4", "order of the `taylor` predictor")));
-  rows.push_back(
-      number_row(describe("tolerance", "model length", "0 = 1e-13 extent",
-                          "a point is accepted when its distance from both surfaces is at most this; the automatic "
-                          "value scales with the model, so the same part in millimetres or metres is traced alike")));
-  rows.push_back(number_row(describe("max_corrector_iterations", "", "12", "Newton updates per point")));
-  rows.push_back(number_row(describe("max_turn_angle", "radians", "0.6", "a step turning the tangent by more is rejected and retried shorter (branch-jump guard)")));
-  rows.push_back(number_row(describe("max_correction_ratio", "", "0.5", "a step whose corrected point is farther than this times the step from the prediction is rejected")));
-  rows.push_back(number_row(describe("max_points", "", "200000", "per curve")));
-  rows.push_back(number_row(describe("max_length", "model length", "unbounded", "per curve")));
-  rows.push_back(number_row(describe("start_samples", "", "24", "samples per parameter direction (per axis, at most 16, for implicit pairs) when searching "
-                              "start points by sampling; cost: n^2 corrector runs (n^3 for implicit pairs)")));
+  rows.push_back(number_row("step_length"));
+  rows.push_back(number_row("min_step_length"));
+  rows.push_back(number_row("deviation"));
+  rows.push_back(number_row("turn_angle"));
+  rows.push_back(number_row("min_step"));
+  rows.push_back(number_row("taylor_order"));
+  rows.push_back(number_row("tolerance"));
+  rows.push_back(number_row("max_corrector_iterations"));
+  rows.push_back(number_row("max_turn_angle"));
+  rows.push_back(number_row("max_correction_ratio"));
+  rows.push_back(number_row("max_points"));
+  rows.push_back(number_row("max_length"));
+  rows.push_back(number_row("start_samples"));
   rows.push_back(flag_row(describe("certified_start_points", "", "true",
                                    "find start points by the certified interval search (docs/topology.md); false: by sampling",
                                    "yes/no"),
                           &TraceOptions::certified_start_points));
-  rows.push_back(number_row(describe("start_box_budget", "", "5000",
-                                     "boxes the certified search examines per square system before it reports the rest "
-                                     "as `uncertain_regions`")));
+  rows.push_back(number_row("start_box_budget"));
   rows.push_back(job_flag_row(describe("closed_form", "", "true",
                                        "answer pairs of primitives with an exact intersection (a plane and a quadric, "
                                        "coaxial surfaces of revolution, two spheres, a cylinder or cone and a quadric) in "

@@ -1,6 +1,7 @@
-// The admissible values of every numeric trace option, spelled once. TraceOptions::is_valid checks
-// options built in code by them; the option table (pipeline/option_table.cpp) parses scene keys
-// and command-line flags by them and states them in docs/scene-format.md.
+// Every numeric trace option, spelled once: key, admissible values, unit, default and meaning.
+// TraceOptions::is_valid checks options built in code by them; the option table
+// (pipeline/option_table.cpp) takes these rows as they are, parses scene keys and command-line
+// flags by them and states them in docs/scene-format.md.
 #pragma once
 
 #include <limits>
@@ -30,13 +31,18 @@ struct OptionRange {
   std::string check(double x, bool integer) const;
 };
 
-/// A numeric field of TraceOptions, its scene key and its range.
+/// A numeric field of TraceOptions: its one row, from which the scene key, the CLI flag, the
+/// Python keyword, the checks and the docs table come (pipeline/option_table.hpp adds the rows
+/// of the choices, flags and job options, which march does not know).
 struct TraceOptionRange {
   std::string_view key;  // "step_length"
   bool integer = false;
   OptionRange range;
   double (*get)(const TraceOptions&) = nullptr;
   void (*set)(TraceOptions&, double) = nullptr;
+  std::string_view unit;          // "model length", "radians" or empty
+  std::string_view default_text;  // as the docs state it ("0 = automatic")
+  std::string_view help;          // what it means
 };
 
 /// Every numeric field of TraceOptions (the choices and flags have no range).
