@@ -125,6 +125,7 @@ class Assembly {
     }
     for (const auto& [parent, item] : mapped_) mapped_item(parent, *item);
     for (const auto& [rep, root] : parent_) members_[find(rep)].push_back(rep);
+    for (const Link& l : links_) components_[find(l.parent)].push_back(&l);
   }
 
   static const StepRecord* relationship_record(const StepInstance& inst) {
@@ -145,7 +146,8 @@ class Assembly {
         a_.ref(inst, a_.param(inst, *with, 0, "transformation_operator"), "transformation_operator");
     if (!t.record("ITEM_DEFINED_TRANSFORMATION"))
       a_.fail(t,
-              "only ITEM_DEFINED_TRANSFORMATION places a component (a CARTESIAN_TRANSFORMATION_OPERATOR is not read)");
+              "is not an ITEM_DEFINED_TRANSFORMATION, the one placement of a component that is read (a "
+              "CARTESIAN_TRANSFORMATION_OPERATOR_3D, scaled or mirrored, is not read yet)");
     const StepRecord& tr = a_.record(t, "ITEM_DEFINED_TRANSFORMATION");
     const PartPlacement from =
         placement_motion(a_, a_.ref(t, a_.param(t, tr, 2, "transform_item_1"), "transform_item_1"));
@@ -285,9 +287,8 @@ class Assembly {
         if (out->size() > kMaxPlacedFaces)
           throw InputError(file_.source, cat("the assembly places more than ", kMaxPlacedFaces, " faces"));
       }
-    for (const Link& l : links_)
-      if (find(l.parent) == part)
-        walk(find(l.child), l.motion.then(motion), name.empty() ? l.name : name + "/" + l.name, path, out);
+    for (const Link* l : components_[part])
+      walk(find(l->child), l->motion.then(motion), name.empty() ? l->name : name + "/" + l->name, path, out);
     path->pop_back();
   }
 
@@ -301,7 +302,8 @@ class Assembly {
   std::map<std::int64_t, std::int64_t> parent_;  // representations, union-find of one part's
   std::vector<std::pair<std::int64_t, const StepInstance*>> mapped_;
   std::vector<Link> links_;
-  std::map<std::int64_t, std::vector<std::int64_t>> members_;  // a part's representations
+  std::map<std::int64_t, std::vector<std::int64_t>> members_;    // a part's representations
+  std::map<std::int64_t, std::vector<const Link*>> components_;  // a part's placed components
   std::unordered_map<std::int64_t, const StepInstance*> cdsr_;
   std::unordered_map<std::int64_t, std::vector<std::int64_t>> shapes_;
   std::unordered_map<std::int64_t, std::vector<std::int64_t>> faces_of_;
