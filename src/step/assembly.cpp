@@ -108,24 +108,47 @@ class Assembly {
     return out;
   }
 
-  // Representations, their plain relationships (one part: the same coordinates) and the placing ones.
+  // Representations, their plain relationships (one part: the same coordinates), then the
+  // placing ones, whose component is read against the parts the plain ones made.
   void scan() {
-    for (std::int64_t id : file_.order) {
-      const StepInstance& inst = *file_.find(id);
-      if (const StepRecord* r = representation_record(inst)) {
-        parent_[id] = id;
-        for (const StepValue& item : r->params[1].items)
-          if (item.kind == StepValue::Kind::kRef)
-            if (const StepInstance* m = file_.find(item.ref); m && m->record("MAPPED_ITEM")) mapped_.push_back({id, m});
+    for (std::int64_t id : file_.order) index(*file_.find(id));
+    for (bool placing : {false, true})
+      for (std::int64_t id : file_.order) {
+        const StepInstance& inst = *file_.find(id);
+        const StepRecord* r = relationship_record(inst);
+        if (r && placing == (inst.record("REPRESENTATION_RELATIONSHIP_WITH_TRANSFORMATION") != nullptr))
+          relationship(inst, *r);
       }
-    }
-    for (std::int64_t id : file_.order) {
-      const StepInstance& inst = *file_.find(id);
-      if (const StepRecord* r = relationship_record(inst)) relationship(inst, *r);
-    }
     for (const auto& [parent, item] : mapped_) mapped_item(parent, *item);
     for (const auto& [rep, root] : parent_) members_[find(rep)].push_back(rep);
     for (const Link& l : links_) components_[find(l.parent)].push_back(&l);
+    for (const auto& [definition, reps] : shapes_)
+      if (const StepInstance* pd = file_.find(definition); pd && pd->record("PRODUCT_DEFINITION"))
+        for (std::int64_t rep : reps)
+          if (parent_.count(rep)) product_parts_.insert(find(rep));
+  }
+
+  // The instances the walk looks up: representations with their MAPPED_ITEMs, the
+  // CONTEXT_DEPENDENT_SHAPE_REPRESENTATION of each relationship, the shapes of each definition.
+  void index(const StepInstance& inst) {
+    if (const StepRecord* r = representation_record(inst)) {
+      parent_[inst.id] = inst.id;
+      for (const StepValue& item : r->params[1].items)
+        if (item.kind == StepValue::Kind::kRef)
+          if (const StepInstance* m = file_.find(item.ref); m && m->record("MAPPED_ITEM"))
+            mapped_.push_back({inst.id, m});
+    }
+    if (const StepRecord* c = inst.record("CONTEXT_DEPENDENT_SHAPE_REPRESENTATION");
+        c && c->params.size() == 2 && c->params[0].kind == StepValue::Kind::kRef)
+      cdsr_[c->params[0].ref] = &inst;
+    const StepRecord* sdr = inst.record("SHAPE_DEFINITION_REPRESENTATION");
+    if (!sdr || sdr->params.size() != 2 || sdr->params[0].kind != StepValue::Kind::kRef ||
+        sdr->params[1].kind != StepValue::Kind::kRef)
+      return;
+    const StepInstance* pds = file_.find(sdr->params[0].ref);
+    const StepRecord* pr = pds ? pds->record("PRODUCT_DEFINITION_SHAPE") : nullptr;
+    if (pr && pr->params.size() >= 3 && pr->params[2].kind == StepValue::Kind::kRef)
+      shapes_[pr->params[2].ref].push_back(sdr->params[1].ref);
   }
 
   static const StepRecord* relationship_record(const StepInstance& inst) {
@@ -172,13 +195,7 @@ class Assembly {
   }
 
   // The CONTEXT_DEPENDENT_SHAPE_REPRESENTATION of a relationship and its occurrence.
-  const StepInstance* occurrence(const StepInstance& relationship) {
-    if (cdsr_.empty())
-      for (std::int64_t id : file_.order)
-        if (const StepInstance& c = *file_.find(id); c.record("CONTEXT_DEPENDENT_SHAPE_REPRESENTATION")) {
-          const StepRecord& r = a_.record(c, "CONTEXT_DEPENDENT_SHAPE_REPRESENTATION");
-          if (r.params.size() == 2 && r.params[0].kind == StepValue::Kind::kRef) cdsr_[r.params[0].ref] = &c;
-        }
+  const StepInstance* occurrence(const StepInstance& relationship) const {
     const auto it = cdsr_.find(relationship.id);
     if (it == cdsr_.end()) return nullptr;
     const StepRecord& r = a_.record(*it->second, "CONTEXT_DEPENDENT_SHAPE_REPRESENTATION");
@@ -214,30 +231,12 @@ class Assembly {
 
   // Whether a part's representations include a product's shape (SHAPE_DEFINITION_REPRESENTATION
   // of a PRODUCT_DEFINITION_SHAPE of a PRODUCT_DEFINITION).
-  bool is_product_shape(std::int64_t part) {
-    shapes_of(0);
-    for (const auto& [definition, reps] : shapes_) {
-      const StepInstance* pd = file_.find(definition);
-      if (!pd || !pd->record("PRODUCT_DEFINITION")) continue;
-      for (std::int64_t rep : reps)
-        if (parent_.count(rep) && find(rep) == part) return true;
-    }
-    return false;
-  }
+  bool is_product_shape(std::int64_t part) const { return product_parts_.count(part) > 0; }
 
-  std::vector<std::int64_t> shapes_of(std::int64_t product_definition) {
-    if (shapes_.empty())
-      for (std::int64_t id : file_.order) {
-        const StepRecord* sdr = file_.find(id)->record("SHAPE_DEFINITION_REPRESENTATION");
-        if (!sdr || sdr->params.size() != 2 || sdr->params[0].kind != StepValue::Kind::kRef) continue;
-        const StepInstance* pds = file_.find(sdr->params[0].ref);
-        const StepRecord* pr = pds ? pds->record("PRODUCT_DEFINITION_SHAPE") : nullptr;
-        if (pr && pr->params.size() >= 3 && pr->params[2].kind == StepValue::Kind::kRef &&
-            sdr->params[1].kind == StepValue::Kind::kRef)
-          shapes_[pr->params[2].ref].push_back(sdr->params[1].ref);
-      }
+  const std::vector<std::int64_t>& shapes_of(std::int64_t product_definition) const {
+    static const std::vector<std::int64_t> kNone;
     const auto it = shapes_.find(product_definition);
-    return it == shapes_.end() ? std::vector<std::int64_t>{} : it->second;
+    return it == shapes_.end() ? kNone : it->second;
   }
 
   std::int64_t find(std::int64_t x) {
@@ -305,7 +304,8 @@ class Assembly {
   std::map<std::int64_t, std::vector<std::int64_t>> members_;    // a part's representations
   std::map<std::int64_t, std::vector<const Link*>> components_;  // a part's placed components
   std::unordered_map<std::int64_t, const StepInstance*> cdsr_;
-  std::unordered_map<std::int64_t, std::vector<std::int64_t>> shapes_;
+  std::unordered_map<std::int64_t, std::vector<std::int64_t>> shapes_;  // by product definition
+  std::set<std::int64_t> product_parts_;                                // parts that are a product's shape
   std::unordered_map<std::int64_t, std::vector<std::int64_t>> faces_of_;
   std::set<std::int64_t> all_reached_;
   std::set<std::int64_t> visited_;  // parts walked
