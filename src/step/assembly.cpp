@@ -252,8 +252,11 @@ class Assembly {
     std::vector<std::int64_t> found;
     std::set<std::int64_t> seen;
     std::vector<std::int64_t> todo;
-    for (const StepValue& v : representation_record(*file_.find(rep))->params[1].items)
+    std::function<void(const StepValue&)> refs = [&](const StepValue& v) {
       if (v.kind == StepValue::Kind::kRef) todo.push_back(v.ref);
+      for (const StepValue& x : v.items) refs(x);
+    };
+    refs(representation_record(*file_.find(rep))->params[1]);  // the items
     while (!todo.empty()) {
       const std::int64_t id = todo.back();
       todo.pop_back();
@@ -263,10 +266,6 @@ class Assembly {
         found.push_back(id);
         continue;
       }
-      std::function<void(const StepValue&)> refs = [&](const StepValue& v) {
-        if (v.kind == StepValue::Kind::kRef) todo.push_back(v.ref);
-        for (const StepValue& x : v.items) refs(x);
-      };
       for (const StepRecord& r : inst->records)
         for (const StepValue& v : r.params) refs(v);
     }
