@@ -219,10 +219,9 @@ Event budget_event(BudgetBound bound, const std::string& message) {
 // The watch on a step from cur (jet `here`) to the attempt's point (MarchLimits::watch_crossings):
 // kSingularSuspected with Event::beyond = the attempt's point when the tangent orientation reverses
 // (a crossing of branches passed), the rank ratio of J_H has a local minimum below
-// kWatchRankRatio at cur (a tacnode passed near), or it dips in the middle of the step below
-// kRankDipRatio times its smaller end value (a singular point the chord passes without a
-// reversal: a triple point along a branch, or a long step past a quadruple point); kBudget (no
-// event) otherwise.
+// kWatchRankRatio at cur, by more than kRankMinimumMargin (a tacnode passed near), or it dips in the middle of the step
+// below kRankDipRatio times its smaller end value (a singular point the chord passes without a reversal: a triple point
+// along a branch, or a long step past a quadruple point); kBudget (no event) otherwise.
 Event watch_event(const CurvePoint& cur, double previous_rank, double previous_middle, const DynamicCurveJet& here,
                   const Marcher::Attempt& a) {
   const double r1 = here.rank_ratio, r2 = a.next.rank_ratio, rm = a.middle.rank_ratio;
@@ -231,7 +230,8 @@ Event watch_event(const CurvePoint& cur, double previous_rank, double previous_m
                  "the tangent orientation reverses between " + describe_point(cur.p) + " and " + describe_point(a.p1) +
                      ": a crossing of branches lies between",
                  a.corrected.x};
-  if (r1 < kWatchRankRatio && r1 < previous_rank && r1 <= r2)
+  if (const double below = 1 - kRankMinimumMargin;
+      r1 < kWatchRankRatio && r1 < below * previous_rank && r1 < below * r2)
     return Event{EventKind::kSingularSuspected, BudgetBound::kNone,
                  "the rank ratio of the Jacobian has a local minimum " + std::to_string(r1) + " at " + describe_point(cur.p),
                  a.corrected.x};

@@ -67,31 +67,45 @@ void find_curves(const IntersectionSpec& spec, IntersectionRun* run_ptr) {
   }
 }
 
-// When no curve was found, whether the surfaces coincide over a region (issue 13 item 3).
-void report_coincidence(const IntersectionSpec& spec, IntersectionRun* run_ptr) {
-  IntersectionRun& run = *run_ptr;
+// Whether the surfaces coincide over a region (issue 13 item 3), checked where the answer leaves
+// room for it: no curve, a search that did not decide every box, or a curve of tangential contact
+// (coincident surfaces are tangent everywhere in the shared region, so the tracer finds contact
+// lines or uncertain boxes there, never a certified answer; issue 28: a rod in a hole of its own
+// radius gave one "tangential contact" line). A shared region found beside curves withdraws the
+// certificate: those curves lie in or along the region, and its boundary is not traced.
+bool may_coincide(const IntersectionRun& run) {
   // A closed form answers only distinct surfaces (closed_form.hpp: coincident ones are traced).
   // Surfaces in disjoint boxes share no region (and the tracer said so without work): skipping the
   // sampling here makes the empty pairs of a model's all-pairs batch cheap (issue 17).
-  if (!run.result.curves.empty() || run.result.start_search.method == StartSearchMethod::kClosedForm ||
-      run.problem.disjoint())
-    return;
-  // Coincident surfaces share a region, not a curve: say so rather than report "0 curves". The
-  // distance test allows for the corrector's tolerance and the rounding of the model's size.
+  if (run.result.start_search.method == StartSearchMethod::kClosedForm || run.problem.disjoint()) return false;
+  if (run.result.curves.empty() || !run.result.start_search.certified) return true;
+  return std::any_of(run.result.curves.begin(), run.result.curves.end(),
+                     [](const TracedCurve& c) { return c.tangential_contact; });
+}
+
+void report_coincidence(const IntersectionSpec& spec, IntersectionRun* run_ptr) {
+  IntersectionRun& run = *run_ptr;
+  if (!may_coincide(run)) return;
+  // The distance test allows for the corrector's tolerance and the rounding of the model's size.
   const double tolerance =
       std::max(1e3 * resolved_tolerance(spec.options.trace, run.problem.scale()), 1e-12 * run.problem.scale());
   run.coincidence = find_coincidence(run.problem, tolerance);
-  if (run.coincidence) {
-    const std::string& first = spec.surfaces[spec.swapped ? 1 : 0];
-    const std::string& second = spec.surfaces[spec.swapped ? 0 : 1];
-    const Box& b = run.coincidence->region;
-    run.result.warnings.push_back(
-        "the surfaces coincide (" + std::to_string(run.coincidence->shared) + " of " +
-        std::to_string(run.coincidence->samples) + " samples of " + first + " lie on " + second +
-        ", in the box x [" + std::to_string(b.x.lo) + ", " + std::to_string(b.x.hi) + "], y [" + std::to_string(b.y.lo) +
-        ", " + std::to_string(b.y.hi) + "], z [" + std::to_string(b.z.lo) + ", " + std::to_string(b.z.hi) +
-        "]): they share a surface region, which has no intersection curve");
-  }
+  if (!run.coincidence) return;
+  const std::string& first = spec.surfaces[spec.swapped ? 1 : 0];
+  const std::string& second = spec.surfaces[spec.swapped ? 0 : 1];
+  const Box& b = run.coincidence->region;
+  const std::string curves = run.result.curves.empty()
+                                 ? "which has no intersection curve"
+                                 : "which has no intersection curve: the " + std::to_string(run.result.curves.size()) +
+                                       " curve(s) reported lie in or along it, and its boundary is not traced "
+                                       "(not certified)";
+  run.result.start_search.certified = false;
+  run.result.warnings.push_back("the surfaces coincide (" + std::to_string(run.coincidence->shared) + " of " +
+                                std::to_string(run.coincidence->samples) + " samples of " + first + " lie on " +
+                                second + ", in the box x [" + std::to_string(b.x.lo) + ", " + std::to_string(b.x.hi) +
+                                "], y [" + std::to_string(b.y.lo) + ", " + std::to_string(b.y.hi) + "], z [" +
+                                std::to_string(b.z.lo) + ", " + std::to_string(b.z.hi) +
+                                "]): they share a surface region, " + curves);
 }
 
 }  // namespace

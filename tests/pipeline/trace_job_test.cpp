@@ -1,6 +1,9 @@
 // The trace job: selection, overrides checked before tracing, typed per-point geometry.
 #include "ssimarch/pipeline/trace_job.hpp"
 
+#include <cmath>
+#include <numbers>
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -139,6 +142,84 @@ TEST(TraceJob, CoincidentSurfacesAreReportedWithTheSharedRegion) {
   EXPECT_NEAR(b.z.lo, -1.0, 0.05);
   EXPECT_NEAR(b.z.hi, 1.0, 0.05);
   EXPECT_FALSE(job.runs[2].coincidence.has_value());
+}
+
+}  // namespace
+}  // namespace ssimarch
+
+namespace ssimarch {
+namespace {
+
+// Coincident surfaces beside curves (issue 28: a rod in a hole of its own radius): two equal
+// coaxial cylinders whose ranges overlap on z in [0, 2] are tangent all over the shared band, so
+// the tracer finds contact lines there. The run reports the shared region and withdraws the
+// certificate instead of presenting those lines as the intersection.
+TEST(TraceJob, ASharedRegionBesideCurvesIsReportedAndNotCertified) {
+  const Scene scene = parse_scene(R"json({
+    "surfaces": {"a": {"cylinder": {"point": [0,0,0], "axis": [0,0,1], "radius": 1, "range": [-2, 2]}},
+                 "b": {"cylinder": {"point": [0,0,0], "axis": [0,0,1], "radius": 1, "range": [0, 3]}}},
+    "intersections": [{"name": "traced", "surfaces": ["a", "b"], "options": {"closed_form": false}},
+                      {"name": "default", "surfaces": ["a", "b"]}]})json",
+                                  "s.json");
+  const TraceJobResult job = trace_scene(scene);
+  ASSERT_EQ(job.runs.size(), 2u);
+  for (const IntersectionRun& r : job.runs) {
+    SCOPED_TRACE(r.spec.name);
+    ASSERT_TRUE(r.coincidence.has_value());
+    EXPECT_FALSE(r.result.start_search.certified);
+    EXPECT_THAT(::testing::PrintToString(r.result.warnings), HasSubstr("the surfaces coincide"));
+    // The samples of a's grid in the shared band: z from the first row above 0 to the last below 2.
+    EXPECT_GT(r.coincidence->region.z.lo, 0.0);
+    EXPECT_LT(r.coincidence->region.z.hi, 2.0);
+    EXPECT_NEAR(r.coincidence->region.z.hi - r.coincidence->region.z.lo, 2.0, 0.5);
+  }
+}
+
+// A plane patch paired in implicit form is trimmed to its rectangle (surface/trims.hpp): the
+// line where the plane x = 1 meets the patch z = 0, |x|, |y| <= 1, is the patch's edge y in
+// [-1, 1] (length 2; it ran on to the inflated box's +-1.1), and the traced arcs of a unit sphere
+// cut by the strip |x| <= 1/2 of z = 0 end on the strip's edges: two arcs of pi/3.
+TEST(TraceJob, APlanePatchInImplicitFormIsTrimmedToItsRectangle) {
+  const Scene scene = parse_scene(R"json({
+    "surfaces": {"patch": {"plane": {"point": [0,0,0], "normal": [0,0,1], "u": [-1, 1], "v": [-1, 1]}},
+                 "wall": {"plane": {"point": [1,0,0], "normal": [1,0,0], "u": [-1, 1], "v": [-1, 1]}},
+                 "strip": {"plane": {"point": [0,0,0], "normal": [0,0,1], "u": [-0.5, 0.5], "v": [-2, 2]}},
+                 "ball": {"sphere": {"center": [0,0,0], "radius": 1}}},
+    "intersections": [{"name": "edge", "surfaces": ["patch", "wall"]},
+                      {"name": "arcs", "surfaces": ["ball", "strip"], "options": {"closed_form": false}}]})json",
+                                  "s.json");
+  const TraceJobResult job = trace_scene(scene);
+  ASSERT_EQ(job.runs.size(), 2u);
+  ASSERT_EQ(job.runs[0].result.curves.size(), 1u);
+  EXPECT_THAT(job.runs[0].result.curves[0], testing::HasLength(2.0, 1e-12));
+  for (const CurvePoint& p : job.runs[0].result.curves[0].points) EXPECT_LE(std::abs(p.p.y()), 1.0 + 1e-12);
+  ASSERT_EQ(job.runs[1].result.curves.size(), 2u);
+  for (const TracedCurve& c : job.runs[1].result.curves) {
+    EXPECT_FALSE(c.closed);
+    EXPECT_THAT(c, testing::HasLength(std::numbers::pi / 3, 1e-9));
+  }
+}
+
+// Where a plane cuts a torus (R = 2, r = 1) 1e-6 below its top, the sine between the normals is
+// 1.4e-3 all along both circles, so rounding made every other point a local minimum of the rank
+// ratio, and each one a failed singular-point location and a retake in short steps (1,508 points
+// and 13 s for two circles). The watch now wants a minimum by more than kRankMinimumMargin: the
+// two circles of radius 2 +- sqrt(2e-6 - 1e-12) at the chordal rule's own steps.
+TEST(TraceJob, AConstantRankRatioAlongACircleIsNoSingularPoint) {
+  const Scene scene = parse_scene(R"json({
+    "surfaces": {"torus": {"torus": {"center": [0,0,0], "axis": [0,0,1], "major_radius": 2, "minor_radius": 1}},
+                 "cut": {"plane": {"point": [0,0,0.999999], "normal": [0,0,1], "u": [-4, 4], "v": [-4, 4]}}},
+    "intersections": [{"name": "near_top", "surfaces": ["torus", "cut"]}]})json",
+                                  "s.json");
+  const TraceJobResult job = trace_scene(scene);
+  ASSERT_EQ(job.runs.size(), 1u);
+  const TraceResult& r = job.runs[0].result;
+  ASSERT_EQ(r.curves.size(), 2u);
+  const double d = std::sqrt(2e-6 - 1e-12);
+  const double lengths[2] = {r.curves[0].length, r.curves[1].length};
+  EXPECT_NEAR(std::max(lengths[0], lengths[1]), 2 * std::numbers::pi * (2 + d), 1e-8);
+  EXPECT_NEAR(std::min(lengths[0], lengths[1]), 2 * std::numbers::pi * (2 - d), 1e-8);
+  EXPECT_LT(r.stats.points, 600);  // 230 now; 1,508 with the retakes
 }
 
 }  // namespace

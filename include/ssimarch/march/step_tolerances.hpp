@@ -28,4 +28,15 @@ inline constexpr double kMidpointDeviationRatio = 1.0 / 16;
 /// the four-petal rose passed by a long step on a smooth branch (s^3). Dimensionless.
 inline constexpr double kRankDipRatio = 0.5;
 
+/// Relative margin by which the rank ratio at a watched point must lie below its neighbours'
+/// values to count as a local minimum (MarchLimits::watch_crossings, kWatchRankRatio). Along a
+/// curve on which the ratio is constant (a circle where a plane cuts a torus 1e-6 below its top:
+/// the ratio is 1.4e-3 all round) rounding alone makes every other point a "minimum", and each
+/// one cost a failed location with order-12 jets (13 s instead of 0.6 s for that circle). The
+/// rounding of the ratio is ~1e-13 relative (unit normals of error ~1e-16 crossed, points within
+/// the point tolerance); a true minimum near a tacnode passed at distance d with steps h differs
+/// from its neighbours by h^2 / d^2 (the ratio grows like d^2 + s^2), which stays above this
+/// margin for every pass within 1000 steps of the point. Dimensionless.
+inline constexpr double kRankMinimumMargin = 1e-6;
+
 }  // namespace ssimarch

@@ -1,7 +1,10 @@
 // Trims of an implicit form: the part of the zero set f = 0 that the surface is. A primitive
 // with an axial range (cylinder, cone) is the piece of its infinite implicit surface between
 // two planes normal to its axis; the implicit form carries that range as a slab, so a curve
-// traced in implicit form ends on the same rim as in parametric form (issue 11 item 5).
+// traced in implicit form ends on the same rim as in parametric form (issue 11 item 5). A
+// plane's or a paraboloid's rectangle (its parameters are the coordinates along e0 and e1) is
+// two such slabs, along e0 and e1: without them a plane patch paired in implicit form was the
+// whole plane inside its (inflated) box, and curves ran past its edges.
 #pragma once
 
 #include <vector>
@@ -21,8 +24,9 @@ struct Slab {
   }
 };
 
-/// The slabs trimming a surface's implicit form: one per axial range (cylinder, cone), none
-/// for closed surfaces, implicit expressions (their box is their region) and patches.
+/// The slabs trimming a surface's implicit form: one per axial range (cylinder, cone), two per
+/// parameter rectangle (plane, paraboloid), none for closed surfaces, implicit expressions
+/// (their box is their region) and patches.
 std::vector<Slab> implicit_trims(const Surface& surface);
 
 }  // namespace ssimarch
