@@ -127,6 +127,23 @@ TraceRequest request_of(const py::object& only, const py::kwargs& overrides) {
   return request;
 }
 
+// trace()'s docstring: what it takes, then every keyword option from the option table with its
+// admissible values, unit, default and meaning.
+std::string trace_docstring() {
+  std::string doc =
+      "Traces a scene (a path, a JSON string or a dict; docs/scene-format.md), or the intersection of two Surface "
+      "objects (trace(a, b): the scene of surfaces 'a', 'b' and the intersection 'a-b'). `only`: a name or names "
+      "of intersections to trace. Keyword arguments override trace options of every intersection (keys of "
+      "ssimarch.trace_options()), validated as the CLI's flags. Raises InputError; Ctrl-C raises "
+      "KeyboardInterrupt when the trace returns.\n\nKeyword options:\n";
+  for (const TraceOptionSpec& o : trace_option_table()) {
+    doc += "  " + std::string(o.key) + ": " + std::string(o.help) + " (" + o.rule;
+    if (!o.unit.empty()) doc += "; " + std::string(o.unit);
+    doc += "; default " + std::string(o.default_text) + ")\n";
+  }
+  return doc;
+}
+
 PyTrace trace(const py::object& scene, const py::object& other, const py::object& only, const py::kwargs& overrides) {
   auto job = std::make_shared<TraceJob>();
   job->scene = python::scene_of(scene, other, "trace");
@@ -257,12 +274,11 @@ void bind_trace(py::module_& m) {
         return out.str();
       }, "The CLI's JSON output (ssimarch trace SCENE), byte for byte.");
 
+  // The keywords' documentation is the option table's (the one the scene keys, the CLI's flags
+  // and docs/scene-format.md come from): pybind11 keeps the pointer, so the text lives as long.
+  static const std::string trace_doc = trace_docstring();
   m.def("trace", &trace, py::arg("scene"), py::arg("other") = py::none(), py::kw_only(), py::arg("only") = py::none(),
-        "Traces a scene (a path, a JSON string or a dict; docs/scene-format.md), or the intersection of two Surface "
-        "objects (trace(a, b): the scene of surfaces 'a', 'b' and the intersection 'a-b'). `only`: a name or names "
-        "of intersections to trace. Keyword arguments override trace options of every intersection (keys of "
-        "ssimarch.trace_options()), validated as the CLI's flags. Raises InputError; Ctrl-C raises "
-        "KeyboardInterrupt when the trace returns.");
+        trace_doc.c_str());
   m.def("trace_options", [] {
     std::vector<std::string> keys;
     for (const auto& o : trace_option_table()) keys.emplace_back(o.key);

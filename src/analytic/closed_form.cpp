@@ -212,6 +212,11 @@ bool ruled_answer(const Problem& problem, const std::vector<Slab>& region, doubl
 
 std::optional<ClosedFormResult> closed_form_intersection(const Problem& problem, const TraceOptions& options) {
   if (problem.kind() != PairKind::kImplicitImplicit || problem.disjoint()) return std::nullopt;
+  return closed_form_intersection(problem, resolve_trace_options(options, problem.scale()));
+}
+
+std::optional<ClosedFormResult> closed_form_intersection(const Problem& problem, const ResolvedTraceOptions& options) {
+  if (problem.kind() != PairKind::kImplicitImplicit || problem.disjoint()) return std::nullopt;
   const auto start = std::chrono::steady_clock::now();
   ClosedFormResult out;
   const double scale = problem.scale();
@@ -219,9 +224,8 @@ std::optional<ClosedFormResult> closed_form_intersection(const Problem& problem,
   std::vector<Slab> region = box_slabs({bounds[0], bounds[1], bounds[2]});
   add_trims(problem.first(), &region);
   add_trims(problem.second(), &region);
-  const double deviation = options.deviation > 0 ? options.deviation : 1e-4 * scale;
-  const double max_chord = options.step_length > 0 ? options.step_length : scale / 10;
-  const double gap = contact_gap_tolerance(resolved_tolerance(options, scale), scale);
+  const double deviation = options.options.deviation, max_chord = options.chord;
+  const double gap = contact_gap_tolerance(options.options.tolerance, scale);
   if (const auto whole = section(problem.first(), problem.second(), scale, gap, &out.pair)) {
     for (const Conic& conic : *whole) {
       for (const Conic& piece : clip_to_slabs(conic, region)) {

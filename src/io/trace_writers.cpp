@@ -6,8 +6,6 @@
 
 #include "ssimarch/io/singular_json.hpp"
 #include "ssimarch/io/topology_json.hpp"
-#include "ssimarch/march/model_size.hpp"
-#include "ssimarch/march/resolved_options.hpp"
 #include "ssimarch/march/tracer.hpp"
 namespace ssimarch {
 
@@ -113,15 +111,12 @@ static json start_search_to_json(const StartPointSearch& s) {
 namespace {
 
 // The options the trace used (issue 25: the output reported the requested step_length 0, not the
-// step used): resolved against the model by the tracer's own resolver (march/resolved_options.hpp),
-// and which of them were automatic. A problem whose surfaces'
-// boxes are disjoint was never traced: its options stand as requested.
+// step used): those run_intersection resolved once against the model (IntersectionRun::used),
+// and which of them were automatic. A problem whose surfaces' boxes are disjoint was never
+// traced: its options stand as requested, the tolerance resolved.
 json options_json(const IntersectionRun& run) {
   const TraceOptions& asked = run.spec.options.trace;
-  TraceOptions used = asked;
-  used.tolerance = resolved_tolerance(asked, run.problem.scale());
-  // run_intersection checked them against this model before tracing (a disjoint pair was not).
-  if (!run.problem.disjoint()) used = resolve_trace_options(asked, run.problem.scale()).options;
+  const TraceOptions& used = run.used.options;
   json automatic = json::array();
   for (const auto& [key, value] : {std::pair<const char*, double>{"step_length", asked.step_length},
                                    {"min_step_length", asked.min_step_length},

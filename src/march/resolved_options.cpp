@@ -27,12 +27,13 @@ ResolvedTraceOptions resolve_trace_options(const TraceOptions& asked, double sca
   std::string error, key;
   if (!asked.is_valid(&error)) throw InputError(std::string(invalid_option_key(asked)), error);
   if (!fits_model(asked, scale, &key, &error)) throw InputError(key, error);
-  ResolvedTraceOptions r{asked, 0};
+  ResolvedTraceOptions r{asked, 0, 0};
   TraceOptions& o = r.options;
   o.tolerance = resolved_tolerance(asked, scale);
   const bool adaptive = o.step != StepRule::kConstant;
   const double floor = step_floor(scale, o.tolerance);
   r.spacing = o.step_length > 0 ? o.step_length : std::max(scale / 100.0, floor);
+  r.chord = o.step_length > 0 ? o.step_length : std::max(scale / 10.0, floor);
   if (o.step_length == 0) o.step_length = std::max(scale / (adaptive ? 10.0 : 100.0), floor);
   if (o.min_step_length == 0) o.min_step_length = std::max(1e-3 * o.step_length, floor);
   if (o.min_step == 0) o.min_step = std::max(1e-7 * o.step_length, floor);

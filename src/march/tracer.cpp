@@ -69,11 +69,11 @@ bool near_traced_curve(const Vec3& p, const std::vector<TracedCurve>& curves, do
   return false;
 }
 
-Tracer::Tracer(const Problem& problem, TraceOptions options) : problem_(problem) {
-  const ResolvedTraceOptions resolved = resolve_trace_options(options, problem_.scale());
-  options_ = resolved.options;
-  spacing_ = resolved.spacing;
-}
+Tracer::Tracer(const Problem& problem, TraceOptions options)
+    : Tracer(problem, resolve_trace_options(options, problem.scale())) {}
+
+Tracer::Tracer(const Problem& problem, const ResolvedTraceOptions& resolved)
+    : problem_(problem), options_(resolved.options), spacing_(resolved.spacing) {}
 
 MarchLimits Tracer::limits() const {
   MarchLimits l;

@@ -79,15 +79,17 @@ void include(Box* b, const Vec3& p, bool first) {
 
 }  // namespace
 
-std::optional<Coincidence> find_coincidence(const Problem& problem, double tolerance, int grid) {
-  const Surface& first = problem.first();
+std::optional<Coincidence> find_coincidence(const Surface& sampled, const Surface& other, const Box& box,
+                                            double tolerance, int grid) {
   std::vector<Vec3> points;
-  if (first.is_parametric()) parametric_samples(first, grid, &points);
-  else implicit_samples(first, first.box(), grid, tolerance, &points);
+  if (sampled.is_parametric())
+    parametric_samples(sampled, grid, &points);
+  else
+    implicit_samples(sampled, box, grid, tolerance, &points);
   Coincidence c;
   for (const Vec3& p : points) {
     if (!p.allFinite()) continue;
-    const double d = distance_from(problem.second(), p);
+    const double d = distance_from(other, p);
     if (!std::isfinite(d)) continue;
     ++c.samples;
     if (d > tolerance) continue;
@@ -97,6 +99,18 @@ std::optional<Coincidence> find_coincidence(const Problem& problem, double toler
   }
   if (c.shared < 2 * grid) return std::nullopt;
   return c;
+}
+
+std::optional<Coincidence> find_coincidence(const Problem& problem, double tolerance, int grid) {
+  return find_coincidence(problem.first(), problem.second(), problem.first().box(), tolerance, grid);
+}
+
+std::optional<Coincidence> probe_coincidence(const Problem& problem, double tolerance) {
+  const Surface* order[2][2] = {{&problem.first(), &problem.second()}, {&problem.second(), &problem.first()}};
+  for (const auto& [sampled, other] : order)
+    if (find_coincidence(*sampled, *other, sampled->box(), tolerance, kCoincidenceProbeGrid))
+      if (auto c = find_coincidence(*sampled, *other, sampled->box(), tolerance)) return c;
+  return std::nullopt;
 }
 
 }  // namespace ssimarch

@@ -278,7 +278,7 @@ Conic conic_piece(const Conic& k, const TracedCurve& piece) {
 void clip_to_regions(const std::array<const FaceRegion*, 2>& regions, IntersectionRun* run) {
   if (!regions[0] && !regions[1]) return;
   const Problem& P = run->problem;
-  const Clipper c{P, regions, CorrectorOptions{resolved_tolerance(run->spec.options.trace, P.scale()), 20}, P.scale()};
+  const Clipper c{P, regions, CorrectorOptions{run->used.options.tolerance, 20}, P.scale()};
   std::vector<TracedCurve> kept;
   std::vector<Conic> conics;
   std::vector<std::vector<int>> new_index(run->result.curves.size());

@@ -51,19 +51,51 @@ std::vector<IntersectionSpec> select_intersections(const Scene& scene, const Tra
 namespace {
 
 // The curves of the run: the closed form when the pair has one, else traced.
+// The options checked and resolved against the model once, before any work (march/
+// resolved_options.hpp): an error names the scene key at fault and the usable range.
+ResolvedTraceOptions resolved_options(const Scene& scene, const IntersectionSpec& spec, const Problem& problem) {
+  if (problem.disjoint()) {
+    ResolvedTraceOptions r{spec.options.trace, 0, 0};
+    r.options.tolerance = resolved_tolerance(spec.options.trace, problem.scale());
+    return r;
+  }
+  try {
+    return resolve_trace_options(spec.options.trace, problem.scale());
+  } catch (const InputError& e) {
+    const std::string key = e.where() == "model size" ? "" : ".options." + e.where();
+    throw InputError(scene.source + ": " + spec.name + key, e.message());
+  }
+}
+
+// The distance within which a sample of one surface lies on the other: the corrector's
+// tolerance with room for the rounding of the model's size.
+double coincidence_tolerance(const IntersectionRun& run) {
+  return std::max(1e3 * run.used.options.tolerance, 1e-12 * run.problem.scale());
+}
+
 void find_curves(const IntersectionSpec& spec, IntersectionRun* run_ptr) {
   IntersectionRun& run = *run_ptr;
   // Pairs with a closed form are answered exactly (docs/math/closed_form_quadrics.md); given start
   // points ask for the curves through them, which the tracer answers.
   std::optional<ClosedFormResult> exact;
-  if (spec.options.closed_form && spec.starts.empty()) exact = closed_form_intersection(run.problem, spec.options.trace);
+  if (spec.options.closed_form && spec.starts.empty()) exact = closed_form_intersection(run.problem, run.used);
   if (exact) {
     run.result = std::move(exact->result);
     run.conics = std::move(exact->conics);
+    return;
+  }
+  // Surfaces that share a region are tangent all over it: no search can decide it, and a
+  // coincident B-spline pair (a rod against its hole) ran for minutes. Probed before tracing
+  // (closed forms decline coincident pairs themselves, so a pair they answer costs nothing more).
+  if (spec.starts.empty() && !run.problem.disjoint())
+    run.coincidence = probe_coincidence(run.problem, coincidence_tolerance(run));
+  if (run.coincidence) {
+    run.result.start_search.method = StartSearchMethod::kCoincident;
+    run.result.start_search.note = "the surfaces share a region: nothing was traced";
   } else {
     TraceAllOptions all;
     all.hunt_isolated_points = spec.options.hunt_isolated_points;
-    run.result = trace_all(run.problem, spec.options.trace, spec.starts, all);
+    run.result = trace_all(Tracer(run.problem, run.used), spec.starts, all);
   }
 }
 
@@ -74,6 +106,7 @@ void find_curves(const IntersectionSpec& spec, IntersectionRun* run_ptr) {
 // radius gave one "tangential contact" line). A shared region found beside curves withdraws the
 // certificate: those curves lie in or along the region, and its boundary is not traced.
 bool may_coincide(const IntersectionRun& run) {
+  if (run.coincidence) return false;  // found before tracing (find_curves)
   // A closed form answers only distinct surfaces (closed_form.hpp: coincident ones are traced).
   // Surfaces in disjoint boxes share no region (and the tracer said so without work): skipping the
   // sampling here makes the empty pairs of a model's all-pairs batch cheap (issue 17).
@@ -85,11 +118,7 @@ bool may_coincide(const IntersectionRun& run) {
 
 void report_coincidence(const IntersectionSpec& spec, IntersectionRun* run_ptr) {
   IntersectionRun& run = *run_ptr;
-  if (!may_coincide(run)) return;
-  // The distance test allows for the corrector's tolerance and the rounding of the model's size.
-  const double tolerance =
-      std::max(1e3 * resolved_tolerance(spec.options.trace, run.problem.scale()), 1e-12 * run.problem.scale());
-  run.coincidence = find_coincidence(run.problem, tolerance);
+  if (may_coincide(run)) run.coincidence = find_coincidence(run.problem, coincidence_tolerance(run));
   if (!run.coincidence) return;
   const std::string& first = spec.surfaces[spec.swapped ? 1 : 0];
   const std::string& second = spec.surfaces[spec.swapped ? 0 : 1];
@@ -134,12 +163,8 @@ void check_spline_tolerance(const Scene& scene, const IntersectionSpec& spec, co
 }  // namespace
 
 IntersectionRun run_intersection(const Scene& scene, const IntersectionSpec& spec) {
-  IntersectionRun run{spec, scene.problem(spec), {}, {}, {}, {}, {}, {}};
-  // The options against the model before any work (march/model_size.hpp): the key at fault
-  // and the usable range.
-  std::string key, error;
-  if (!run.problem.disjoint() && !fits_model(spec.options.trace, run.problem.scale(), &key, &error))
-    throw InputError(scene.source + ": " + spec.name + (key == "model size" ? "" : ".options." + key), error);
+  IntersectionRun run{spec, scene.problem(spec), {}, {}, {}, {}, {}, {}, {}};
+  run.used = resolved_options(scene, spec, run.problem);
   check_spline_tolerance(scene, spec, run.problem);
   find_curves(spec, &run);
   // CAD faces: the curves cut to their trimming loops (docs/cad.md).

@@ -9,6 +9,7 @@ std::string_view to_string(StartSearchMethod m) {
     case StartSearchMethod::kGiven: return "given";
     case StartSearchMethod::kClosedForm: return "closed-form";
     case StartSearchMethod::kDisjointBoxes: return "box";
+    case StartSearchMethod::kCoincident: return "coincident";
   }
   return "sampling";
 }

@@ -10,6 +10,7 @@
 #include "testing/matchers.hpp"
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/io/scene.hpp"
+#include "ssimarch/march/model_size.hpp"
 
 namespace ssimarch {
 namespace {
@@ -150,29 +151,40 @@ TEST(TraceJob, CoincidentSurfacesAreReportedWithTheSharedRegion) {
 namespace ssimarch {
 namespace {
 
-// Coincident surfaces beside curves (issue 28: a rod in a hole of its own radius): two equal
-// coaxial cylinders whose ranges overlap on z in [0, 2] are tangent all over the shared band, so
-// the tracer finds contact lines there. The run reports the shared region and withdraws the
-// certificate instead of presenting those lines as the intersection.
-TEST(TraceJob, ASharedRegionBesideCurvesIsReportedAndNotCertified) {
+// Coincident surfaces (issue 28: a rod in a hole of its own radius): two equal coaxial cylinders
+// whose ranges overlap. Over half of either, the probe before tracing finds the shared region and
+// nothing is traced; over less than a quarter of both (z in [1.2, 2]: one row of each probe grid),
+// the trace runs, finds contact lines or undecided boxes there, and the full test after it reports
+// the region and withdraws the certificate instead of presenting those lines as the intersection.
+TEST(TraceJob, ASharedRegionIsReportedAndNotCertified) {
   const Scene scene = parse_scene(R"json({
     "surfaces": {"a": {"cylinder": {"point": [0,0,0], "axis": [0,0,1], "radius": 1, "range": [-2, 2]}},
-                 "b": {"cylinder": {"point": [0,0,0], "axis": [0,0,1], "radius": 1, "range": [0, 3]}}},
+                 "b": {"cylinder": {"point": [0,0,0], "axis": [0,0,1], "radius": 1, "range": [0, 3]}},
+                 "c": {"cylinder": {"point": [0,0,0], "axis": [0,0,1], "radius": 1, "range": [1.2, 6]}}},
     "intersections": [{"name": "traced", "surfaces": ["a", "b"], "options": {"closed_form": false}},
-                      {"name": "default", "surfaces": ["a", "b"]}]})json",
+                      {"name": "default", "surfaces": ["a", "b"]},
+                      {"name": "small_overlap", "surfaces": ["a", "c"]}]})json",
                                   "s.json");
   const TraceJobResult job = trace_scene(scene);
-  ASSERT_EQ(job.runs.size(), 2u);
+  ASSERT_EQ(job.runs.size(), 3u);
   for (const IntersectionRun& r : job.runs) {
     SCOPED_TRACE(r.spec.name);
     ASSERT_TRUE(r.coincidence.has_value());
     EXPECT_FALSE(r.result.start_search.certified);
     EXPECT_THAT(::testing::PrintToString(r.result.warnings), HasSubstr("the surfaces coincide"));
-    // The samples of a's grid in the shared band: z from the first row above 0 to the last below 2.
+  }
+  for (int k = 0; k < 2; ++k) {  // found by the probe: nothing traced; a's samples in z in [0, 2]
+    const IntersectionRun& r = job.runs[static_cast<std::size_t>(k)];
+    EXPECT_EQ(r.result.start_search.method, StartSearchMethod::kCoincident);
+    EXPECT_TRUE(r.result.curves.empty());
     EXPECT_GT(r.coincidence->region.z.lo, 0.0);
     EXPECT_LT(r.coincidence->region.z.hi, 2.0);
     EXPECT_NEAR(r.coincidence->region.z.hi - r.coincidence->region.z.lo, 2.0, 0.5);
   }
+  const IntersectionRun& small = job.runs[2];  // found after the trace: a's rows in z in [1.2, 2]
+  EXPECT_NE(small.result.start_search.method, StartSearchMethod::kCoincident);
+  EXPECT_GT(small.coincidence->region.z.lo, 1.2);
+  EXPECT_LT(small.coincidence->region.z.hi, 2.0);
 }
 
 // A plane patch paired in implicit form is trimmed to its rectangle (surface/trims.hpp): the
@@ -220,6 +232,39 @@ TEST(TraceJob, AConstantRankRatioAlongACircleIsNoSingularPoint) {
   EXPECT_NEAR(std::max(lengths[0], lengths[1]), 2 * std::numbers::pi * (2 + d), 1e-8);
   EXPECT_NEAR(std::min(lengths[0], lengths[1]), 2 * std::numbers::pi * (2 - d), 1e-8);
   EXPECT_LT(r.stats.points, 600);  // 230 now; 1,508 with the retakes
+}
+
+}  // namespace
+}  // namespace ssimarch
+
+namespace ssimarch {
+namespace {
+
+// Options are checked and resolved once per intersection (issue 25 item 3): run_intersection
+// keeps them as IntersectionRun::used, the closed form samples with the resolved chord and
+// deviation, and a tolerance the model cannot hold is refused naming the scene key.
+TEST(TraceJob, OptionsAreResolvedOnceAgainstTheModel) {
+  Scene scene = parse_scene(R"json({
+    "surfaces": {"ball": {"sphere": {"center": [0,0,0], "radius": 1}},
+                 "cut": {"plane": {"point": [0,0,0], "normal": [0,0,1], "u": [-2, 2], "v": [-2, 2]}}},
+    "intersections": [{"name": "equator", "surfaces": ["ball", "cut"], "options": {"step": "constant"}}]})json",
+                            "s.json");
+  const IntersectionRun r = run_intersection(scene, scene.intersections[0]);
+  const double size = r.problem.scale();
+  EXPECT_EQ(r.used.options.step_length, size / 100);  // the constant rule's automatic step
+  EXPECT_EQ(r.used.chord, size / 10);                 // a closed form samples by the adaptive one
+  EXPECT_EQ(r.used.options.deviation, 1e-4 * size);
+  EXPECT_EQ(r.used.options.tolerance, kAutomaticToleranceRatio * size);
+  ASSERT_EQ(r.result.curves.size(), 1u);
+  const std::vector<CurvePoint>& p = r.result.curves[0].points;
+  for (std::size_t i = 0; i + 1 < p.size(); ++i) EXPECT_LE((p[i + 1].p - p[i].p).norm(), r.used.chord * (1 + 1e-12));
+  scene.intersections[0].options.trace.tolerance = 1e-20;
+  try {
+    run_intersection(scene, scene.intersections[0]);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("s.json: equator.options.tolerance: "));
+  }
 }
 
 }  // namespace

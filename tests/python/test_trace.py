@@ -118,6 +118,15 @@ NON_DEFAULT_OPTION_VALUES = {
 }
 
 
+def test_every_option_is_documented_in_trace_from_the_table():
+    # The keywords' help is the option table's: each key with its rule and default.
+    doc = ssimarch.trace.__doc__
+    for key in ssimarch.trace_options():
+        assert f"  {key}: " in doc
+    assert "step_length: the constant rule's step L" in doc
+    assert "default 0 = automatic" in doc
+
+
 def test_every_option_list_is_the_table():
     assert set(ssimarch.trace_options()) == set(NON_DEFAULT_OPTION_VALUES)
 

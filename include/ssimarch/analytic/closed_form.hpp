@@ -12,6 +12,7 @@
 
 #include "ssimarch/analytic/conic.hpp"
 #include "ssimarch/march/options.hpp"
+#include "ssimarch/march/resolved_options.hpp"
 #include "ssimarch/trace/result.hpp"
 #include "ssimarch/problem/problem.hpp"
 
@@ -25,9 +26,12 @@ struct ClosedFormResult {
 
 /// The exact intersection of an implicit-implicit problem whose surfaces are both recognised
 /// primitives of a pair with a closed form; nullopt otherwise (another pair kind, another pair,
-/// coincident surfaces), when the caller traces instead. Points: chords within options.deviation
-/// (0: 1e-4 of the problem's extent) and at most options.step_length long (0: extent / 10), the
-/// same rule as the `chordal` step.
+/// coincident surfaces), when the caller traces instead. Points: chords within the resolved
+/// deviation and at most ResolvedTraceOptions::chord long, the same rule as the `chordal` step;
+/// contact decided at the resolved tolerance (contact_gap_tolerance).
+std::optional<ClosedFormResult> closed_form_intersection(const Problem& problem, const ResolvedTraceOptions& options);
+
+/// The same with options not yet resolved (checked and resolved here, resolve_trace_options).
 std::optional<ClosedFormResult> closed_form_intersection(const Problem& problem, const TraceOptions& options);
 
 }  // namespace ssimarch

@@ -17,6 +17,10 @@ struct ResolvedTraceOptions {
   /// The spacing of the sampled start points: the step length asked for, else size/100 (model
   /// units), whatever the step rule.
   double spacing = 0;
+  /// The largest chord of a curve sampled without marching (a closed form's conics): the step
+  /// length asked for, else size/10 whatever the step rule (the constant rule's automatic step,
+  /// size/100, is a march's, not a sample's), never below step_floor. Model units.
+  double chord = 0;
 };
 
 /// Checks `asked` and resolves it for a model of size `scale` (Problem::scale()). Throws

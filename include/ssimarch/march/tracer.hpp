@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "ssimarch/march/options.hpp"
+#include "ssimarch/march/resolved_options.hpp"
 #include "ssimarch/march/result.hpp"
 #include "ssimarch/problem/problem.hpp"
 
@@ -90,6 +91,9 @@ class Tracer {
   /// Throws InputError when the options are invalid (TraceOptions::is_valid). Resolves the
   /// automatic (zero) step_length, min_step_length, min_step and deviation (options.hpp).
   Tracer(const Problem& problem, TraceOptions options);
+  /// With options checked and resolved for this problem once (resolve_trace_options, as the
+  /// pipeline does): used as they are, not checked again.
+  Tracer(const Problem& problem, const ResolvedTraceOptions& resolved);
 
   /// Marches from `start` (a regular point of the curve with its unit tangent) in `direction`
   /// until an event; adds the work to *stats (the start itself is not counted as a point).

@@ -25,4 +25,18 @@ struct Coincidence {
 /// length) of the second surface, else nothing.
 std::optional<Coincidence> find_coincidence(const Problem& problem, double tolerance, int grid = 16);
 
+/// The same test with the roles given: `sampled` is sampled (an implicit one in `box`) and the
+/// distances are measured from `other`.
+std::optional<Coincidence> find_coincidence(const Surface& sampled, const Surface& other, const Box& box,
+                                            double tolerance, int grid = 16);
+
+/// Whether the surfaces share a region, tested before any tracing (issue 28: a rod's B-spline
+/// against its hole's, the same cylinder, ran for minutes): a coarse grid of each surface in turn
+/// (kCoincidenceProbeGrid^2 samples, so that the smaller one is covered too), and where one finds
+/// a shared region, the full test in that order. The region found, or nothing.
+std::optional<Coincidence> probe_coincidence(const Problem& problem, double tolerance);
+
+/// Samples per parameter direction of probe_coincidence's coarse grid.
+inline constexpr int kCoincidenceProbeGrid = 4;
+
 }  // namespace ssimarch

@@ -12,6 +12,7 @@
 #include "ssimarch/analytic/conic.hpp"
 #include "ssimarch/geometry/curve_geometry.hpp"
 #include "ssimarch/trace/result.hpp"
+#include "ssimarch/march/resolved_options.hpp"
 #include "ssimarch/pipeline/coincidence.hpp"
 #include "ssimarch/pipeline/scene.hpp"
 #include "ssimarch/network/curve_network.hpp"
@@ -36,6 +37,10 @@ struct IntersectionRun {
   /// When no curve was found: the region the two surfaces share, if they share one (a warning in
   /// result.warnings says so; docs/output-format.md "coincident").
   std::optional<Coincidence> coincidence;
+  /// spec.options.trace checked and resolved against the problem once (resolve_trace_options):
+  /// what the closed form, the tracer and the face clip use and the output reports. For
+  /// surfaces in disjoint boxes (nothing traced) only the tolerance is resolved.
+  ResolvedTraceOptions used;
 };
 
 /// The scene names of the problem's first and second surface (the parametric one first: a mixed

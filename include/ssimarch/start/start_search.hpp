@@ -17,6 +17,7 @@ enum class StartSearchMethod {
   kGiven,          // "given": the scene's or the caller's start points
   kClosedForm,     // "closed-form": no search; the curves are exact (analytic/closed_form.hpp)
   kDisjointBoxes,  // "box": no search; the boxes of two implicit surfaces do not overlap
+  kCoincident,     // "coincident": no search; the surfaces share a region (pipeline/coincidence.hpp)
 };
 std::string_view to_string(StartSearchMethod m);
 
