@@ -1,6 +1,7 @@
 // ssimarch faces MODEL.step: the faces of a STEP file, numbered as a scene names them
 // ({"step": "MODEL.step", "face": N}, docs/scene-format.md), with their surface type and the
-// parameter domain ssimarch gives them (io/step_reader.hpp), as a table or JSON.
+// parameter domain ssimarch gives them (io/step_reader.hpp), the box the placed surface lies in,
+// as a table or JSON.
 #include <algorithm>
 #include <iostream>
 #include <memory>
@@ -41,6 +42,10 @@ nlohmann::json face_json(const StepModel& model, const StepFace& f) {
     j["u"] = {d.u.lo, d.u.hi};
     j["v"] = {d.v.lo, d.v.hi};
     j["periodic"] = {d.periodic_u, d.periodic_v};
+    // Where the (placed) surface lies: a primitive's trimmed part, a patch's control points
+    // (issue 28: which faces can meet is the first thing a user of a model asks).
+    const Box& b = s.box();
+    j["box"] = {{b.x.lo, b.y.lo, b.z.lo}, {b.x.hi, b.y.hi, b.z.hi}};
   } catch (const InputError& e) {
     j["error"] = e.what();
   }
@@ -82,6 +87,10 @@ int run_faces(const FacesArgs& a) {
       what = fmt::format("{} u [{:.6g}, {:.6g}]{} v [{:.6g}, {:.6g}]{}", j["surface"].get<std::string>(), j["u"][0].get<double>(),
                          j["u"][1].get<double>(), j["periodic"][0].get<bool>() ? " periodic" : "", j["v"][0].get<double>(),
                          j["v"][1].get<double>(), j["periodic"][1].get<bool>() ? " periodic" : "");
+    if (j.contains("box"))
+      what += fmt::format(", box ({:.6g}, {:.6g}, {:.6g})-({:.6g}, {:.6g}, {:.6g})", j["box"][0][0].get<double>(),
+                          j["box"][0][1].get<double>(), j["box"][0][2].get<double>(), j["box"][1][0].get<double>(),
+                          j["box"][1][1].get<double>(), j["box"][1][2].get<double>());
     if (j.contains("instance")) what += ", placed as " + j["instance"].get<std::string>();
     std::cout << fmt::format("{:>5} {:>9} {:>7}  {:<28} {}\n", j["face"].get<int>(), "#" + std::to_string(j["entity"].get<std::int64_t>()),
                              j["line"].get<int>(), j["step_type"].get<std::string>(), what);

@@ -88,6 +88,17 @@ void bound_unbounded(Surface* a, Surface* b) {
   }
 }
 
+// Whether the surface lies inside its box() for certain: a primitive's box holds its (trimmed)
+// shape, a patch's is the box of its control points (a B-spline or Bezier patch with positive
+// weights lies in their convex hull). A parametric expression's box is sampled, and an implicit
+// expression's is where its zero set is looked for, not a bound the pair's curves keep to.
+bool box_holds_surface(const Surface& s) { return !s.get_if<ExprParametric>() && !s.get_if<ExprImplicit>(); }
+
+bool boxes_overlap(const Box& a, const Box& b) {
+  return a.x.lo <= b.x.hi && b.x.lo <= a.x.hi && a.y.lo <= b.y.hi && b.y.lo <= a.y.hi && a.z.lo <= b.z.hi &&
+         b.z.lo <= a.z.hi;
+}
+
 }  // namespace
 
 Problem::Problem(Surface first, Surface second, PairKind kind)
@@ -134,6 +145,10 @@ Problem::Problem(Surface first, Surface second, PairKind kind)
       break;
     }
   }
+  // Surfaces whose boxes bound them and do not overlap cannot meet, whatever their unknowns
+  // (issue 28: a B-spline face of a model against a far one searched 26,424 boxes in 46 s).
+  if (box_holds_surface(first_) && box_holds_surface(second_) && !boxes_overlap(first_.box(), second_.box()))
+    disjoint_ = true;
   trims_ = problem_trims(*this);
 }
 

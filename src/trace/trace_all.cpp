@@ -557,7 +557,7 @@ TraceResult trace_all(const Tracer& unbounded, const std::vector<Vec3>& starts, 
   if (P.disjoint()) {  // no intersection is a result (issue 11 item 6)
     result.start_search.method = StartSearchMethod::kDisjointBoxes;
     result.start_search.certified = true;
-    result.start_search.note = "no intersection: the boxes of the two implicit surfaces do not overlap";
+    result.start_search.note = "no intersection: the boxes of the two surfaces do not overlap";
     result.warnings.push_back(result.start_search.note);
     return result;
   }

@@ -195,6 +195,16 @@ TEST(Cli, FacesListsAStepFilesFaces) {
   ASSERT_EQ(parsed["faces"].size(), 2u);
   EXPECT_EQ(parsed["faces"][0]["entity"], 20);
   EXPECT_EQ(parsed["faces"][1]["surface"], "plane");
+  // The box the side lies in (its control points): it holds the half cylinder x^2 + y^2 = 4,
+  // y >= 0, 0 <= z <= 3, and not much more.
+  const auto& box = parsed["faces"][0]["box"];
+  const double hold[2][3] = {{-2, 0, 0}, {2, 2, 3}};
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_LE(box[0][k].get<double>(), hold[0][k] + 1e-12) << k;
+    EXPECT_GE(box[1][k].get<double>(), hold[1][k] - 1e-12) << k;
+    EXPECT_LE(box[1][k].get<double>() - box[0][k].get<double>(), hold[1][k] - hold[0][k] + 0.1) << k;
+  }
+  EXPECT_THAT(r.out, HasSubstr(", box (-2, 0, 0)-(2, 2, 3)"));
   CliRun bad = run("faces " + write_file("bad.step", "ISO-10303-21;\nHEADER;\nENDSEC;\nDATA;\n#1=A(1,;\nENDSEC;\n"));
   EXPECT_EQ(bad.status, 2);
   EXPECT_THAT(bad.err, HasSubstr("bad.step:5: expected a parameter, found ';'"));

@@ -142,8 +142,9 @@ class Problem {
   /// Bounds of each unknown: parameter domains (u,v[,p,q]) or the intersection of the implicit
   /// surfaces' boxes (x,y,z).
   const std::vector<Interval>& bounds() const { return bounds_; }
-  /// True when the domain is empty (implicit surfaces whose boxes do not overlap): the
-  /// intersection is empty, and bounds() must not be searched.
+  /// True when the surfaces cannot meet: implicit surfaces whose boxes do not overlap (the
+  /// domain is empty), or surfaces of any form whose boxes bound them (primitives, patches: not
+  /// expressions) and do not overlap. The intersection is empty; bounds() must not be searched.
   bool disjoint() const { return disjoint_; }
   /// Period of each unknown, 0 where not periodic.
   const std::vector<double>& periods() const { return periods_; }

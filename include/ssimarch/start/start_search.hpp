@@ -16,7 +16,7 @@ enum class StartSearchMethod {
   kCertified,      // "certified": the interval search (start/certified_start_points.hpp)
   kGiven,          // "given": the scene's or the caller's start points
   kClosedForm,     // "closed-form": no search; the curves are exact (analytic/closed_form.hpp)
-  kDisjointBoxes,  // "box": no search; the boxes of two implicit surfaces do not overlap
+  kDisjointBoxes,  // "box": no search; the surfaces' boxes do not overlap (Problem::disjoint)
   kCoincident,     // "coincident": no search; the surfaces share a region (pipeline/coincidence.hpp)
 };
 std::string_view to_string(StartSearchMethod m);
