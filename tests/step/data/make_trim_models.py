@@ -42,14 +42,18 @@ def cyl_full(w, o, axis, ref, r, length):
     surf=w.add(f"CYLINDRICAL_SURFACE('',#{w.place(o,axis,ref)},{float(r)!r})")
     return w.face('cylinder',[b],surf)
 
+def plate_with_a_hole(w):
+    # the square z = 0, |x|, |y| <= 3, with a hole of radius 1 at the origin
+    sq=square(w,[0,0,0],[1,0,0],[0,1,0],3.0)
+    outer=w.loop(sq)
+    v5=w.vertex([1,0,0]); hole=w.circle_edge(v5,v5,[0,0,0],[0,0,1],[1,0,0],1.0)
+    inner=w.loop([(hole,False)],outer=False)
+    plane=w.add(f"PLANE('',#{w.place([0,0,0],[0,0,1],[1,0,0])})")
+    return w.face('plate',[outer,inner],plane)
+
 # 1. plate with a hole, and a cylinder across it
 w=W()
-sq=square(w,[0,0,0],[1,0,0],[0,1,0],3.0)
-outer=w.loop(sq)
-v5=w.vertex([1,0,0]); hole=w.circle_edge(v5,v5,[0,0,0],[0,0,1],[1,0,0],1.0)
-inner=w.loop([(hole,False)],outer=False)
-plane=w.add(f"PLANE('',#{w.place([0,0,0],[0,0,1],[1,0,0])})")
-w.face('plate',[outer,inner],plane)
+plate_with_a_hole(w)
 cyl_full(w,[-2.5,0,0.3],[1,0,0],[0,0,-1],0.5,5.0)
 open('plate_with_hole.step','w').write(w.text("A square plate z = 0, |x|, |y| <= 3, with a hole of radius 1 at the origin (face 1), and a whole cylinder face y^2 + (z - 0.3)^2 = 0.25, -2.5 <= x <= 2.5 (face 2)."))
 
@@ -58,12 +62,7 @@ open('plate_with_hole.step','w').write(w.text("A square plate z = 0, |x|, |y| <=
 # along an edge to the model's accuracy, not exactly)
 for name, r in (("rod_in_hole.step", 1.0), ("rod_in_hole_tight.step", 1.0 - 1e-9)):
     w=W()
-    sq=square(w,[0,0,0],[1,0,0],[0,1,0],3.0)
-    outer=w.loop(sq)
-    v5=w.vertex([1,0,0]); hole=w.circle_edge(v5,v5,[0,0,0],[0,0,1],[1,0,0],1.0)
-    inner=w.loop([(hole,False)],outer=False)
-    plane=w.add(f"PLANE('',#{w.place([0,0,0],[0,0,1],[1,0,0])})")
-    w.face('plate',[outer,inner],plane)
+    plate_with_a_hole(w)
     cyl_full(w,[0,0,-1],[0,0,1],[1,0,0],r,2.0)
     open(name,'w').write(w.text("The plate z = 0, |x|, |y| <= 3, with a hole of radius 1 at the origin (face 1), and a whole cylinder face x^2 + y^2 = %r^2, -1 <= z <= 1 (face 2): the rod meets the plate along the hole's edge." % r))
 
