@@ -341,19 +341,59 @@ void erase_curve(std::size_t i, std::vector<TracedCurve>* curves, SingularRegist
   }
 }
 
+// A march from a regular start that took no step away from it: the branch is shorter than the
+// step between two domain edges (a curve cutting a corner of the domain: stress seed 31 pair 75,
+// an arc of 0.036 at a step of 0.29, came back as two "isolated" regular points, certified).
+// Retaken with steps 16 times shorter until it leaves its start, down to 16 times the options'
+// smallest step; a start whose jet fails (a singular point, an apex: no domain end) is left to the
+// analysis.
+bool on_a_traced_curve(const Tracer& tracer, const VecX& x, const std::vector<TracedCurve>& curves, double radius);
+
+TracedCurve retrace_short_branch(const Tracer& tracer, const VecX& x, double merge, TraceStats* stats, TracedCurve c) {
+  const auto a_point = [merge](const TracedCurve& t) {
+    return !t.points.empty() && std::none_of(t.points.begin(), t.points.end(),
+                                             [&](const CurvePoint& q) { return (q.p - t.points[0].p).norm() > merge; });
+  };
+  // Only a march that left the domain at once: one that stopped at a singular point nearby is
+  // the registry's to pass (the node's half-branches are traced from it).
+  const auto left_at_once = [&](const TracedCurve& t) {
+    return a_point(t) && (t.start_end == Termination::kLeftDomain || t.end_end == Termination::kLeftDomain);
+  };
+  TraceOptions o = tracer.options();
+  while (left_at_once(c)) {
+    o.step_length /= 16;
+    if (!(o.step_length > 16 * o.min_step)) break;
+    o.min_step_length = std::min(o.min_step_length, 0.5 * o.step_length);
+    std::string error;
+    if (!o.is_valid(&error)) break;
+    c = trace_curve_through(Tracer(tracer.problem(), o), x, stats, nullptr, 0, nullptr, 0.0);
+  }
+  return c;
+}
+
 // A "curve" whose points are all one point (a march that could take no step from its start: a
 // cone's apex on a sphere's pole, OpenCASCADE bug21494_1) is a point where the surfaces meet and no
 // branch leaves: an isolated point, reported once among the isolated points and not as a curve
 // (issue 29: one representation of an isolated point). Its class is the analysis's where the local
 // curve can be built, else `isolated` with no local data (a degenerate chart, an apex).
-void points_are_not_curves(const Problem& P, double merge, std::vector<TracedCurve>* curves, SingularRegistry* registry,
+void points_are_not_curves(const Tracer& tracer, double merge, double radius, TraceStats* stats,
+                           std::vector<TracedCurve>* curves, SingularRegistry* registry,
                            std::vector<SingularPointReport>* isolated) {
+  const Problem& P = tracer.problem();
   for (std::size_t i = curves->size(); i-- > 0;) {
     const TracedCurve& c = (*curves)[i];
     const auto away = [&](const CurvePoint& q) { return (q.p - c.points[0].p).norm() > merge; };
     if (c.points.empty() || c.tangential_contact || std::any_of(c.points.begin(), c.points.end(), away)) continue;
     const CurvePoint at = c.points[0];
+    TracedCurve short_branch = retrace_short_branch(tracer, VecX(at.x), merge, stats, c);
     erase_curve(i, curves, registry);
+    if (on_a_traced_curve(tracer, VecX(at.x), *curves, radius)) continue;  // its branch was retraced already
+    if (std::any_of(short_branch.points.begin(), short_branch.points.end(),
+                    [&](const CurvePoint& q) { return (q.p - at.p).norm() > merge; })) {
+      for (auto& p : short_branch.points) p.x = P.wrap(p.x);
+      curves->push_back(std::move(short_branch));
+      continue;
+    }
     const auto known = [&](const SingularPointReport& r) { return (r.p - at.p).norm() <= merge; };
     if (std::any_of(isolated->begin(), isolated->end(), known)) continue;
     SingularAnalysisOptions here;
@@ -598,7 +638,7 @@ TraceResult trace_all(const Tracer& unbounded, const std::vector<Vec3>& starts, 
   const std::vector<Vec3> contacts =
       reg ? absorb_contact_loops(&result.curves, reg, radius, registry_tol, &result.isolated_points)
           : std::vector<Vec3>{};
-  points_are_not_curves(P, registry_merge, &result.curves, reg, &result.isolated_points);
+  points_are_not_curves(tracer, registry_merge, radius, &result.stats, &result.curves, reg, &result.isolated_points);
   for (TracedCurve& c : result.curves) explain_bound(bound, &c);
   // The circular-arc estimates summed while marching fall short where the curvature varies
   // (docs/marching.md, "Length."): one pass over each finished curve's points adds that.

@@ -269,3 +269,39 @@ TEST(TraceJob, OptionsAreResolvedOnceAgainstTheModel) {
 
 }  // namespace
 }  // namespace ssimarch
+
+namespace ssimarch {
+namespace {
+
+// A branch shorter than the step between two domain edges (scripts/stress --seed 31 --only 75):
+// the paraboloid patch's corner u, v = 1.0113 is cut by an arc of 0.036 where the automatic step
+// is 0.29, so the march from either end left the domain at once and the arc came back as two
+// "isolated" regular points, certified. The march is retaken with shorter steps until it leaves
+// its start: the arc, ends on both edges, no isolated point. Reference: the same trace at
+// step_length 0.005 (0.0362330564881, 10 points).
+TEST(TraceJob, ABranchShorterThanTheStepIsTracedNotAPoint) {
+  const Scene scene = parse_scene(R"json({
+    "surfaces": {"A": {"paraboloid": {"vertex": [0.0653657825615, -0.576628450323, -0.0650934758077],
+                                      "axis": [0.6523221206217366, -0.7139041172158126, -0.2545913635021264],
+                                      "reference": [-0.055235994781973545, -0.1061308166408926, -0.9928168182699079],
+                                      "focal_length": [0.770873042916, 0.401641532469],
+                                      "u": [-1.01129758106, 1.01129758106], "v": [-1.01129758106, 1.01129758106]}},
+                 "B": {"torus": {"center": [0.373489721814, -0.439563256796, -0.507896028991],
+                                 "axis": [0.12481322411813753, -0.9600838367387127, -0.2503211647430327],
+                                 "reference": [0.30123336905492537, -0.7995338598071048, 0.5196191532168267],
+                                 "major_radius": 0.949534512304, "minor_radius": 0.364607800623}}},
+    "intersections": [{"name": "corner", "surfaces": ["A", "B"], "as": ["parametric", "implicit"]}]})json",
+                                  "s.json");
+  const TraceJobResult job = trace_scene(scene);
+  ASSERT_EQ(job.runs.size(), 1u);
+  const TraceResult& r = job.runs[0].result;
+  EXPECT_TRUE(r.isolated_points.empty());
+  ASSERT_EQ(r.curves.size(), 2u);
+  const TracedCurve& arc = r.curves[0].length < r.curves[1].length ? r.curves[0] : r.curves[1];
+  EXPECT_NEAR(arc.length, 0.0362330564881, 1e-9);
+  EXPECT_EQ(arc.start_end, Termination::kLeftDomain);
+  EXPECT_EQ(arc.end_end, Termination::kLeftDomain);
+}
+
+}  // namespace
+}  // namespace ssimarch
