@@ -128,8 +128,6 @@ struct Marked {
   int region = -1;
 };
 
-// The points of curve `curve` with the crossings inserted (a closed curve rotated to start at
-// its first crossing, and then open). *crossings counts them.
 // Sets f to +|f| (inside) on every run of two or more points within the boundary band that has
 // a point outside (or on) the boundary.
 void keep_runs_along_boundary(const Clipper& c, const std::vector<Phi>& at, std::vector<double>* f,
@@ -155,6 +153,8 @@ void keep_runs_along_boundary(const Clipper& c, const std::vector<Phi>& at, std:
   }
 }
 
+// The points of curve `curve` with the crossings inserted (a closed curve rotated to start at
+// its first crossing, and then open). *crossings counts them; runs along a boundary go to *along.
 std::vector<Marked> mark(const Clipper& c, const TracedCurve& curve, int* crossings, AlongBoundary* along) {
   std::vector<Marked> out;
   std::vector<Phi> at;

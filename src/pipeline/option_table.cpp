@@ -149,19 +149,10 @@ std::vector<Row> make_rows() {
                                {C::kNewton, C::kProjection}, &TraceOptions::corrector));
   rows.push_back(choice_row<S>(describe("step", "", "`chordal`", "step rule", "step rule"),
                                {S::kConstant, S::kAngular, S::kDeviation, S::kOrder3, S::kChordal}, &TraceOptions::step));
-  rows.push_back(number_row("step_length"));
-  rows.push_back(number_row("min_step_length"));
-  rows.push_back(number_row("deviation"));
-  rows.push_back(number_row("turn_angle"));
-  rows.push_back(number_row("min_step"));
-  rows.push_back(number_row("taylor_order"));
-  rows.push_back(number_row("tolerance"));
-  rows.push_back(number_row("max_corrector_iterations"));
-  rows.push_back(number_row("max_turn_angle"));
-  rows.push_back(number_row("max_correction_ratio"));
-  rows.push_back(number_row("max_points"));
-  rows.push_back(number_row("max_length"));
-  rows.push_back(number_row("start_samples"));
+  for (const char* key : {"step_length", "min_step_length", "deviation", "turn_angle", "min_step", "taylor_order",
+                          "tolerance", "max_corrector_iterations", "max_turn_angle", "max_correction_ratio",
+                          "max_points", "max_length", "start_samples"})
+    rows.push_back(number_row(key));
   rows.push_back(flag_row(describe("certified_start_points", "", "true",
                                    "find start points by the certified interval search (docs/topology.md); false: by sampling",
                                    "yes/no"),

@@ -50,7 +50,6 @@ std::vector<IntersectionSpec> select_intersections(const Scene& scene, const Tra
 
 namespace {
 
-// The curves of the run: the closed form when the pair has one, else traced.
 // The options checked and resolved against the model once, before any work (march/
 // resolved_options.hpp): an error names the scene key at fault and the usable range.
 ResolvedTraceOptions resolved_options(const Scene& scene, const IntersectionSpec& spec, const Problem& problem) {
@@ -73,6 +72,8 @@ double coincidence_tolerance(const IntersectionRun& run) {
   return std::max(1e3 * run.used.options.tolerance, 1e-12 * run.problem.scale());
 }
 
+// The curves of the run: the closed form when the pair has one, nothing when the surfaces share a
+// region, else traced.
 void find_curves(const IntersectionSpec& spec, IntersectionRun* run_ptr) {
   IntersectionRun& run = *run_ptr;
   // Pairs with a closed form are answered exactly (docs/math/closed_form_quadrics.md); given start

@@ -341,23 +341,25 @@ void erase_curve(std::size_t i, std::vector<TracedCurve>* curves, SingularRegist
   }
 }
 
+bool on_a_traced_curve(const Tracer& tracer, const VecX& x, const std::vector<TracedCurve>& curves, double radius);
+
+// Whether every point of the curve lies within `merge` of its first: a march that took no step.
+bool one_point(const TracedCurve& t, double merge) {
+  return !t.points.empty() && std::none_of(t.points.begin(), t.points.end(),
+                                           [&](const CurvePoint& q) { return (q.p - t.points[0].p).norm() > merge; });
+}
+
 // A march from a regular start that took no step away from it: the branch is shorter than the
 // step between two domain edges (a curve cutting a corner of the domain: stress seed 31 pair 75,
 // an arc of 0.036 at a step of 0.29, came back as two "isolated" regular points, certified).
 // Retaken with steps 16 times shorter until it leaves its start, down to 16 times the options'
 // smallest step; a start whose jet fails (a singular point, an apex: no domain end) is left to the
 // analysis.
-bool on_a_traced_curve(const Tracer& tracer, const VecX& x, const std::vector<TracedCurve>& curves, double radius);
-
 TracedCurve retrace_short_branch(const Tracer& tracer, const VecX& x, double merge, TraceStats* stats, TracedCurve c) {
-  const auto a_point = [merge](const TracedCurve& t) {
-    return !t.points.empty() && std::none_of(t.points.begin(), t.points.end(),
-                                             [&](const CurvePoint& q) { return (q.p - t.points[0].p).norm() > merge; });
-  };
   // Only a march that left the domain at once: one that stopped at a singular point nearby is
   // the registry's to pass (the node's half-branches are traced from it).
   const auto left_at_once = [&](const TracedCurve& t) {
-    return a_point(t) && (t.start_end == Termination::kLeftDomain || t.end_end == Termination::kLeftDomain);
+    return one_point(t, merge) && (t.start_end == Termination::kLeftDomain || t.end_end == Termination::kLeftDomain);
   };
   TraceOptions o = tracer.options();
   while (left_at_once(c)) {
@@ -382,15 +384,12 @@ void points_are_not_curves(const Tracer& tracer, double merge, double radius, Tr
   const Problem& P = tracer.problem();
   for (std::size_t i = curves->size(); i-- > 0;) {
     const TracedCurve& c = (*curves)[i];
-    const auto away = [&](const CurvePoint& q) { return (q.p - c.points[0].p).norm() > merge; };
-    if (c.points.empty() || c.tangential_contact || std::any_of(c.points.begin(), c.points.end(), away)) continue;
+    if (c.tangential_contact || !one_point(c, merge)) continue;
     const CurvePoint at = c.points[0];
     TracedCurve short_branch = retrace_short_branch(tracer, VecX(at.x), merge, stats, c);
     erase_curve(i, curves, registry);
     if (on_a_traced_curve(tracer, VecX(at.x), *curves, radius)) continue;  // its branch was retraced already
-    if (std::any_of(short_branch.points.begin(), short_branch.points.end(),
-                    [&](const CurvePoint& q) { return (q.p - at.p).norm() > merge; })) {
-      for (auto& p : short_branch.points) p.x = P.wrap(p.x);
+    if (!one_point(short_branch, merge)) {                                 // trace_curve_through wrapped its unknowns
       curves->push_back(std::move(short_branch));
       continue;
     }
