@@ -1,5 +1,7 @@
 #include "ssimarch/singular/analysis.hpp"
 
+#include <cmath>
+
 namespace ssimarch {
 
 std::string_view to_string(SingularAnalysisStatus s) {
@@ -37,10 +39,18 @@ SingularAnalysis analyse_singular_point(const Problem& problem, const SingularLo
     a.status = SingularAnalysisStatus::kNoLocalCurve;
     return a;
   }
-  a.kind = classify(a.curve.h);
+  a.kind = classify(a.curve.h, {.length = a.curve.germ_length});
   a.status = SingularAnalysisStatus::kAnalysed;
   if (options.half_branches) a.branches = half_branches(problem, a.curve, a.kind, options.half_branch_options);
   return a;
+}
+
+double resolution_radius(const SingularAnalysis& a) {
+  if (!a.analysed() || a.kind.milnor < 1) return 0;
+  const double sine = kLocateSineTolerance;
+  const double fraction = a.kind.multiplicity >= 3 ? std::pow(sine, 1.0 / (a.kind.multiplicity - 1))
+                                                   : std::pow(0.5 * sine, 2.0 / (a.kind.milnor + 1));
+  return fraction * a.curve.germ_length;
 }
 
 void with_half_branches(const Problem& problem, SingularAnalysis* analysis, const HalfBranchOptions& options) {

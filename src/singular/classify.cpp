@@ -176,7 +176,7 @@ void classify_multiple_point(int distinct_roots, Classification* c) {
 
 Classification classify(const LocalJet& h_in, const ClassifyOptions& options) {
   Classification c;
-  LocalJet h = h_in;
+  LocalJet h = in_germ_units(h_in, options.length);
   h[0] = 0.0;
   h = clean(h, options.zero_tolerance);
   if (h[1] != 0.0 || h[2] != 0.0) {

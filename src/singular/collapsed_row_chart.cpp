@@ -370,6 +370,7 @@ LocalCurve collapsed_row_curve(const Problem& pr, const VecX& x, int slot) {
   } else {
     c.h = LocalJet(1.0);
     for (const BranchGerm& g : germs) c.h *= branch_equation(g);
+    c.gap_degree = static_cast<int>(germs.size());
   }
   c.point = {o.point.x, o.point.y, o.point.z};
   // The unknowns: the degenerate surface's lifted by nearest points (its parameters are not

@@ -4,10 +4,12 @@
 #include <Eigen/QR>
 #include <cmath>
 #include <optional>
+#include <utility>
 
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/problem/closest_point.hpp"
 #include "ssimarch/problem/poles_and_trims.hpp"
+#include "ssimarch/singular/analysis.hpp"
 
 namespace ssimarch {
 
@@ -103,6 +105,28 @@ bool near_any(const std::vector<Vec3>& points, const Vec3& p, double r) {
   return false;
 }
 
+// Whether s is a point found before: within the merge distance of one, or within the resolution
+// radius of the more degenerate of the two (resolution_radius: a location that stopped short of
+// it), which then stands for both.
+// `resolution` holds each found point's (resolution radius, Milnor number).
+bool known_or_replaced(const Problem& problem, const SingularLocation& s, double merge,
+                       std::vector<SingularLocation>* found, std::vector<std::pair<double, int>>* resolution) {
+  for (const SingularLocation& f : *found)
+    if (problem.difference(f.x, s.x).norm() <= merge) return true;
+  SingularAnalysisOptions without_branches;
+  without_branches.half_branches = false;
+  const SingularAnalysis a = analyse_singular_point(problem, s, without_branches);
+  const std::pair<double, int> mine{resolution_radius(a), a.kind.milnor};
+  for (std::size_t i = 0; i < found->size(); ++i) {
+    auto& [radius, milnor] = (*resolution)[i];
+    if (((*found)[i].point - s.point).norm() > std::max(radius, mine.first)) continue;
+    if (mine.second > milnor) (*found)[i] = s, radius = mine.first, milnor = mine.second;
+    return true;
+  }
+  resolution->push_back(mine);
+  return false;
+}
+
 }  // namespace
 
 std::vector<SingularLocation> hunt_singular_points(const Problem& problem, const HuntOptions& options) {
@@ -110,6 +134,7 @@ std::vector<SingularLocation> hunt_singular_points(const Problem& problem, const
   if (options.region_grid < 2) throw InputError("hunt_singular_points.region_grid", "needs at least 2 samples per direction");
   const std::vector<std::vector<Interval>> boxes = options.regions.empty() ? std::vector<std::vector<Interval>>{problem.bounds()} : options.regions;
   std::vector<SingularLocation> found;
+  std::vector<std::pair<double, int>> resolution;  // per found point (known_or_replaced)
   std::vector<Vec3> located;  // every point a location ended at, singular or not
   for (const auto& box : boxes) {
     double cell = 0;
@@ -131,11 +156,10 @@ std::vector<SingularLocation> hunt_singular_points(const Problem& problem, const
       if (s.status == LocateStatus::kFailed) continue;
       located.push_back(s.point);
       if (s.status != LocateStatus::kConverged || !problem.inside(s.x, 1e-9)) continue;
-      bool known = false;
-      for (const auto& f : found) known = known || problem.difference(f.x, s.x).norm() <= options.merge_distance;
-      if (known) continue;
-      found.push_back(s);
-      if (options.on_found) options.on_found(s);
+      if (!known_or_replaced(problem, s, options.merge_distance, &found, &resolution)) {
+        found.push_back(s);
+        if (options.on_found) options.on_found(s);
+      }
     }
   }
   return found;

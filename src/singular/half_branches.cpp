@@ -262,7 +262,7 @@ std::vector<HalfBranch> half_branches_at(const Problem& problem, const LocalCurv
     const auto [num, den] = exponent_fraction(b.offset_exponent);
     const double leading = (b.tangent.dot(d) > 0 ? 1.0 : -1.0) * b.offset_coefficient;
     const Vec2 through(p.dot(b.tangent), p.dot(Vec2(-b.tangent[1], b.tangent[0])));
-    b.chart_expansion = puiseux_expansion(curve.h, b.tangent, leading, num, den, 6, &through);
+    b.chart_expansion = puiseux_expansion(curve.h, b.tangent, leading, num, den, 6, &through, curve.germ_length);
     b.normal_3d = curve.direction_3d(Vec2(-b.tangent[1], b.tangent[0]));
     b.expansion = tangent_plane_expansion(curve, b.tangent, b.chart_expansion);
     tangent_plane_term(curve, p, inner, &b);
@@ -295,7 +295,7 @@ std::vector<HalfBranch> half_branches(const Problem& problem, const LocalCurve& 
   // the circle until every exit point is regular enough to march from.
   std::vector<HalfBranch> out;
   for (int k = 0; k < 4; ++k) {
-    out = half_branches_at(problem, curve, kind, options, options.epsilon * std::pow(2.0, k));
+    out = half_branches_at(problem, curve, kind, options, options.epsilon * curve.germ_length * std::pow(2.0, k));
     if (std::all_of(out.begin(), out.end(), [](const HalfBranch& b) { return b.exit_ok; })) break;
   }
   return out;

@@ -178,7 +178,9 @@ MatX LocalCurve::unknowns_jacobian() const {
   return J;
 }
 
-LocalCurve local_curve(const Problem& problem, const VecX& x) {
+namespace {
+
+LocalCurve curve_over_a_chart(const Problem& problem, const VecX& x) {
   LocalCurve c;
   c.kind = problem.kind();
   c.base = x;
@@ -211,6 +213,16 @@ LocalCurve local_curve(const Problem& problem, const VecX& x) {
     case PairKind::kImplicitImplicit: implicit_implicit(problem, x, &c); break;
   }
   if (c.status == LocalCurveStatus::kOk && !finite(c)) c.status = LocalCurveStatus::kNonFinite;
+  return c;
+}
+
+}  // namespace
+
+LocalCurve local_curve(const Problem& problem, const VecX& x) {
+  LocalCurve c = curve_over_a_chart(problem, x);
+  const double cap = kGermLengthRatio * problem.scale();
+  c.germ_length = germ_length(c.h, cap, c.gap_degree);
+  if (!(c.germ_length > 0)) c.germ_length = cap;  // a coefficient overflowed: h is not finite (status says so)
   return c;
 }
 

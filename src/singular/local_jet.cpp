@@ -74,6 +74,25 @@ LocalJet shifted(const LocalJet& h, const Vec2& z) {
   return r;
 }
 
+LocalJet in_germ_units(const LocalJet& h, double length) {
+  if (length == 1.0) return h;
+  LocalJet r = h;
+  double w = 1.0 / length;  // length^(d - 1), d = 0, 1, ...
+  for (int d = 0; d <= kLocalOrder; ++d, w *= length)
+    for (int j = 0; j <= d; ++j) r[d * (d + 1) / 2 + j] *= w;
+  return r;
+}
+
+double germ_length(const LocalJet& h, double cap, int gap_degree) {
+  double length = cap;
+  for (int d = gap_degree + 1; d <= kLocalOrder; ++d) {
+    double m = 0;
+    for (int j = 0; j <= d; ++j) m = std::max(m, std::fabs(coef(h, d - j, j)));
+    if (m > 0) length = std::min(length, std::pow(m, -1.0 / (d - gap_degree)));
+  }
+  return length;
+}
+
 double germ_scale(const LocalJet& h) {
   double m = 0;
   for (int i = 3; i < LocalJet::kSize; ++i) m = std::max(m, std::fabs(h[i]));

@@ -183,8 +183,12 @@ SingularLocation locate_singular_point(const Problem& problem, const VecX& guess
     c = local_curve(problem, x);
     ++out.expansions;
     if (c.status != LocalCurveStatus::kOk) return out;
-    const Vec2 z = solve_augmented_system(c.h, Vec2::Zero(), std::min(radius, model_radius(c.h)),
-                                          options.max_inner_iterations);
+    // In germ units (LocalCurve::germ_length) h and its gradient are alike in size and the
+    // radius tests weigh degrees the same at every model size.
+    const LocalJet g = in_germ_units(c.h, c.germ_length);
+    const Vec2 z =
+        c.germ_length * solve_augmented_system(g, Vec2::Zero(), std::min(radius / c.germ_length, model_radius(g)),
+                                               options.max_inner_iterations);
     out.last_step = z.norm();
     x = c.unknowns_at(z);
     // Stop at the rounding floor: the move no longer shrinks (at most once more after that).

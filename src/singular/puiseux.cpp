@@ -161,8 +161,11 @@ std::pair<int, int> exponent_fraction(double gamma) {
   return {static_cast<int>(std::round(gamma * 4)), 4};
 }
 
-PuiseuxExpansion puiseux_expansion(const LocalJet& h, const Vec2& d, double leading, int p, int q, double order,
-                                   const Vec2* through) {
+namespace {
+
+// The expansion of h as it is: its coefficients of every degree compared at the unit length.
+PuiseuxExpansion expansion_at_unit_length(const LocalJet& h, const Vec2& d, double leading, int p, int q, double order,
+                                          const Vec2* through) {
   PuiseuxExpansion out;
   Eigen::Matrix2d frame;
   frame.col(0) = d;
@@ -218,6 +221,20 @@ PuiseuxExpansion puiseux_expansion(const LocalJet& h, const Vec2& d, double lead
   for (int i = 0; i <= kSeriesOrder; ++i)
     if (W[i] != 0.0 && static_cast<double>(i) / Q <= order + 1e-9) out.terms.push_back({static_cast<double>(i) / Q, W[i]});
   out.max_exponent = out.complete ? order : (out.terms.empty() ? 0.0 : out.terms.back().exponent);
+  return out;
+}
+
+}  // namespace
+
+PuiseuxExpansion puiseux_expansion(const LocalJet& h, const Vec2& d, double leading, int p, int q, double order,
+                                   const Vec2* through, double length) {
+  if (length == 1.0) return expansion_at_unit_length(h, d, leading, p, q, order, through);
+  // In units of the germ length, W = b X^e becomes W~ = b length^(e - 1) X~^e.
+  const Vec2 scaled_through = through ? Vec2(*through / length) : Vec2::Zero();
+  const double scaled_leading = leading * std::pow(length, static_cast<double>(p) / q - 1.0);
+  PuiseuxExpansion out = expansion_at_unit_length(in_germ_units(h, length), d, scaled_leading, p, q, order,
+                                                  through ? &scaled_through : nullptr);
+  for (PuiseuxTerm& t : out.terms) t.coefficient *= std::pow(length, 1.0 - t.exponent);
   return out;
 }
 

@@ -28,11 +28,50 @@ int SingularRegistry::add(const SingularLocation& s) {
       static_cast<SingularAnalysis&>(n) = analyse_singular_point(problem_, at, without_branches);
     }
   }
+  if (const std::optional<int> same = within_resolution(n)) return *same;
   with_half_branches(problem_, &n);
   n.used.assign(n.branches.size(), false);
   nodes_.push_back(std::move(n));
   return static_cast<int>(nodes_.size()) - 1;
 }
+
+std::optional<int> SingularRegistry::within_resolution(const SingularNode& n) {
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    SingularNode& e = nodes_[i];
+    const double d = (e.location.point - n.location.point).norm();
+    if (d > std::max(resolution_radius(e), resolution_radius(n))) continue;
+    // The more degenerate of the two is the point itself, the other a location that stopped short
+    // of it; a node whose half-branches a curve has used keeps them.
+    const bool unused = std::none_of(e.used.begin(), e.used.end(), [](bool u) { return u; });
+    if (n.kind.milnor > e.kind.milnor && unused) {
+      static_cast<SingularAnalysis&>(e) = n;
+      with_half_branches(problem_, &e);
+      e.used.assign(e.branches.size(), false);
+    }
+    return static_cast<int>(i);
+  }
+  return std::nullopt;
+}
+
+namespace {
+
+// The point of half-branch b of node n at the distance X along its tangent: from its expansion over
+// the tangent plane where it has one (every term to exponent 6: the two halves of a ramphoid cusp
+// share their leading term X^2 and part at X^(5/2)), else from the leading offset c X^gamma along
+// the normal of its tangent-cone line (half_branches.cpp).
+Vec3 predicted_point(const SingularNode& n, const HalfBranch& b, double X) {
+  if (!b.expansion.terms.empty()) {
+    double w = 0;
+    for (const PuiseuxTerm& t : b.expansion.terms) w += t.coefficient * std::pow(X, t.exponent);
+    return n.location.point + X * b.tangent_3d + w * b.normal_3d;
+  }
+  const Vec2& dir = n.kind.tangent_cone[static_cast<std::size_t>(b.line)].direction;
+  const Vec3 normal = n.curve.direction_3d(Vec2(-dir[1], dir[0]));
+  const double gamma = b.offset_exponent > 0 ? b.offset_exponent : 2.0;
+  return n.location.point + X * b.tangent_3d + b.offset_coefficient * std::pow(X, gamma) * normal;
+}
+
+}  // namespace
 
 int SingularRegistry::arriving_half_branch(int index, const CurvePoint& last) const {
   const SingularNode& n = nodes_[static_cast<std::size_t>(index)];
@@ -43,12 +82,7 @@ int SingularRegistry::arriving_half_branch(int index, const CurvePoint& last) co
     const HalfBranch& b = n.branches[i];
     const double X = d.dot(b.tangent_3d);
     if (!(X > 0) || b.line < 0) continue;
-    // Offset from the tangent line along the line's normal rot90(direction) (half_branches.cpp).
-    const Vec2& dir = n.kind.tangent_cone[static_cast<std::size_t>(b.line)].direction;
-    const Vec3 normal = n.curve.direction_3d(Vec2(-dir[1], dir[0]));
-    const double gamma = b.offset_exponent > 0 ? b.offset_exponent : 2.0;
-    const Vec3 predicted = n.location.point + X * b.tangent_3d + b.offset_coefficient * std::pow(X, gamma) * normal;
-    const double score = (last.p - predicted).norm();
+    const double score = (last.p - predicted_point(n, b, X)).norm();
     if (score < best_score) best_score = score, best = static_cast<int>(i);
   }
   return best;

@@ -90,7 +90,8 @@ bool on_contact_curve(const ContactPoint& p) {
 }
 
 bool is_contact_point(const ContactPoint& p) {
-  return on_contact_curve(p) && classify(p.curve.h).type == SingularType::kTangentialContact;
+  return on_contact_curve(p) &&
+         classify(p.curve.h, {.length = p.curve.germ_length}).type == SingularType::kTangentialContact;
 }
 
 namespace {

@@ -96,7 +96,19 @@ struct Walk {
   bool unwatched_first = false;  // its first step is taken without the singular-point watch
   std::optional<Tracer> fine;    // short steps over the stretch of a near miss
   double fine_length = 0;        // the length of that stretch
+  int left_node = -1;            // the singular point the current march left (registry index)
+  std::size_t left_at = 0;       // and the index in out.points of the exit point it left from
 };
+
+// Whether the march that left a singular point along a half-branch met that same point again
+// before it accepted a second point: its first step, long against the half-branch circle (a
+// constant step of 0.9 from an exit point 0.007 from a ramphoid cusp), turned back towards the
+// point. That is no arrival but a near miss, retaken with short steps.
+bool back_at_the_point_left(SingularRegistry* registry, const SingularLocation& loc, const Walk& w) {
+  if (!registry || w.left_node < 0 || w.out.points.size() > w.left_at + 2) return false;
+  const SingularNode& n = registry->node(w.left_node);
+  return (n.location.point - loc.point).norm() <= std::max(registry->merge_distance(), resolution_radius(n));
+}
 
 // What the caller of one step of the walk does next.
 enum class Next { kMarch, kDone };
@@ -181,12 +193,14 @@ Next pass_singular_point(const Tracer& tracer, SingularRegistry* registry, Singu
   registry->mark(n, k, curve);
   const HalfBranch& b = node.branches[static_cast<std::size_t>(k)];
   w->from = CurvePoint{b.exit_x, b.exit_point, b.direction};
+  w->left_node = n;
   if (close_at && closes_before(*close_at, CurvePoint{loc.x, loc.point, b.tangent_3d}, w->from.p, close_tolerance)) {
     close_on_start(loc.point, b.tangent_3d, *close_at, "closed at its start, just after the " + what, &out);
     return Next::kDone;
   }
   out.length += arc_length_estimate(loc.point, b.tangent_3d, w->from.p, w->from.t);
   out.points.push_back(w->from);
+  w->left_at = out.points.size() - 1;
   return Next::kMarch;
 }
 
@@ -199,6 +213,7 @@ BranchMarch march_branch(const Tracer& tracer, const CurvePoint& start, const Cu
   Walk w;
   w.out.points.push_back(start);
   w.from = start;
+  w.left_node = from_node;
   for (int passage = 0;; ++passage) {
     const std::size_t begin = march_passage(tracer, base, close_at, &w, stats);
     const Event& e = w.out.event;
@@ -209,7 +224,8 @@ BranchMarch march_branch(const Tracer& tracer, const CurvePoint& start, const Cu
     }
     if (e.kind != EventKind::kSingularSuspected || passage >= kMaxPassages) return std::move(w.out);
     SingularLocation loc;
-    if (!locate_near(tracer, w.out.points.back(), e, &loc)) {
+    const bool located = locate_near(tracer, w.out.points.back(), e, &loc);
+    if (!located || back_at_the_point_left(registry, loc, w)) {
       if (e.beyond.size() == 0) return std::move(w.out);  // stuck, and no singular point there
       retake_near_miss(tracer, &w);
       continue;

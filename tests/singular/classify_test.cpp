@@ -40,6 +40,54 @@ TEST_P(ClassifyGerm, TypeMilnorAndName) {
   EXPECT_EQ(k.multiplicity, c.multiplicity);
 }
 
+// The same germ as a gap in model units of a model scaled by lambda: the coefficient of degree d
+// times lambda^(1 - d). Classified over its own germ length it is the same singular point at every
+// scale (issue 26: at lambda = 1e-6 the order-12 terms made a Viviani node a contact point, at
+// 1e6 the higher terms were cleaned as if negligible).
+LocalJet scaled_germ(const LocalJet& h, double lambda) {
+  LocalJet r = h;
+  for (int d = 0; d <= kLocalOrder; ++d)
+    for (int j = 0; j <= d; ++j) set_coef(r, d - j, j, coef(h, d - j, j) * std::pow(lambda, 1 - d));
+  return r;
+}
+
+TEST_P(ClassifyGerm, TheSameAtEveryScaleOverItsGermLength) {
+  const GermCase& c = GetParam();
+  // Terms of every degree up to the jet's order, small at the unit length, as a real germ has.
+  LocalJet h = germ(c.terms);
+  for (int d = 7; d <= kLocalOrder; ++d) set_coef(h, d - 1, 1, coef(h, d - 1, 1) + 1e-3 / d);
+  const Classification at_one = classify(h);
+  for (const double lambda : {1e-6, 1e-3, 1e3, 1e6}) {
+    SCOPED_TRACE(lambda);
+    const LocalJet hl = scaled_germ(h, lambda);
+    const double length = germ_length(hl, 1e300);
+    EXPECT_NEAR(length / lambda, germ_length(h, 1e300), 1e-12 * germ_length(h, 1e300));
+    const Classification k = classify(hl, {.length = length});
+    EXPECT_EQ(k.type, at_one.type) << to_string(k.type);
+    EXPECT_EQ(k.ak, at_one.ak);
+    EXPECT_EQ(k.milnor, at_one.milnor);
+    EXPECT_EQ(k.multiplicity, at_one.multiplicity);
+  }
+}
+
+TEST(GermLength, IsTheRadiusAtWhichATermIsAsLargeAsTheGap) {
+  // A sphere of radius R over its tangent plane: the gap (s^2 + t^2) / (2R) + (s^2 + t^2)^2 / (8R^3)
+  // + ...: the quadratic term equals the distance at 2R, the quartic's largest coefficient
+  // (2 s^2 t^2 / (8R^3)) at cbrt(4) R, the smaller.
+  for (const double R : {1e-5, 1.0, 3e4}) {
+    const LocalJet h = germ({{2, 0, 0.5 / R},
+                             {0, 2, 0.5 / R},
+                             {4, 0, 0.125 / (R * R * R)},
+                             {2, 2, 0.25 / (R * R * R)},
+                             {0, 4, 0.125 / (R * R * R)}});
+    EXPECT_NEAR(germ_length(h, 1e300), std::cbrt(4.0) * R, 1e-12 * R);
+    EXPECT_EQ(germ_length(h, R), R);  // the cap
+  }
+  // A product of two gaps (units length^2): the degree-2 part carries no length, the cubic does.
+  const LocalJet two = germ({{1, 1, 1.0}, {3, 0, 1e-4}});
+  EXPECT_NEAR(germ_length(two, 1e300, 2), 1e4, 1e-8);
+}
+
 using T = SingularType;
 INSTANTIATE_TEST_SUITE_P(
     Oracle, ClassifyGerm,

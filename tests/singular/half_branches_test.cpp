@@ -23,7 +23,7 @@ AtPoint analyse(const Problem& pr, VecX guess) {
   EXPECT_EQ(s.status, LocateStatus::kConverged);
   AtPoint a;
   a.curve = local_curve(pr, s.x);
-  a.kind = classify(a.curve.h);
+  a.kind = classify(a.curve.h, {.length = a.curve.germ_length});
   a.hb = half_branches(pr, a.curve, a.kind);
   return a;
 }
@@ -35,13 +35,14 @@ VecX uv(double u, double v, int dim) {
   return x;
 }
 
-// Every exit point is on the curve, about epsilon away, and its direction points outwards.
+// Every exit point is on the curve, about epsilon germ lengths away (HalfBranchOptions::epsilon),
+// and its direction points outwards.
 void expect_good_exits(const Problem& pr, const AtPoint& a) {
   for (const HalfBranch& b : a.hb) {
     ASSERT_TRUE(b.exit_ok);
     EXPECT_LE(pr.linearize(b.exit_x).h.norm(), 1e-13);
     const double d = (b.exit_point - a.curve.origin).norm();
-    EXPECT_GT(d, 0.5e-2);
+    EXPECT_GT(d, 0.5 * HalfBranchOptions{}.epsilon * a.curve.germ_length);
     EXPECT_LT(d, 0.2);
     EXPECT_GT(b.direction.dot(b.exit_point - a.curve.origin), 0.9 * d);
     EXPECT_GT(b.direction.dot(b.tangent_3d), 0.9);

@@ -43,6 +43,26 @@ TEST(Puiseux, CuspWithCorrection) {
   }
 }
 
+// The cusp above in a model scaled by lambda (h a gap in model units: degree d times
+// lambda^(1 - d)), expanded over its germ length: the terms are the unit ones in model units,
+// b_e lambda^(1 - e), at every scale (issue 26).
+TEST(Puiseux, TheSameBranchAtEveryScaleOverTheGermLength) {
+  for (const double lambda : {1e-6, 1e6}) {
+    SCOPED_TRACE(lambda);
+    const LocalJet h =
+        germ({{0, 2, 1 / lambda}, {3, 0, -1 / (lambda * lambda)}, {4, 0, -1 / (lambda * lambda * lambda)}});
+    const Vec2 through(0.01 * lambda, 0.001 * lambda);
+    const PuiseuxExpansion e = puiseux_expansion(h, Vec2(1, 0), 0.9 / std::sqrt(lambda), 3, 2, 6, &through, lambda);
+    EXPECT_EQ(e.denominator, 2);
+    EXPECT_TRUE(e.complete);
+    ASSERT_EQ(e.terms.size(), 5u);
+    for (std::size_t k = 0; k < e.terms.size(); ++k) {
+      EXPECT_NEAR(e.terms[k].exponent, 1.5 + static_cast<double>(k), 1e-12);
+      EXPECT_NEAR(e.terms[k].coefficient * std::pow(lambda, e.terms[k].exponent - 1), kSqrt1p[k], 1e-9) << k;
+    }
+  }
+}
+
 TEST(Puiseux, RamphoidCuspAndTacnode) {
   // t^2 = s^5: W = +-X^(5/2) only.  t^2 = s^4 + s^5: W = +-X^2 sqrt(1 + X) (tacnode, q = 1).
   expect_terms(puiseux_expansion(germ({{0, 2, 1}, {5, 0, -1}}), Vec2(1, 0), 1.1, 5, 2), {{2.5, 1.0}});

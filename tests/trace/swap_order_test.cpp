@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -20,7 +21,12 @@
 namespace ssimarch {
 namespace {
 
-constexpr double kLengthTolerance = 1e-9;  // model units (issue 11 item 4)
+// Lengths agree to 1e-9 relative (issue 26 item 2), at least 1e-9 model units (issue 11 item 4).
+// An absolute 1e-9 asked more of OpenCASCADE's bug32850 (coordinates ~2000, a branch of 13.01)
+// than either order's own accuracy: at the default step both lie 2.4e-9 and 3.5e-9 from the
+// length both converge to at steps of 0.1 (13.0138342234), and the germ length of the node, which
+// the two orders' local curves give slightly differently, moves where the march restarts.
+double length_tolerance(double a, double b) { return 1e-9 * std::max({1.0, std::fabs(a), std::fabs(b)}); }
 constexpr double kVertexTolerance = 1e-10;
 
 std::string swapped_text(const std::filesystem::path& file) {
@@ -76,8 +82,8 @@ bool same_vertices(const ComponentKey& a, const ComponentKey& b) {
 bool same_component(const ComponentKey& a, const ComponentKey& b) {
   if (a.branches.size() != b.branches.size()) return false;
   for (std::size_t i = 0; i < a.branches.size(); ++i)
-    if (a.branches[i].first != b.branches[i].first ||
-        std::abs(a.branches[i].second - b.branches[i].second) > kLengthTolerance)
+    if (a.branches[i].first != b.branches[i].first || std::abs(a.branches[i].second - b.branches[i].second) >
+                                                          length_tolerance(a.branches[i].second, b.branches[i].second))
       return false;
   return same_vertices(a, b);
 }
@@ -94,7 +100,7 @@ void expect_same_network(const CurveNetwork& a, const CurveNetwork& b) {
   std::sort(ea.begin(), ea.end());
   std::sort(eb.begin(), eb.end());
   for (std::size_t i = 0; i < std::min(ea.size(), eb.size()); ++i)
-    EXPECT_NEAR(ea[i], eb[i], kLengthTolerance) << "edge " << i;
+    EXPECT_NEAR(ea[i], eb[i], length_tolerance(ea[i], eb[i])) << "edge " << i;
   // Each component of one network matches its own component of the other (components of equal
   // length, e.g. mirror images, are told apart by their vertices).
   const auto ka = keys(a), kb = keys(b);

@@ -87,6 +87,19 @@ inline constexpr double kLocateSineTolerance = 1e-6;
 /// point's location (about 1e-8 relative at a double root), so smaller ones cannot be told from 0.
 inline constexpr double kClassifyZeroTolerance = 1e-8;
 
+/// The germ length as a fraction of the model size (Problem::scale()): the radius of the disc of
+/// the tangent plane over which a local curve's coefficients of different degrees are weighed
+/// against each other when it is classified and expanded (ClassifyOptions::length,
+/// puiseux_expansion's `length`). In model units the coefficient of degree d of h scales as
+/// size^(1 - d), so any comparison across degrees needs a length; one fixed in model units made
+/// the same scene classify differently at every scale (Villarceau's nodes on a torus of size 0.6
+/// became quadruple points, a Viviani node at size 1e-6 a contact point: the order-12 terms dwarfed
+/// the quadratic ones). A tenth of the model is the automatic step (resolved_options.hpp): the
+/// distance over which the march and the half-branches resolve the curve, so a term that matters
+/// there is kept; at the size 10 of the seeds' scenes it is the unit length the classification
+/// thresholds were judged on.
+inline constexpr double kGermLengthRatio = 0.1;
+
 /// Distance (model units, times the model size) below which two located singular points are one
 /// (trace/trace_all.cpp, the registry of singular points): two locations of one node agree to
 /// about 1e-8 relative, and two distinct singular points closer than 1e-7 of the model are beyond

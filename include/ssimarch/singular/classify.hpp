@@ -47,6 +47,10 @@ struct ClassifyOptions {
   // Coefficients of h below zero_tolerance * (largest |coefficient| of degree >= 2) are zero
   // (relative; thesis §5.2.5 coefficient tests, done as exact zero tests with a tolerance relative to the coefficient scale).
   double zero_tolerance = kClassifyZeroTolerance;
+  // The germ length (model units, > 0): h is classified as h(length S, length T) / length, so
+  // that coefficients of different degrees are weighed over a disc of this radius
+  // (kGermLengthRatio x the model size for an intersection; 1 for a germ given in its own units).
+  double length = 1.0;
 };
 
 /// A real line of the tangent cone: unit direction in (s, t) and multiplicity as a root of the

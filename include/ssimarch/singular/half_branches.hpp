@@ -28,8 +28,9 @@
 namespace ssimarch {
 
 struct HalfBranchOptions {
-  double epsilon = 1e-2;        // radius of the circle in the tangent plane (model units); doubled
-                                // (up to 3 times) while an exit point is not regular enough
+  double epsilon = 1e-2;        // radius of the circle in the tangent plane, times the germ length
+                                // (LocalCurve::germ_length: 1e-3 of the model size); doubled (up
+                                // to 3 times) while an exit point is not regular enough
   int samples = 8192;           // sign samples on the circle
   double newton_tolerance = 1e-14;  // |H| (model units, times the model size) of the exit point
   double min_rank_ratio = 1e-7;     // the exit point must be a regular point of H (Problem::rank_ratio)

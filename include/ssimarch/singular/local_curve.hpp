@@ -41,6 +41,10 @@ struct LocalCurve {
   Vec3 origin = Vec3::Zero();       // P0, the 3D point at (0, 0)
   Vec3 e1 = Vec3::Zero(), e2 = Vec3::Zero(), normal = Vec3::Zero();  // orthonormal frame, normal of the first surface
   LocalJet h;                       // the local curve h(s, t) = 0 (model units)
+  int gap_degree = 1;               // h is a product of this many gaps (units length^gap_degree)
+  double germ_length = 1.0;         // model units: the germ's own length (germ_length(h, ...)) at most
+                                    // kGermLengthRatio x the model size, over which h's degrees
+                                    // are weighed (classify, puiseux, locate, half-branches)
   std::vector<LocalJet> unknowns;   // x(s, t), one jet per unknown of the problem
   std::array<LocalJet, 3> point;    // the 3D point P(s, t) of x(s, t) (on the chart's surface)
   // Set where a parametric surface of the pair is degenerate at the base point (a cone's apex, a

@@ -53,6 +53,19 @@ LocalJet linear_substitution(const LocalJet& h, const Eigen::Matrix2d& A);
 /// h(z + (S, T)): the same polynomial re-expanded about the point z (exact Taylor shift).
 LocalJet shifted(const LocalJet& h, const Vec2& z);
 
+/// h(l S, l T) / l: the same germ with lengths in units of l (model units; the coefficient of
+/// degree d times l^(d - 1)), so that coefficients of different degrees can be compared
+/// (problem/singular_tolerances.hpp kGermLengthRatio).
+LocalJet in_germ_units(const LocalJet& h, double length);
+
+/// The germ's own length (model units): min over degrees d > k of |h_d|^(-1 / (d - k)), |h_d| the
+/// largest coefficient of degree d, capped at `cap`, for h a product of k gaps in model units (k = 1
+/// for a gap; h then has units length^k). At this radius a term of degree d is as large as the
+/// product of k distances: the radius of curvature of the surfaces' separation for a quadratic
+/// term of a gap, the scale of the germ's features in general. It scales with the model and does
+/// not depend on the size of the domains (problem/singular_tolerances.hpp kGermLengthRatio).
+double germ_length(const LocalJet& h, double cap, int gap_degree = 1);
+
 /// The largest |coefficient| of degree 2..kLocalOrder (the scale of a singular germ).
 double germ_scale(const LocalJet& h);
 

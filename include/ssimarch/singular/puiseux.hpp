@@ -42,8 +42,11 @@ struct PuiseuxExpansion {
 /// oscnode's two branches on one side, a ramphoid cusp's two halves): each term is a root of the
 /// edge polynomial of the Newton polygon of H(tau^Q, W + V) for the edges steeper than the last
 /// term (Wall 2004 §2.1), and the root whose partial sum passes nearest that point is taken.
+/// `length` (model units, > 0): the germ length over which the terms are weighed
+/// (LocalCurve::germ_length); the expansion is computed for h(length .) / length and returned in
+/// model units.
 PuiseuxExpansion puiseux_expansion(const LocalJet& h, const Vec2& d, double leading, int p, int q, double order = 6,
-                                   const Vec2* through = nullptr);
+                                   const Vec2* through = nullptr, double length = 1.0);
 
 /// p / q: the exponent gamma as a fraction with q <= 4 (gamma = 0, straight within resolution, is 2/1).
 std::pair<int, int> exponent_fraction(double gamma);

@@ -3,6 +3,7 @@
 // branch, every half-branch leaving a singular point is traced exactly once).
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "ssimarch/trace/result.hpp"
@@ -33,12 +34,17 @@ class SingularRegistry {
 
   void mark(int n, int half, int curve);
   SingularNode& node(int n) { return nodes_[static_cast<std::size_t>(n)]; }
+  double merge_distance() const { return merge_; }
   const std::vector<SingularNode>& nodes() const { return nodes_; }
 
   /// The reports of the nodes for TraceResult::singular_points.
   std::vector<SingularPointReport> reports() const;
 
  private:
+  /// A node the analysed point n cannot be told apart from (within the resolution radius of the
+  /// more degenerate of the two), made n where n is more degenerate and the node is still unused.
+  std::optional<int> within_resolution(const SingularNode& n);
+
   const Problem& problem_;
   double merge_;
   std::vector<SingularNode> nodes_;
