@@ -54,9 +54,14 @@ void frame_from_normal(const Vec3& n, const Vec3& hint, Vec3* e1, Vec3* e2) {
 
 // How far a parametric chart is from degenerate: |F_u x F_v| / (|F_u|^2 + |F_v|^2), in [0, 1/2].
 double chart_condition(const Surface& s, double u, double v) {
+  // The derivatives per the whole width of each parameter's range, so that the ratio does not
+  // depend on the parameters' units: a cylinder of radius 1000 in (angle, height) has
+  // |F_u| / |F_v| = 1000 and read as degenerate as the apex of a cone (issue 26).
+  auto width = [](const Interval& r) { return std::isfinite(r.width()) && r.width() > 0 ? r.width() : 1.0; };
   const FirstOrder f = parametric_first_order(s, u, v);
-  const double d = f.du.squaredNorm() + f.dv.squaredNorm();
-  return d > 0 ? f.du.cross(f.dv).norm() / d : 0.0;
+  const Vec3 du = width(s.domain().u) * f.du, dv = width(s.domain().v) * f.dv;
+  const double d = du.squaredNorm() + dv.squaredNorm();
+  return d > 0 ? du.cross(dv).norm() / d : 0.0;
 }
 
 // The unit dividing an implicit surface's value into model units over a parametric chart: its

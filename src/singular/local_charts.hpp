@@ -26,7 +26,8 @@ double implicit_hessian_norm(const Surface& s, const Vec3& p);
 /// Orthonormal tangent frame (e1, e2) with e1 x e2 = n, e1 along `hint` where it is not parallel to n.
 void frame_from_normal(const Vec3& n, const Vec3& hint, Vec3* e1, Vec3* e2);
 
-/// How far a parametric chart is from degenerate: |F_u x F_v| / (|F_u|^2 + |F_v|^2), in [0, 1/2].
+/// How far a parametric chart is from degenerate: |F_u x F_v| / (|F_u|^2 + |F_v|^2) in [0, 1/2], with
+/// F_u and F_v per the width of their parameter ranges (independent of the parameters' units).
 double chart_condition(const Surface& s, double u, double v);
 
 /// The unit dividing an implicit surface's value into model units over a chart: its gradient's
