@@ -219,6 +219,16 @@ void pair_half_branches(const Classification& kind, double radius, std::vector<H
   }
 }
 
+// How regular a point of the curve is: the sine of the angle between the surfaces' normals, which
+// does not depend on the units of the parameters (the Jacobian's rank ratio of a torus in angles
+// and a plane in lengths at scale 1e6 mixes columns of 1e6 and 1, and read the exits of
+// Villarceau's nodes as singular); the rank ratio where a normal is undefined.
+double regularity(const Problem& problem, const VecX& x, double rank_ratio) {
+  const Linearization L = problem.linearize(x);
+  if (!(L.normal_first.squaredNorm() > 0 && L.normal_second.squaredNorm() > 0)) return rank_ratio;
+  return L.normal_first.cross(L.normal_second).norm();
+}
+
 void exit_point(const Problem& problem, const LocalCurve& curve, const Vec2& p, const HalfBranchOptions& options,
                 HalfBranch* b) {
   VecX x = curve.unknowns_at(p);
@@ -228,7 +238,8 @@ void exit_point(const Problem& problem, const LocalCurve& curve, const Vec2& p, 
   b->exit_point = problem.point(b->exit_x);
   const Vec3 hint = b->exit_point - curve.origin;
   CurveJet<1> jet = curve_jet<1>(problem, b->exit_x, &hint);
-  if (jet.status != CurveJetStatus::kOk || jet.rank_ratio < options.min_rank_ratio) return;
+  if (jet.status != CurveJetStatus::kOk || regularity(problem, b->exit_x, jet.rank_ratio) < options.min_rank_ratio)
+    return;
   b->direction = jet.alpha[1];
   b->direction_x = jet.x[1];
   b->exit_ok = true;

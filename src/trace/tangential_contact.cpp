@@ -149,6 +149,16 @@ bool passes(const Vec3& s, const Vec3& a, const Vec3& b, double ds) {
   return (s - a - (along / L2) * c).norm() <= 0.05 * ds;
 }
 
+// A slack for Problem::inside as a fraction of the narrowest bounded unknown's range: an absolute
+// slack of 1e-7 let a contact line on a cone scaled by 1e-6 run 3 % past its range (issue 26).
+double slack(const Problem& P, double fraction) {
+  double width = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < P.dim(); ++i)
+    if (!(P.periods()[static_cast<std::size_t>(i)] > 0))
+      width = std::min(width, P.bounds()[static_cast<std::size_t>(i)].width());
+  return fraction * (std::isfinite(width) && width > 0 ? width : P.scale());
+}
+
 // The first bound of the domain the unknowns' chord from -> to crosses: the fraction of the chord
 // where it does, and the unknown (-1: none; periodic unknowns have no bound).
 std::pair<double, int> first_exit(const Problem& P, const VecX& from, const VecX& to) {
@@ -173,7 +183,7 @@ std::optional<ContactPoint> land_on_bound(const Problem& P, const ContactPoint& 
                                           const Vec2& dir, double ds, const ContactOptions& o) {
   const double f = first_exit(P, cur.location.x, next.location.x).first;
   ContactPoint edge = advance(P, cur, dir, f * ds, o);
-  if (on_contact_curve(edge) && P.inside(edge.location.x, 1e-7)) return edge;
+  if (on_contact_curve(edge) && P.inside(edge.location.x, slack(P, 1e-7))) return edge;
   std::optional<ContactPoint> landed;
   double lo = 0, hi = 1;
   while (hi - lo > 4 * std::numeric_limits<double>::epsilon()) {
@@ -211,7 +221,7 @@ std::optional<PoleCrossing> cross_pole(const Problem& P, const std::vector<Pole>
     const Vec3 q = pole.point + std::max(to_pole.norm(), 0.25 * ds) * travel;
     ContactPoint beyond = correct_onto_contact(P, unknowns_beyond_pole(P, pole, cur.location.x, q), o);
     const Vec3 past = beyond.location.point - pole.point;
-    if (!on_contact_curve(beyond) || !P.inside(beyond.location.x, 1e-9) || past.dot(travel) <= 0 ||
+    if (!on_contact_curve(beyond) || !P.inside(beyond.location.x, slack(P, 1e-9)) || past.dot(travel) <= 0 ||
         (beyond.location.point - q).norm() > 0.5 * (q - pole.point).norm())
       return std::nullopt;
     VecX x = cur.location.x;
@@ -244,7 +254,7 @@ Half march_contact(const Problem& P, const ContactPoint& start, double sign, dou
       out.message = "the curve of tangential contact ends at " + describe_point(cur.location.point);
       return out;
     }
-    if (!P.inside(next.location.x, 1e-9)) {
+    if (!P.inside(next.location.x, slack(P, 1e-9))) {
       // A curve started on the domain's edge (a pole) comes back to it there: closed.
       const Vec3 to_start = start.location.point - cur.location.point;
       if (out.points.size() >= 3 && to_start.norm() <= 1.5 * ds && to_start.dot(travel) > 0) {
@@ -332,7 +342,7 @@ std::optional<SingularLocation> crossing_near(const Problem& P, const VecX& x, d
 ContactTrace trace_tangential_contact(const Problem& P, const VecX& x0, const ContactOptions& o) {
   ContactTrace out;
   const ContactPoint start = correct_onto_contact(P, x0, o);
-  if (!is_contact_point(start) || !P.inside(start.location.x, 1e-9)) return out;
+  if (!is_contact_point(start) || !P.inside(start.location.x, slack(P, 1e-9))) return out;
   const double step = o.step > 0 ? o.step : P.scale() / 100;
   Half forward = march_contact(P, start, 1.0, step, o, &out.crossings);
   TracedCurve& c = out.curve;

@@ -33,7 +33,9 @@ struct HalfBranchOptions {
                                 // to 3 times) while an exit point is not regular enough
   int samples = 8192;           // sign samples on the circle
   double newton_tolerance = 1e-14;  // |H| (model units, times the model size) of the exit point
-  double min_rank_ratio = 1e-7;     // the exit point must be a regular point of H (Problem::rank_ratio)
+  double min_rank_ratio = 1e-7;     // the exit point must be a regular point of the curve: the sine of
+                                    // the angle between the normals (Problem::rank_ratio where a
+                                    // normal is undefined) at least this
 };
 
 struct HalfBranch {
