@@ -65,7 +65,7 @@ SingularAnalysis analyse_singular_point(const Problem& problem, const SingularLo
 /// short of the point and be accepted (docs/math/singular_local_curve.md §2): on a branch
 /// Y ~ X^((k+1)/2) of an A_k germ in germ units |grad h| ~ 2 |X|^((k+1)/2), at a point of
 /// multiplicity m >= 3 it is ~ |X|^(m-1). Two singular points this close cannot be told apart by
-/// their locations: the more degenerate is the point (1e-3 germ lengths at a tacnode, whose valley
+/// their locations: the more degenerate is the point (7e-4 germ lengths at a tacnode, whose valley
 /// held points located as cusps or nodes of their own: Ex. 18). 0 where not analysed or mu < 1.
 double resolution_radius(const SingularAnalysis& a);
 
