@@ -1,7 +1,8 @@
 // The per-point kernels of the marching loop (docs/benchmarks.md, "Marching cost"): CPU time of a
 // curve jet of order 4 (what the tracer computes at every accepted point) and of one
 // linearisation (each corrector iteration), on Viviani's curve in its three forms and thesis
-// pair 1, plus surface points with first- and second-order jets of a bicubic NURBS surface.
+// pair 1, plus points and jets of a bicubic NURBS surface on its Bezier pieces against de Boor
+// on its net (issue 27 item 1).
 //
 //   jet_cost [--reps N]        (cmake --preset bench && cmake --build build-bench --target jet_cost)
 //
@@ -78,6 +79,15 @@ void problem_rows(int reps) {
   }
 }
 
+// One evaluation kind on the surface's Bezier pieces (issue 27) and by de Boor on the net in the
+// number type itself (the evaluation before issue 27, kept for interval types).
+template <class T>
+void nurbs_row(const char* name, const BSplineSurface& s, int reps, const T& u, const T& v) {
+  const double pieces = ns_per_call(reps, 2000, [&] { g_sink = primal(s.point(u, v).x); });
+  const double de_boor = ns_per_call(reps, 2000, [&] { g_sink = primal(s.point_de_boor(u, v).x); });
+  std::printf("| %s | %.0f | %.0f | %.1f |\n", name, pieces, de_boor, de_boor / pieces);
+}
+
 void nurbs_rows(int reps) {
   // Bicubic rational B-spline, 6 x 6 control points, one interior knot each way.
   const std::vector<double> U{0, 0, 0, 0, 0.4, 0.7, 1, 1, 1, 1};
@@ -88,15 +98,31 @@ void nurbs_rows(int reps) {
       P[i][j] = Vec3(static_cast<double>(i), static_cast<double>(j), std::sin(static_cast<double>(i + 2 * j)));
       W[i][j] = 1.0 + 0.1 * static_cast<double>((i + j) % 3);
     }
-  const Surface s = BSplineSurface(3, 3, U, U, P, W);
+  const BSplineSurface s(3, 3, U, U, P, W);
   const double u0 = 0.55, v0 = 0.3;
-  const double d0 = ns_per_call(reps, 2000, [&] { g_sink = s.point(u0, v0).x; });
+  std::printf("\n| bicubic NURBS point (ns) | Bezier pieces | de Boor | ratio |\n|---|---|---|---|\n");
+  nurbs_row("double", s, reps, u0, v0);
   using J1 = Jet<2, 1>;
   using J2 = Jet<2, 2>;
-  const double d1 = ns_per_call(reps, 2000, [&] { g_sink = s.point(J1::variable(0, u0), J1::variable(1, v0)).x.value(); });
-  const double d2 = ns_per_call(reps, 2000, [&] { g_sink = s.point(J2::variable(0, u0), J2::variable(1, v0)).x.value(); });
-  std::printf("\n| bicubic NURBS point | double | Jet<2,1> | Jet<2,2> |\n|---|---|---|---|\n| ns | %.0f | %.0f | %.0f |\n", d0,
-              d1, d2);
+  using J4 = Jet<2, 4>;
+  using J12 = Jet<2, 12>;
+  nurbs_row("Jet<2,1>", s, reps, J1::variable(0, u0), J1::variable(1, v0));
+  nurbs_row("Jet<2,2>", s, reps, J2::variable(0, u0), J2::variable(1, v0));
+  nurbs_row("Jet<2,4>", s, reps, J4::variable(0, u0), J4::variable(1, v0));
+  nurbs_row("Jet<2,12>", s, reps, J12::variable(0, u0), J12::variable(1, v0));
+  // What the singular-point analysis substitutes: the parameters as jets of a local chart.
+  const J12 cu12 = J12::variable(0, u0) + 0.3 * J12::variable(1, 0.0) * J12::variable(0, 0.0),
+            cv12 = J12::variable(1, v0) - 0.2 * J12::variable(0, 0.0) * J12::variable(0, 0.0);
+  nurbs_row("Jet<2,12> (chart)", s, reps, cu12, cv12);
+  // What the curve jet substitutes: each parameter a Taylor series in the arc length.
+  Taylor<4> cu(u0), cv(v0);
+  for (int k = 1; k <= 4; ++k) {
+    cu[k] = 0.3 / k;
+    cv[k] = -0.2 / k;
+  }
+  nurbs_row("Taylor<4> (curve jet)", s, reps, cu, cv);
+  using L = Jet<4, 1>;  // a linearisation of a parametric-parametric pair: 4 unknowns
+  nurbs_row("Jet<4,1> (linearisation)", s, reps, L::variable(2, u0), L::variable(3, v0));
 }
 
 }  // namespace

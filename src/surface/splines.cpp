@@ -131,6 +131,7 @@ BSplineSurface::BSplineSurface(int degree_u, int degree_v, std::vector<double> k
              false};
   data->knots_u = std::move(knots_u);
   data->knots_v = std::move(knots_v);
+  data->pieces = internal::extract_bezier_pieces(p_, q_, data->knots_u, data->knots_v, nu_, nv_, data->homogeneous);
   data_ = std::move(data);
   domain_.periodic_u = edges_coincide(0);
   domain_.periodic_v = edges_coincide(1);

@@ -232,6 +232,24 @@ TEST(Jet, DivisionInvertsMultiplication) {
   for (int i = 0; i < J::kSize; ++i) EXPECT_NEAR(q[i], 0.0, 1e-13);
 }
 
+TEST(Jet, DivisionByRecurrenceEqualsTheReciprocalSeries) {
+  // The recurrence (core/jet.hpp) against the reciprocal's Taylor series 1/b0 sum (-h/b0)^k
+  // multiplied out, to order 12 in three variables, and a zero constant term stays visible.
+  using J = Jet<3, 12>;
+  const J x = J::variable(0, 0.4), y = J::variable(1, -0.9), z = J::variable(2, 1.7);
+  const J a = exp(x) * y + z, b = 3.0 + x * y - sin(z);
+  J h = b;
+  h[0] = 0.0;
+  const std::array<double, 13> series = internal::reciprocal<12>(b.value());
+  J inv(series[12]);
+  for (int k = 11; k >= 0; --k) inv = inv * h + series[static_cast<std::size_t>(k)];
+  const J expected = a * inv, got = a / b;
+  for (int i = 0; i < J::kSize; ++i)
+    EXPECT_NEAR(got[i], expected[i], 1e-12 * (1.0 + std::abs(expected[i]))) << "coefficient " << i;
+  EXPECT_FALSE(is_finite(J(1.0) / (x - 0.4)));
+  EXPECT_FALSE(is_finite(reciprocal(Taylor<4>::variable(0, 0.0))));
+}
+
 TEST(Jet, FirstOrderAgreesWithCentralDifferences) {
   using J = Jet<3, 1>;
   auto f = [](auto x, auto y, auto z) { return exp(x * 0.3) * sin(y) + sqrt(x * x + z * z) * atan(z); };

@@ -133,7 +133,8 @@ TEST(Allocation, BezierBSplineAndNurbsPointsToOrderTwoAllocateNothing) {
                                   : reference_point(net(5, 5), rational ? weights(5, 5) : WeightNet{}, kKnots, 3, u, v);
       for (int c = 0; c < 3; ++c) {
         EXPECT_NEAR(f[c], R[c].value(), 1e-14);
-        for (int i = 0; i < J22::kSize; ++i) EXPECT_NEAR(F[c][i], R[c][i], 1e-14 * (1 + std::fabs(R[c][i])));
+        // 5e-14: the Bezier pieces' differences and the reference's sums round differently (issue 27).
+        for (int i = 0; i < J22::kSize; ++i) EXPECT_NEAR(F[c][i], R[c][i], 5e-14 * (1 + std::fabs(R[c][i])));
       }
     }
   }

@@ -1,8 +1,10 @@
 // Tensor-product Bezier patch of degrees (n, m), polynomial or rational, on [0, 1]^2.
 //
 //   F(u,v) = sum_ij w_ij P_ij B_i^n(u) B_j^m(v) / sum_ij w_ij B_i^n(u) B_j^m(v)
-// (all w_ij = 1 without weights). Evaluated by de Casteljau in homogeneous coordinates, first
-// along v for each of the n + 1 rows, then along u, all in the number type T (style.md 3.4).
+// (all w_ij = 1 without weights). Doubles and jets are evaluated by the patch's Taylor expansion
+// in doubles (surface/bezier_piece.hpp, issue 27); other number types (intervals) by de
+// Casteljau in homogeneous coordinates, first along v for each of the n + 1 rows, then along u,
+// all in the number type T (style.md 3.4).
 // Control points P[i][j]: i = 0..n along u (outer index), j = 0..m along v (inner index).
 // Not periodic. Box: the box of the control points, which encloses the patch (convex hull
 // property, weights > 0).
@@ -14,6 +16,7 @@
 #include <vector>
 
 #include "ssimarch/core/vec3.hpp"
+#include "ssimarch/surface/bezier_piece.hpp"
 #include "ssimarch/surface/domain.hpp"
 #include "ssimarch/surface/spline_basis.hpp"
 
@@ -36,6 +39,18 @@ class BezierPatch {
 
   template <class T>
   Vec3T<T> point(const T& u, const T& v) const {
+    if constexpr (internal::TaylorEvaluable<T>::value) {
+      const internal::BezierPieceView piece{homogeneous_->data(), n_, m_, 0.0, 1.0, 0.0, 1.0};
+      if (rational_) return internal::piece_point<T, 4>(piece, u, v);
+      return internal::piece_point<T, 3>(piece, u, v);
+    }
+    return point_de_casteljau(u, v);
+  }
+
+  /// F(u, v) by de Casteljau in T: the evaluation of interval types, and the reference the
+  /// Taylor expansion is tested against.
+  template <class T>
+  Vec3T<T> point_de_casteljau(const T& u, const T& v) const {
     if (rational_) return eval<T, 4>(u, v);
     return eval<T, 3>(u, v);
   }

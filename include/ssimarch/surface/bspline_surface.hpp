@@ -7,10 +7,13 @@
 // the parameter is reduced into the domain before evaluating, so F(u + width, v) = F(u, v)
 // holds as a tracer that wraps across the seam assumes (issue 27: evaluated outside the
 // domain, the last span's polynomial continued the circle at another speed, and a curve
-// crossing a NURBS sphere's seam drifted off the surface). Evaluated by de Boor in homogeneous
-// coordinates, first along v on the p + 1 rows active in u, then along u, all in the number
-// type T; the knot span is chosen from primal(u), primal(v) (style.md 3.4), so a jet at a knot
-// gives the derivatives of the piece to the right of it (of the last piece at the domain end).
+// crossing a NURBS sphere's seam drifted off the surface). The knot span is chosen from
+// primal(u), primal(v) (style.md 3.4), so a jet at a knot gives the derivatives of the piece to
+// the right of it (of the last piece at the domain end). Doubles and jets are evaluated on the
+// span's Bezier piece, extracted once (surface/bezier_extraction.hpp), by its Taylor expansion
+// in doubles (surface/bezier_piece.hpp; issue 27: order-4 jets through de Boor were 80 % of a
+// NURBS trace); other number types (intervals), and surfaces too large to extract, by de Boor in
+// homogeneous coordinates, first along v on the p + 1 rows active in u, then along u, all in T.
 // Control points P[i][j]: i along u (outer index), j along v (inner index). Box: the box of the
 // control points (convex hull property, weights > 0).
 #pragma once
@@ -18,9 +21,11 @@
 #include <array>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "ssimarch/core/jet.hpp"
+#include "ssimarch/surface/bezier_extraction.hpp"
 #include "ssimarch/surface/bezier_patch.hpp"
 #include "ssimarch/surface/domain.hpp"
 #include "ssimarch/surface/spline_basis.hpp"
@@ -48,14 +53,33 @@ class BSplineSurface {
   template <class T>
   Vec3T<T> point(const T& u, const T& v) const {
     const T uu = into_period(u, domain_.u, domain_.periodic_u), vv = into_period(v, domain_.v, domain_.periodic_v);
-    if (rational_) return eval<T, 4>(uu, vv);
-    return eval<T, 3>(uu, vv);
+    if constexpr (internal::TaylorEvaluable<T>::value) {
+      if (data_->pieces) {
+        const internal::BezierPieceView piece =
+            data_->pieces->view(internal::find_span(data_->knots_u, p_, nu_, primal(uu)),
+                                internal::find_span(data_->knots_v, q_, nv_, primal(vv)));
+        if (rational_) return internal::piece_point<T, 4>(piece, uu, vv);
+        return internal::piece_point<T, 3>(piece, uu, vv);
+      }
+    }
+    return point_de_boor(uu, vv);
   }
+
+  /// F(u, v) by de Boor on the net, in T (no periodic reduction): the evaluation of interval
+  /// types, and the reference the Bezier pieces are tested and timed against.
+  template <class T>
+  Vec3T<T> point_de_boor(const T& u, const T& v) const {
+    if (rational_) return eval<T, 4>(u, v);
+    return eval<T, 3>(u, v);
+  }
+  /// Whether the Bezier pieces were extracted (false above kBezierExtractionBytes).
+  bool has_bezier_pieces() const { return data_->pieces.has_value(); }
 
  private:
   struct Data {
     std::vector<double> knots_u, knots_v;
     std::vector<std::array<double, 4>> homogeneous;  // row-major, (w x, w y, w z, w)
+    std::optional<internal::BezierExtraction> pieces;
   };
 
   // t moved by a whole number of periods into [lo, hi] (unchanged inside it, and where the
