@@ -39,12 +39,11 @@ class BezierPatch {
 
   template <class T>
   Vec3T<T> point(const T& u, const T& v) const {
-    if constexpr (internal::TaylorEvaluable<T>::value) {
-      const internal::BezierPieceView piece{homogeneous_->data(), n_, m_, 0.0, 1.0, 0.0, 1.0};
-      if (rational_) return internal::piece_point<T, 4>(piece, u, v);
-      return internal::piece_point<T, 3>(piece, u, v);
-    }
-    return point_de_casteljau(u, v);
+    if constexpr (internal::TaylorEvaluable<T>::value)
+      return internal::piece_point(internal::BezierPieceView{homogeneous_->data(), n_, m_, 0.0, 1.0, 0.0, 1.0},
+                                   rational_, u, v);
+    else
+      return point_de_casteljau(u, v);
   }
 
   /// F(u, v) by de Casteljau in T: the evaluation of interval types, and the reference the

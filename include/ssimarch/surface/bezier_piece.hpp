@@ -272,4 +272,10 @@ Vec3T<T> piece_point(const BezierPieceView& piece, const T& u, const T& v) {
   }
 }
 
+/// piece_point of a rational (D = 4) or polynomial (D = 3) piece.
+template <class T>
+Vec3T<T> piece_point(const BezierPieceView& piece, bool rational, const T& u, const T& v) {
+  return rational ? piece_point<T, 4>(piece, u, v) : piece_point<T, 3>(piece, u, v);
+}
+
 }  // namespace ssimarch::internal

@@ -54,13 +54,10 @@ class BSplineSurface {
   Vec3T<T> point(const T& u, const T& v) const {
     const T uu = into_period(u, domain_.u, domain_.periodic_u), vv = into_period(v, domain_.v, domain_.periodic_v);
     if constexpr (internal::TaylorEvaluable<T>::value) {
-      if (data_->pieces) {
-        const internal::BezierPieceView piece =
-            data_->pieces->view(internal::find_span(data_->knots_u, p_, nu_, primal(uu)),
-                                internal::find_span(data_->knots_v, q_, nv_, primal(vv)));
-        if (rational_) return internal::piece_point<T, 4>(piece, uu, vv);
-        return internal::piece_point<T, 3>(piece, uu, vv);
-      }
+      if (data_->pieces)
+        return internal::piece_point(data_->pieces->view(internal::find_span(data_->knots_u, p_, nu_, primal(uu)),
+                                                         internal::find_span(data_->knots_v, q_, nv_, primal(vv))),
+                                     rational_, uu, vv);
     }
     return point_de_boor(uu, vv);
   }
