@@ -87,10 +87,8 @@ void bezier_curve_taylor(std::span<std::array<double, D>> w, double t, int order
   const double s = 1.0 - t;
   const bool right = t <= 0.5;
   if (right) {
-    // In place, w[i] becomes b_i^(n-i): the control points of the piece on [t, 1].
-    for (int r = 1; r <= n; ++r)
-      for (int i = 0; i + r <= n; ++i)
-        for (std::size_t c = 0; c < D; ++c) w[i][c] = s * w[i][c] + t * w[i + 1][c];
+    // de Casteljau in place leaves w[i] = b_i^(n-i): the control points of the piece on [t, 1].
+    de_casteljau<double, D>(w, t);
   } else {
     // In place from the right, w[i] becomes b_0^i: the piece on [0, t], then reversed so that
     // both sides start at the point.
