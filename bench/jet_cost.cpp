@@ -2,7 +2,9 @@
 // curve jet of order 4 (what the tracer computes at every accepted point) and of one
 // linearisation (each corrector iteration), on Viviani's curve in its three forms and thesis
 // pair 1, plus points and jets of a bicubic NURBS surface on its Bezier pieces against de Boor
-// on its net (issue 27 item 1).
+// on its net (issue 27 item 1), and its interval enclosures (what the certified search
+// evaluates: an interval, a gradient over intervals, a nested one) from the pieces' restricted
+// control nets against de Boor run in the interval type, with the enclosures' widths (item 2).
 //
 //   jet_cost [--reps N]        (cmake --preset bench && cmake --build build-bench --target jet_cost)
 //
@@ -18,12 +20,15 @@
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "ssimarch/problem/closest_point.hpp"
 #include "ssimarch/problem/curve_jet.hpp"
 #include "ssimarch/problem/gauss_newton.hpp"
 #include "ssimarch/problem/problem.hpp"
+#include "ssimarch/start/gradient.hpp"
+#include "ssimarch/start/interval_number.hpp"
 #include "ssimarch/surface/bspline_surface.hpp"
 #include "testing/surface_pairs.hpp"
 
@@ -88,8 +93,8 @@ void nurbs_row(const char* name, const BSplineSurface& s, int reps, const T& u, 
   std::printf("| %s | %.0f | %.0f | %.1f |\n", name, pieces, de_boor, de_boor / pieces);
 }
 
-void nurbs_rows(int reps) {
-  // Bicubic rational B-spline, 6 x 6 control points, one interior knot each way.
+// Bicubic rational B-spline, 6 x 6 control points, two interior knots each way.
+BSplineSurface bicubic_nurbs() {
   const std::vector<double> U{0, 0, 0, 0, 0.4, 0.7, 1, 1, 1, 1};
   ControlNet P(6, std::vector<Vec3>(6));
   WeightNet W(6, std::vector<double>(6));
@@ -98,7 +103,11 @@ void nurbs_rows(int reps) {
       P[i][j] = Vec3(static_cast<double>(i), static_cast<double>(j), std::sin(static_cast<double>(i + 2 * j)));
       W[i][j] = 1.0 + 0.1 * static_cast<double>((i + j) % 3);
     }
-  const BSplineSurface s(3, 3, U, U, P, W);
+  return BSplineSurface(3, 3, U, U, P, W);
+}
+
+void nurbs_rows(int reps) {
+  const BSplineSurface s = bicubic_nurbs();
   const double u0 = 0.55, v0 = 0.3;
   std::printf("\n| bicubic NURBS point (ns) | Bezier pieces | de Boor | ratio |\n|---|---|---|---|\n");
   nurbs_row("double", s, reps, u0, v0);
@@ -125,6 +134,43 @@ void nurbs_rows(int reps) {
   nurbs_row("Jet<4,1> (linearisation)", s, reps, L::variable(2, u0), L::variable(3, v0));
 }
 
+// One interval type on a box of half-width h around (u0, v0): time per call and the width of
+// the z enclosure's value, restricted control nets against de Boor in the interval type (de Boor
+// chooses its span from the box's midpoint: sound only inside one knot span).
+template <class T>
+void interval_row(const char* name, const BSplineSurface& s, int reps, double u0, double v0, double h) {
+  using I = IntervalNumber;
+  T u, v;
+  if constexpr (std::is_same_v<T, I>) {
+    u = I(u0 - h, u0 + h);
+    v = I(v0 - h, v0 + h);
+  } else if constexpr (std::is_same_v<T, Gradient<I, 2>>) {
+    u = T(I(u0 - h, u0 + h), 0);
+    v = T(I(v0 - h, v0 + h), 1);
+  } else {
+    u = T(Gradient<I, 2>(I(u0 - h, u0 + h), 0), 0);
+    v = T(Gradient<I, 2>(I(v0 - h, v0 + h), 1), 1);
+  }
+  const auto width = [](const auto& z) { return internal::innermost(z).width(); };
+  const double nets = ns_per_call(reps, 200, [&] { g_sink = primal(s.point(u, v).z); });
+  const double de_boor = ns_per_call(reps, 200, [&] { g_sink = primal(s.point_de_boor(u, v).z); });
+  std::printf("| %s, h = %g | %.0f | %.0f | %.2g | %.2g |\n", name, h, nets, de_boor, width(s.point(u, v).z),
+              width(s.point_de_boor(u, v).z));
+}
+
+void interval_rows(int reps) {
+  const BSplineSurface s = bicubic_nurbs();
+  std::printf(
+      "\n| bicubic NURBS on a box inside one span (ns) | control nets | de Boor in T | z width, nets | "
+      "z width, de Boor |\n|---|---|---|---|---|\n");
+  using I = IntervalNumber;
+  for (double h : {0.1, 0.01, 0.001}) {
+    interval_row<I>("interval", s, reps, 0.55, 0.55, h);
+    interval_row<Gradient<I, 2>>("Gradient<I,2>", s, reps, 0.55, 0.55, h);
+    interval_row<Gradient<Gradient<I, 2>, 2>>("nested gradient", s, reps, 0.55, 0.55, h);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -133,5 +179,6 @@ int main(int argc, char** argv) {
     if (std::strcmp(argv[i], "--reps") == 0 && i + 1 < argc) reps = std::max(1, std::atoi(argv[++i]));
   problem_rows(reps);
   nurbs_rows(reps);
+  interval_rows(reps);
   return 0;
 }

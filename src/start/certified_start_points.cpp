@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "ssimarch/core/progress.hpp"
 #include "ssimarch/core/thread_pool.hpp"
@@ -176,6 +177,22 @@ IntervalBox to_unknowns(const System& s, const IntervalBox& y) {
   for (std::size_t i = 0, j = 0; i <= y.size(); ++i)
     x.push_back(static_cast<int>(i) == s.fixed ? IntervalNumber(s.at) : y[j++]);
   return x;
+}
+
+// A boundary face x_fixed = at of a parametric-implicit pair that the parametric surface maps
+// into one point to within `tolerance` (a pole: a sphere's or a cone's collapsed row). Its system
+// is H of that point over the whole face: no root, or the whole face (a continuum the search
+// cannot decide: it spent its budget there, issue 27). Every branch that meets the face passes
+// within the tolerance of the face's middle, so a candidate start point there decides the system.
+// The interval enclosure of the surface over the face, not a sampled test, says it is one point.
+std::optional<VecX> collapsed_face(const Problem& P, const System& s, double tolerance) {
+  if (P.kind() != PairKind::kParametricImplicit || s.fixed < 0) return std::nullopt;
+  const IntervalBox x = to_unknowns(s, s.box);
+  const Vec3T<IntervalNumber> p = P.point(x.data());
+  if (!(std::max({p.x.width(), p.y.width(), p.z.width()}) <= tolerance)) return std::nullopt;
+  VecX mid(static_cast<Eigen::Index>(x.size()));
+  for (std::size_t i = 0; i < x.size(); ++i) mid[static_cast<Eigen::Index>(i)] = x[i].mid();
+  return mid;
 }
 
 // Undecided boxes that touch merged into their hulls (a singular root leaves a cluster of them).
@@ -478,12 +495,12 @@ std::vector<std::vector<Interval>> singular_point_regions(const Problem& P, long
   return regions;
 }
 
-bool evaluates_on_intervals(const Surface& surface) {
-  if (surface.get_if<Capsule>()) return false;
-  if (const auto* b = surface.get_if<BSplineSurface>())
-    return b->knots_u().size() == 2 * static_cast<std::size_t>(b->degree_u() + 1) &&
-           b->knots_v().size() == 2 * static_cast<std::size_t>(b->degree_v() + 1);
-  return true;
+bool evaluates_on_intervals(const Surface& surface) { return interval_refusal(surface).empty(); }
+
+std::string interval_refusal(const Surface& surface) {
+  if (surface.get_if<Capsule>()) return "a capsule's pieces are chosen from the midpoint of a box";
+  if (const auto* b = surface.get_if<BSplineSurface>()) return b->interval_refusal();
+  return "";
 }
 
 std::vector<VecX> certified_start_points(const Tracer& tracer, TraceStats* stats, StartPointSearch* search) {
@@ -500,7 +517,11 @@ std::vector<VecX> certified_start_points(const Tracer& tracer, TraceStats* stats
   for (System& t : trim_face_systems(P)) boundary.push_back(std::move(t));
   std::vector<System> first{turning_system(P, 0)};
   std::vector<RootSearchResult> found(boundary.size() + 1);
+  std::vector<std::optional<VecX>> collapsed(boundary.size());
+  for (std::size_t i = 0; i < boundary.size(); ++i)
+    collapsed[i] = collapsed_face(P, boundary[i], tracer.options().tolerance);
   parallel_for(found.size(), [&](std::size_t i) {
+    if (i < boundary.size() && collapsed[i]) return;
     const System& s = i < boundary.size() ? boundary[i] : first[0];
     found[i] = find_all_roots(s.equations, s.box, ro);
   });
@@ -512,6 +533,10 @@ std::vector<VecX> certified_start_points(const Tracer& tracer, TraceStats* stats
   report_progress("start points", solved, systems);
   long saddle_boxes = 0;
   for (std::size_t i = 0; i < boundary.size(); ++i) {
+    if (collapsed[i]) {
+      out.add(*collapsed[i], true);
+      continue;
+    }
     const bool decided =
         out.take(boundary[i], found[i]) || decide_clusters(boundary[i], found[i], ro, false, &out, &saddle_boxes);
     if (!decided) out.report(boundary[i], found[i]);
@@ -559,20 +584,45 @@ std::vector<VecX> certified_start_points(const Tracer& tracer, TraceStats* stats
   return std::move(out.points);
 }
 
+namespace {
+
+bool multi_piece_bspline(const Surface& s) {
+  const auto* b = s.get_if<BSplineSurface>();
+  return b && (b->knots_u().size() > 2 * static_cast<std::size_t>(b->degree_u() + 1) ||
+               b->knots_v().size() > 2 * static_cast<std::size_t>(b->degree_v() + 1));
+}
+
+// Why the certified search is not run on this pair (empty: it is). A B-spline of several pieces
+// against another parametric surface is enclosed soundly (surface/piece_enclosure.hpp), but the
+// four-unknown turning systems spend the box budget on every NURBS peers case measured (2-5 s
+// each where sampling takes 30-90 ms, none certified: a sphere's collapsed pole row is a continuum
+// of parameter preimages, a torus or cone pair leaves the whole domain undecided; issue 27 item
+// 2, docs/benchmarks.md), so such pairs keep sampling until that search is made effective.
+std::string certified_search_refusal(const Problem& P) {
+  for (const Surface* s : {&P.first(), &P.second()})
+    if (!evaluates_on_intervals(*s))
+      return std::string("a ") + std::string(s->type_name()) + " surface does not evaluate on intervals (" +
+             interval_refusal(*s) + ")";
+  if (P.kind() == PairKind::kParametricParametric &&
+      (multi_piece_bspline(P.first()) || multi_piece_bspline(P.second())))
+    return "the certified search is not run on two parametric surfaces with a B-spline of several pieces (its "
+           "four-unknown systems spend the box budget)";
+  return "";
+}
+
+}  // namespace
+
 std::vector<VecX> automatic_start_points(const Tracer& tracer, TraceStats* stats, StartPointSearch* search) {
   const Problem& P = tracer.problem();
-  if (tracer.options().certified_start_points && evaluates_on_intervals(P.first()) &&
-      evaluates_on_intervals(P.second()))
-    return certified_start_points(tracer, stats, search);
+  const std::string refusal = certified_search_refusal(P);
+  if (tracer.options().certified_start_points && refusal.empty()) return certified_start_points(tracer, stats, search);
   const auto t0 = std::chrono::steady_clock::now();
   search->method = StartSearchMethod::kSampling;
   search->certified = false;
   if (!tracer.options().certified_start_points)
     search->note = "sampling asked for (certified_start_points = false): not every branch is guaranteed";
   else
-    search->note = std::string("a ") +
-                   std::string(evaluates_on_intervals(P.first()) ? P.second().type_name() : P.first().type_name()) +
-                   " surface does not evaluate on intervals: start points by sampling, not every branch is guaranteed";
+    search->note = refusal + ": start points by sampling, not every branch is guaranteed";
   std::vector<VecX> points = find_start_points(tracer, stats);
   search->time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return points;

@@ -135,6 +135,16 @@ BSplineSurface::BSplineSurface(int degree_u, int degree_v, std::vector<double> k
   data_ = std::move(data);
   domain_.periodic_u = edges_coincide(0);
   domain_.periodic_v = edges_coincide(1);
+  if (data_->pieces)
+    kink_ =
+        internal::first_kink(*data_->pieces, data_->knots_u, data_->knots_v, domain_.periodic_u, domain_.periodic_v);
+}
+
+std::string BSplineSurface::interval_refusal() const {
+  if (!data_->pieces)
+    return "its Bezier pieces would take more than " + std::to_string(internal::kBezierExtractionBytes >> 20) +
+           " MiB (kBezierExtractionBytes)";
+  return kink_ ? kink_->describe() : std::string();
 }
 
 // closes_seam's sampled test (surface/degenerate_edges.cpp), on the patch itself: the two edges

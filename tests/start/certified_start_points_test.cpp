@@ -7,7 +7,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
+#include "testing/nurbs_sphere.hpp"
 #include "testing/surface_pairs.hpp"
 #include "testing/simpson.hpp"
 #include "ssimarch/trace/trace_all.hpp"
@@ -191,6 +193,51 @@ TEST(CertifiedStartPoints, CapsuleFallsBackToSamplingAndSaysSo) {
   EXPECT_EQ(r.start_search.method, StartSearchMethod::kSampling);
   EXPECT_NE(r.start_search.note.find("capsule"), std::string::npos);
   EXPECT_EQ(r.curves.size(), 1u);
+}
+
+// B-spline surfaces of several pieces are searched with a certificate against implicit surfaces
+// (surface/piece_enclosure.hpp, issue 27 item 2): the rational sphere (4 x 2 pieces, C0 knots
+// that are C1 arcs, a closed seam, two collapsed pole rows) cut by the plane z = 1/2 in a circle
+// of radius sqrt(3)/2.
+TEST(CertifiedStartPoints, NurbsSphereAgainstAPlaneIsCertified) {
+  const Problem P(testing::nurbs_sphere(1, 2), Plane(Vec3(0, 0, 0.5), Vec3::UnitZ(), {{-2, 2}, {-2, 2}}),
+                  PairKind::kParametricImplicit);
+  const TraceResult r = trace_all(P, TraceOptions{});
+  EXPECT_EQ(r.start_search.method, StartSearchMethod::kCertified);
+  EXPECT_TRUE(r.start_search.certified) << r.start_search.note;
+  ASSERT_EQ(r.curves.size(), 1u);
+  EXPECT_TRUE(r.curves[0].closed);
+  EXPECT_NEAR(r.curves[0].length, 2 * std::numbers::pi * std::sqrt(0.75), 1e-8);
+}
+
+// The plane z = 1 + x through the sphere's north pole, a circle of radius 1/sqrt(2): the pole row
+// is a face that the sphere maps to one point on the plane, a continuum of roots of its boundary
+// system on which the search spent its whole budget; it is decided by a start point there
+// (collapsed_face), so no boundary system is left uncertain. The turning systems' roots at the
+// pole are singular (F_u vanishes on the row) and stay undecided: no certificate, said so.
+TEST(CertifiedStartPoints, APoleRowOnTheOtherSurfaceIsDecidedByAStartPointThere) {
+  const Problem P(testing::nurbs_sphere(1, 2), Plane(Vec3(0, 0, 1), Vec3(-1, 0, 1).normalized(), {{-2, 2}, {-2, 2}}),
+                  PairKind::kParametricImplicit);
+  const TraceResult r = trace_all(P, TraceOptions{});
+  EXPECT_EQ(r.start_search.method, StartSearchMethod::kCertified);
+  for (const UncertainRegion& u : r.start_search.uncertain_regions)
+    EXPECT_EQ(u.system.find("boundary"), std::string::npos) << u.system;
+  ASSERT_EQ(r.curves.size(), 1u);
+  EXPECT_TRUE(r.curves[0].closed);
+  EXPECT_NEAR(r.curves[0].length, std::numbers::pi * std::sqrt(2.0), 1e-8);
+}
+
+// Two parametric surfaces with a B-spline of several pieces: its four-unknown systems spent the
+// box budget on every NURBS peers case measured, so sampling, and the note says why.
+TEST(CertifiedStartPoints, TwoParametricSurfacesWithAMultiPieceBSplineAreSampledAndSaySo) {
+  const Problem P(testing::nurbs_sphere(1, 2), parametric("u", "v", "0.5", {-2, 2}, {-2, 2}),
+                  PairKind::kParametricParametric);
+  const TraceResult r = trace_all(P, TraceOptions{});
+  EXPECT_EQ(r.start_search.method, StartSearchMethod::kSampling);
+  EXPECT_NE(r.start_search.note.find("four-unknown"), std::string::npos) << r.start_search.note;
+  double length = 0;
+  for (const TracedCurve& curve : r.curves) length += curve.length;
+  EXPECT_NEAR(length, 2 * std::numbers::pi * std::sqrt(0.75), 1e-8);
 }
 
 // The plane z = v / 2 over (u, v) in [-2, 2]^2 against the cylinder x^2 + y^2 = 1 trimmed to

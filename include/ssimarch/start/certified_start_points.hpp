@@ -20,6 +20,7 @@
 // candidate start points and reported as uncertain regions.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "ssimarch/march/result.hpp"
@@ -30,9 +31,13 @@
 
 namespace ssimarch {
 
-/// Whether the surface's point/value evaluated on intervals encloses its true range: false for
-/// forms that branch on the midpoint (capsules; B-spline surfaces with more than one knot span).
+/// Whether the surface's point/value evaluated on intervals encloses its true range and its
+/// derivatives' (what the certified search needs): false for forms that branch on the midpoint
+/// (capsules), B-splines too large to extract into Bezier pieces, and B-splines that are not C1
+/// across a knot line or seam (surface/knot_line_continuity.hpp).
 bool evaluates_on_intervals(const Surface& surface);
+/// Why not (one phrase; empty when it does).
+std::string interval_refusal(const Surface& surface);
 
 /// The roots of the boundary system x_i = lo_i (upper: hi_i) and its undecided boxes, as boxes
 /// of all n unknowns (x_i a point interval). Empty for the upper end of a periodic x_i.

@@ -2,9 +2,11 @@
 //
 //   F(u,v) = sum_ij w_ij P_ij B_i^n(u) B_j^m(v) / sum_ij w_ij B_i^n(u) B_j^m(v)
 // (all w_ij = 1 without weights). Doubles and jets are evaluated by the patch's Taylor expansion
-// in doubles (surface/bezier_piece.hpp, issue 27); other number types (intervals) by de
-// Casteljau in homogeneous coordinates, first along v for each of the n + 1 rows, then along u,
-// all in the number type T (style.md 3.4).
+// in doubles (surface/bezier_piece.hpp, issue 27); interval types by the hull of the control
+// net restricted to their box (surface/piece_enclosure.hpp, issue 27 item 2: de Casteljau in the
+// interval type widened exponentially with the degree); other number types by de Casteljau in
+// homogeneous coordinates, first along v for each of the n + 1 rows, then along u, all in the
+// number type T (style.md 3.4).
 // Control points P[i][j]: i = 0..n along u (outer index), j = 0..m along v (inner index).
 // Not periodic. Box: the box of the control points, which encloses the patch (convex hull
 // property, weights > 0).
@@ -18,6 +20,7 @@
 #include "ssimarch/core/vec3.hpp"
 #include "ssimarch/surface/bezier_piece.hpp"
 #include "ssimarch/surface/domain.hpp"
+#include "ssimarch/surface/piece_enclosure.hpp"
 #include "ssimarch/surface/spline_basis.hpp"
 
 namespace ssimarch {
@@ -42,6 +45,9 @@ class BezierPatch {
     if constexpr (internal::TaylorEvaluable<T>::value)
       return internal::piece_point(internal::BezierPieceView{homogeneous_->data(), n_, m_, 0.0, 1.0, 0.0, 1.0},
                                    rational_, u, v);
+    else if constexpr (internal::Enclosure<T>::value)
+      return internal::enclose_on_pieces(internal::PieceGrid{kUnitBreaks, kUnitBreaks, homogeneous_->data(), n_, m_},
+                                         rational_, u, v);
     else
       return point_de_casteljau(u, v);
   }
@@ -72,6 +78,7 @@ class BezierPatch {
     else return {q[0], q[1], q[2]};
   }
 
+  static constexpr std::array<double, 2> kUnitBreaks{0.0, 1.0};
   int n_ = 0, m_ = 0;
   bool rational_ = false;
   std::shared_ptr<const std::vector<std::array<double, 4>>> homogeneous_;  // row-major, (w x, w y, w z, w)

@@ -12,8 +12,10 @@
 // the right of it (of the last piece at the domain end). Doubles and jets are evaluated on the
 // span's Bezier piece, extracted once (surface/bezier_extraction.hpp), by its Taylor expansion
 // in doubles (surface/bezier_piece.hpp; issue 27: order-4 jets through de Boor were 80 % of a
-// NURBS trace); other number types (intervals), and surfaces too large to extract, by de Boor in
-// homogeneous coordinates, first along v on the p + 1 rows active in u, then along u, all in T.
+// NURBS trace); interval types (the certified search) are enclosed over their box by the control
+// nets of the pieces the box meets, restricted to it (surface/piece_enclosure.hpp, issue 27 item
+// 2); other number types, and surfaces too large to extract, by de Boor in homogeneous
+// coordinates, first along v on the p + 1 rows active in u, then along u, all in T.
 // Control points P[i][j]: i along u (outer index), j along v (inner index). Box: the box of the
 // control points (convex hull property, weights > 0).
 #pragma once
@@ -22,12 +24,15 @@
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "ssimarch/core/jet.hpp"
 #include "ssimarch/surface/bezier_extraction.hpp"
 #include "ssimarch/surface/bezier_patch.hpp"
 #include "ssimarch/surface/domain.hpp"
+#include "ssimarch/surface/knot_line_continuity.hpp"
+#include "ssimarch/surface/piece_enclosure.hpp"
 #include "ssimarch/surface/spline_basis.hpp"
 
 namespace ssimarch {
@@ -58,9 +63,22 @@ class BSplineSurface {
         return internal::piece_point(data_->pieces->view(internal::find_span(data_->knots_u, p_, nu_, primal(uu)),
                                                          internal::find_span(data_->knots_v, q_, nv_, primal(vv))),
                                      rational_, uu, vv);
+    } else if constexpr (internal::Enclosure<T>::value) {
+      if (data_->pieces) {
+        const internal::BezierExtraction& x = *data_->pieces;
+        return internal::enclose_on_pieces(
+            internal::PieceGrid{x.breaks_u, x.breaks_v, x.nets.data(), p_, q_, domain_.periodic_u, domain_.periodic_v},
+            rational_, uu, vv);
+      }
     }
     return point_de_boor(uu, vv);
   }
+
+  /// Whether interval types get sound enclosures (the certified search may run on this surface):
+  /// the pieces were extracted and the surface is C1 across every knot line and closed seam
+  /// (surface/knot_line_continuity.hpp). Otherwise interval_refusal() says why.
+  bool encloses_on_intervals() const { return data_->pieces.has_value() && !kink_; }
+  std::string interval_refusal() const;
 
   /// F(u, v) by de Boor on the net, in T (no periodic reduction): the evaluation of interval
   /// types, and the reference the Bezier pieces are tested and timed against.
@@ -115,6 +133,7 @@ class BSplineSurface {
   int p_ = 0, q_ = 0, nu_ = 0, nv_ = 0;
   bool rational_ = false;
   std::shared_ptr<const Data> data_;
+  std::optional<internal::KnotLineKink> kink_;
   ParamDomain domain_;
   Box box_;
 };
