@@ -123,8 +123,9 @@ IntervalNumber hull(const IntervalNumber& a, const IntervalNumber& b);
 IntervalNumber intersect(const IntervalNumber& a, const IntervalNumber& b, bool* empty);
 
 /// Generic code may branch on the midpoint only (core/jet.hpp, "primal value"); surfaces that
-/// do (capsule, B-spline spans) are not evaluated on intervals (evaluates_on_intervals,
-/// start/certified_start_points.hpp).
+/// do (capsules) are not evaluated on intervals (evaluates_on_intervals,
+/// start/certified_start_points.hpp); B-splines cut the box at their knot lines instead
+/// (surface/piece_enclosure.hpp).
 inline double primal(const IntervalNumber& x) { return x.mid(); }
 
 IntervalNumber sqrt(const IntervalNumber& a);
