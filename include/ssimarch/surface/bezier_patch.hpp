@@ -52,8 +52,8 @@ class BezierPatch {
       return point_de_casteljau(u, v);
   }
 
-  /// F(u, v) by de Casteljau in T: the evaluation of interval types, and the reference the
-  /// Taylor expansion is tested against.
+  /// F(u, v) by de Casteljau in T: the reference the Taylor expansion and the control-net
+  /// enclosures are tested against.
   template <class T>
   Vec3T<T> point_de_casteljau(const T& u, const T& v) const {
     if (rational_) return eval<T, 4>(u, v);

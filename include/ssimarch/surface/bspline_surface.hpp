@@ -80,8 +80,9 @@ class BSplineSurface {
   bool encloses_on_intervals() const { return data_->pieces.has_value() && !kink_; }
   std::string interval_refusal() const;
 
-  /// F(u, v) by de Boor on the net, in T (no periodic reduction): the evaluation of interval
-  /// types, and the reference the Bezier pieces are tested and timed against.
+  /// F(u, v) by de Boor on the net, in T (no periodic reduction): the evaluation of surfaces
+  /// too large to extract, and the reference the Bezier pieces and their enclosures are tested and
+  /// timed against (its span is chosen from the midpoint: not an enclosure across a knot line).
   template <class T>
   Vec3T<T> point_de_boor(const T& u, const T& v) const {
     if (rational_) return eval<T, 4>(u, v);

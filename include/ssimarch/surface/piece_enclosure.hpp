@@ -111,7 +111,7 @@ struct PartEnclosure {
 /// subdivision divides by a length >= 1/2: right part at s0 then left at (s1 - s0) / (1 - s0)
 /// when s0 <= 1/2, else left at s1 then right at s0 / s1.
 template <class I>
-void restrict_curve(I* b, std::ptrdiff_t stride, int n, const I& s0, const I& s1, bool s0_in_left_half) {
+void restrict_curve(I* b, std::ptrdiff_t stride, int n, const I& s0, const I& s1) {
   const auto at = [b, stride](int i) -> I& { return b[static_cast<std::ptrdiff_t>(i) * stride]; };
   const auto keep_right = [&](const I& t) {
     const I s = I(1.0) - t;
@@ -123,7 +123,7 @@ void restrict_curve(I* b, std::ptrdiff_t stride, int n, const I& s0, const I& s1
     for (int r = 1; r <= n; ++r)
       for (int i = n; i >= r; --i) at(i) = s * at(i - 1) + t * at(i);
   };
-  if (s0_in_left_half) {
+  if (s0.hi() <= 0.5) {
     keep_right(s0);
     keep_left((s1 - s0) / (I(1.0) - s0));
   } else {
@@ -160,8 +160,8 @@ I hodograph_hull(const BezierPieceView& piece, std::size_t c, int a, int b, cons
       net[static_cast<std::size_t>(i * (m + 1) + j)] = sum;
     }
   const I &s0 = local[0], &s1 = local[1], &t0 = local[2], &t1 = local[3];
-  for (int i = 0; i <= n; ++i) restrict_curve(net.data() + i * (m + 1), 1, m, t0, t1, t0.hi() <= 0.5);
-  for (int j = 0; j <= m; ++j) restrict_curve(net.data() + j, m + 1, n, s0, s1, s0.hi() <= 0.5);
+  for (int i = 0; i <= n; ++i) restrict_curve(net.data() + i * (m + 1), 1, m, t0, t1);
+  for (int j = 0; j <= m; ++j) restrict_curve(net.data() + j, m + 1, n, s0, s1);
   double lo = net[0].lo(), hi = net[0].hi();
   for (const I& x : net) {
     lo = std::min<double>(lo, x.lo());
@@ -186,8 +186,8 @@ bool projected_hull(const BezierPieceView& piece, const std::array<I, 4>& local,
   for (std::size_t c = 0; c < 4; ++c) {
     I* net = all.data() + c * size;
     for (std::size_t k = 0; k < size; ++k) net[k] = I(piece.net[k][c]);
-    for (int i = 0; i <= n; ++i) restrict_curve(net + i * (m + 1), 1, m, local[2], local[3], local[2].hi() <= 0.5);
-    for (int j = 0; j <= m; ++j) restrict_curve(net + j, m + 1, n, local[0], local[1], local[0].hi() <= 0.5);
+    for (int i = 0; i <= n; ++i) restrict_curve(net + i * (m + 1), 1, m, local[2], local[3]);
+    for (int j = 0; j <= m; ++j) restrict_curve(net + j, m + 1, n, local[0], local[1]);
   }
   for (std::size_t k = 0; k < size; ++k)
     if (!(all[3 * size + k].lo() > 0)) return false;
