@@ -16,6 +16,7 @@
 #include "ssimarch/analytic/conic_pieces.hpp"
 #include "ssimarch/march/arc_length.hpp"
 #include "ssimarch/march/tracer.hpp"
+#include "ssimarch/pipeline/edge_surface_points.hpp"
 #include "ssimarch/problem/gauss_newton.hpp"
 
 namespace ssimarch {
@@ -113,6 +114,65 @@ std::optional<CurvePoint> crossing(const Clipper& c, const CurvePoint& a, const 
   return CurvePoint{c.problem.wrap(x_best), c.problem.point(x_best), t.norm() > 0 ? Vec3(t.normalized()) : a.t};
 }
 
+// Curve points added around the boundary points that fall between two traced points (between
+// consecutive ones and the segment's ends), so that each crossing shows as a change of side
+// between consecutive points, found by `crossing` like any other: a curve that enters and leaves
+// a hole, or cuts a face's corner, within one step (issue 28 item 2). A boundary point q belongs to the segment (a, b)
+// whose chord is nearest to it, within a quarter of the chord (a step turns the tangent by less than a radian, so its
+// sagitta is below chord / 8) or the band; its place along the segment is its projection on the chord, and the new
+// point is the curve's point on the plane across the chord halfway between two such places.
+TracedCurve with_points_between(const Clipper& c, const TracedCurve& curve, const std::vector<Vec3>& boundary_points) {
+  const std::size_t n = curve.points.size();
+  if (boundary_points.empty() || n < 2) return curve;
+  std::vector<std::vector<double>> at(n - 1);  // chord parameters of the boundary points per segment
+  for (const Vec3& q : boundary_points) {
+    double best = std::numeric_limits<double>::infinity(), best_t = 0;
+    std::size_t best_i = n;
+    for (std::size_t i = 0; i + 1 < n; ++i) {
+      const Vec3 a = curve.points[i].p, d = curve.points[i + 1].p - a;
+      if (!(d.squaredNorm() > 0)) continue;
+      const double t = std::clamp((q - a).dot(d) / d.squaredNorm(), 0.0, 1.0);
+      const double dist = (a + t * d - q).norm();
+      if (dist < best && dist <= 0.25 * d.norm() + kBoundaryBand * c.scale) best = dist, best_t = t, best_i = i;
+    }
+    // At a traced point (within the band of it) the point itself shows the crossing.
+    if (best_i < n && (q - curve.points[best_i].p).norm() > kBoundaryBand * c.scale &&
+        (q - curve.points[best_i + 1].p).norm() > kBoundaryBand * c.scale)
+      at[best_i].push_back(best_t);
+  }
+  TracedCurve out = curve;
+  out.points.clear();
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    const CurvePoint& a = curve.points[i];
+    const CurvePoint& b = curve.points[i + 1];
+    out.points.push_back(a);
+    std::vector<double>& t = at[i];
+    if (t.empty()) continue;
+    // The ends too: a traced point on the boundary (where a face's rim ends the curve) has no side.
+    t.push_back(0.0);
+    t.push_back(1.0);
+    std::sort(t.begin(), t.end());
+    const Vec3 d = b.p - a.p;
+    const Vec3 normal = d.normalized();
+    const VecX dx = c.problem.difference(a.x, b.x);
+    for (std::size_t k = 0; k + 1 < t.size(); ++k) {
+      const double mid = 0.5 * (t[k] + t[k + 1]);
+      const CorrectorResult r =
+          solve_on_plane(c.problem, a.x + mid * dx, normal, normal.dot(a.p + mid * d), c.corrector);
+      if (r.status != CorrectorStatus::kConverged) continue;
+      const Vec3 p = c.problem.point(r.x);
+      const double along = (p - a.p).dot(d) / d.squaredNorm();
+      if (!(along > t[k] && along < t[k + 1])) continue;
+      const Linearization L = c.problem.linearize(r.x);
+      Vec3 tangent = L.normal_first.cross(L.normal_second);
+      if (tangent.dot(d) < 0) tangent = -tangent;
+      out.points.push_back({c.problem.wrap(r.x), p, tangent.norm() > 0 ? Vec3(tangent.normalized()) : a.t});
+    }
+  }
+  out.points.push_back(curve.points.back());
+  return out;
+}
+
 double length_of(const TracedCurve& c) {
   double length = 0;
   for (std::size_t i = 0; i + 1 < c.points.size(); ++i)
@@ -153,6 +213,34 @@ void keep_runs_along_boundary(const Clipper& c, const std::vector<Phi>& at, std:
   }
 }
 
+// Traced points on the boundary itself, to crossing()'s accuracy (a curve ending where the face
+// ends, the rim of a cylinder face; a crossing at a traced point), alone in the band (a run of
+// two or more is keep_runs_along_boundary's): their sign says nothing, so each takes its
+// neighbours' side, and one between two different sides is the crossing. Returns the crossings;
+// f is changed so that no sign change is seen next to them.
+std::vector<bool> traced_crossings(const Clipper& c, const TracedCurve& curve, const std::vector<Phi>& at,
+                                   std::vector<double>* f) {
+  const std::size_t n = f->size();
+  const double on = 1e3 * 1e-13 * c.scale, band = kBoundaryBand * c.scale;
+  std::vector<bool> out(n, false);
+  const auto m = static_cast<std::ptrdiff_t>(n);
+  auto index = [&](std::ptrdiff_t k) -> std::optional<std::size_t> {  // a closed curve wraps
+    if (curve.closed) k = (k % (m - 1) + (m - 1)) % (m - 1);
+    if (k < 0 || k >= m) return std::nullopt;
+    return static_cast<std::size_t>(k);
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!(std::abs(at[i].value) <= on)) continue;
+    const auto k = static_cast<std::ptrdiff_t>(i);
+    const std::optional<std::size_t> before = index(k - 1), after = index(k + 1);
+    if ((before && std::abs(at[*before].value) <= band) || (after && std::abs(at[*after].value) <= band)) continue;
+    out[i] = before && after && ((*f)[*before] > 0) != ((*f)[*after] > 0);
+    const double kept = after ? (*f)[*after] : before ? (*f)[*before] : (*f)[i];
+    (*f)[i] = std::copysign(std::numeric_limits<double>::min(), kept);
+  }
+  return out;
+}
+
 // The points of curve `curve` with the crossings inserted (a closed curve rotated to start at
 // its first crossing, and then open). *crossings counts them; runs along a boundary go to *along.
 std::vector<Marked> mark(const Clipper& c, const TracedCurve& curve, int* crossings, AlongBoundary* along) {
@@ -164,10 +252,17 @@ std::vector<Marked> mark(const Clipper& c, const TracedCurve& curve, int* crossi
     f.push_back(at.back().value);
   }
   keep_runs_along_boundary(c, at, &f, along);
+  const std::vector<bool> on_boundary = traced_crossings(c, curve, at, &f);
   bool inside = f.front() > 0;
   *crossings = 0;
   for (std::size_t i = 0; i < curve.points.size(); ++i) {
-    if (i > 0 && (f[i] > 0) != (f[i - 1] > 0)) {
+    if (on_boundary[i]) {
+      out.push_back({curve.points[i], false, true, at[i].region});
+      inside = f[i] > 0;
+      ++*crossings;
+      continue;
+    }
+    if (i > 0 && !on_boundary[i - 1] && (f[i] > 0) != (f[i - 1] > 0)) {
       int region = -1;
       if (auto x = crossing(c, curve.points[i - 1], curve.points[i], f[i - 1], f[i], &region)) {
         out.push_back({*x, true, true, region});
@@ -279,12 +374,20 @@ void clip_to_regions(const std::array<const FaceRegion*, 2>& regions, Intersecti
   if (!regions[0] && !regions[1]) return;
   const Problem& P = run->problem;
   const Clipper c{P, regions, CorrectorOptions{run->used.options.tolerance, 20}, P.scale()};
+  std::vector<Vec3> boundary_points;
+  const EdgeSurfaceTolerances edge{run->used.options.tolerance, kBoundaryBand * c.scale};
+  for (std::size_t k = 0; k < 2; ++k)
+    if (regions[k] && !run->result.curves.empty()) {
+      const std::vector<Vec3> on = edge_surface_points(*regions[k], k == 0 ? P.second() : P.first(), edge);
+      boundary_points.insert(boundary_points.end(), on.begin(), on.end());
+    }
   std::vector<TracedCurve> kept;
   std::vector<Conic> conics;
   std::vector<std::vector<int>> new_index(run->result.curves.size());
   AlongBoundary along;
   for (std::size_t i = 0; i < run->result.curves.size(); ++i) {
-    for (TracedCurve& piece : pieces(c, run->result.curves[i], &along)) {
+    const TracedCurve curve = with_points_between(c, run->result.curves[i], boundary_points);
+    for (TracedCurve& piece : pieces(c, curve, &along)) {
       new_index[i].push_back(static_cast<int>(kept.size()));
       if (i < run->conics.size()) {
         conics.push_back(conic_piece(run->conics[i], piece));

@@ -81,6 +81,12 @@ class StepFaceRegion final : public FaceRegion {
     }
     return out;
   }
+  int boundary_curves() const override { return static_cast<int>(edges_.size()); }
+  std::array<double, 2> boundary_range(int i) const override {
+    const EdgePiece& e = edges_[static_cast<std::size_t>(i)];
+    return {e.lo, e.hi};
+  }
+  Vec3 boundary_point(int i, double s) const override { return edges_[static_cast<std::size_t>(i)].at(s); }
   std::string name() const override { return name_; }
 
  private:

@@ -79,6 +79,48 @@ TEST(StepTrim, PlateWithAHoleCutByACylinder) {
   }
 }
 
+// The same cut at steps longer than the hole (the traced points of a line may all lie outside
+// it): the boundary's own points on the other surface place the crossings (issue 28 item 2), so
+// the pieces are those of the default step.
+TEST(StepTrim, TheCutDoesNotDependOnTheStep) {
+  for (const char* options : {R"({"closed_form": false, "step_length": 4})",
+                              R"({"closed_form": false, "step": "constant", "step_length": 3})",
+                              R"({"closed_form": false, "step": "constant", "step_length": 10})",
+                              R"({"closed_form": true, "step_length": 10})"}) {
+    SCOPED_TRACE(options);
+    const Scene s = faces_scene("plate_with_hole.step", options);
+    const IntersectionRun r = run_intersection(s, s.intersections[0]);
+    ASSERT_EQ(r.result.curves.size(), 4u);
+    for (const TracedCurve& c : r.result.curves) {
+      EXPECT_NEAR(c.length, 2.5 - std::sqrt(0.84), 1e-9);
+      for (const CurvePoint& p : c.points) EXPECT_GE(std::hypot(p.p.x(), p.p.y()), 1.0 - 1e-12);
+    }
+    EXPECT_TRUE(run_complete(r));
+  }
+}
+
+// The plane y = 0.99 cuts the plate's line |x| <= 3 and crosses the hole along a chord of only
+// 2 sqrt(1 - 0.99^2) = 0.28: two pieces of 3 - 0.141, at every step.
+TEST(StepTrim, AShortChordOfTheHoleIsCutAtEveryStep) {
+  for (const char* options : {R"({})", R"({"closed_form": false, "step": "constant", "step_length": 2})",
+                              R"({"closed_form": true, "step_length": 6})"}) {
+    SCOPED_TRACE(options);
+    const Scene s = parse_scene(
+        std::string(R"({"surfaces": {"a": {"step": "plate_with_hole.step", "face": 1},)") +
+            R"("b": {"plane": {"point": [0, 0.99, 0], "normal": [0, 1, 0], "u": [-5, 5], "v": [-5, 5]}}},)" +
+            R"("intersections": [{"name": "ab", "surfaces": ["a", "b"], "options": )" + options + "}]}",
+        "chord.json", kData);
+    const IntersectionRun r = run_intersection(s, s.intersections[0]);
+    ASSERT_EQ(r.result.curves.size(), 2u);
+    const double half_chord = std::sqrt(1 - 0.99 * 0.99);
+    for (const TracedCurve& c : r.result.curves) {
+      EXPECT_NEAR(c.length, 3 - half_chord, 1e-9);
+      const double inner = std::min(std::abs(c.points.front().p.x()), std::abs(c.points.back().p.x()));
+      EXPECT_NEAR(inner, half_chord, 1e-12);
+    }
+  }
+}
+
 // Half of the cylinder x^2 + y^2 = 1 (y >= 0, 0 <= z <= 2) cut by the plane z = 1 + 0.3 x: the
 // half of the ellipse (cos t, sin t, 1 + 0.3 cos t), t in [0, pi], from (1, 0, 1.3) to (-1, 0, 0.7).
 TEST(StepTrim, TrimmedCylinderFaceKeepsHalfTheEllipse) {

@@ -5,6 +5,7 @@
 // parametric or implicit, in which the intersection uses its surface.
 #pragma once
 
+#include <array>
 #include <string>
 
 #include "ssimarch/core/vec3.hpp"
@@ -28,6 +29,12 @@ class FaceRegion {
   /// the same direction). The sign is reliable near the boundary (within the distance to the
   /// boundary's other parts); far away it is that of the nearest boundary edge.
   virtual Side side(const Vec3& p, const Vec3& surface_normal) const = 0;
+  /// The boundary as curves c_i(s), s in boundary_range(i), i < boundary_curves(): the edges of
+  /// the loops (seams left out), for the edge-surface intersections that place a traced curve's
+  /// crossings whatever its step (pipeline/edge_surface_points.hpp).
+  virtual int boundary_curves() const = 0;
+  virtual std::array<double, 2> boundary_range(int i) const = 0;
+  virtual Vec3 boundary_point(int i, double s) const = 0;
   /// For messages, e.g. "STEP face #20 of part.step".
   virtual std::string name() const = 0;
 };
