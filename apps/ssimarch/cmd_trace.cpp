@@ -13,6 +13,7 @@
 #include "ssimarch/io/scene.hpp"
 #include "ssimarch/io/step_surface_json.hpp"
 #include "ssimarch/pipeline/trace_job.hpp"
+#include "trace_flags.hpp"
 #include "trace_output.hpp"
 
 namespace ssimarch::cli {
@@ -28,19 +29,8 @@ struct TraceArgs {
   bool quiet = false;
   bool list_options = false;
   unsigned threads = 0;
-  // One flag per row of the option table; values stay text until the scene's constants are known.
-  std::vector<std::pair<const TraceOptionSpec*, CLI::Option*>> option_flags;
-  std::vector<std::string> option_values;
+  TraceOptionFlags options;
 };
-
-TraceRequest request_of(const TraceArgs& a) {
-  TraceRequest request{a.only, "--intersection", {}};
-  for (std::size_t i = 0; i < a.option_flags.size(); ++i) {
-    const auto& [spec, flag] = a.option_flags[i];
-    if (flag->count() > 0) request.overrides.push_back({spec, a.option_values[i], spec->flag()});
-  }
-  return request;
-}
 
 bool is_step_path(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
@@ -73,37 +63,14 @@ int run_trace(const TraceArgs& a) {
   const Scene scene = load_trace_input(a);
   if (a.output != "-") refuse_input_as_output(a.output);  // before the work (OutputFiles checks it again)
   OutputFormat f = a.format.empty() ? (a.output == "-" ? OutputFormat::kJson : format_from_path(a.output)) : parse_format(a.format);
-  TraceRequest request = request_of(a);
-  // STEP holds the certified B-splines: the format turns the option on unless a flag sets it.
-  const TraceOptionSpec* bspline = find_trace_option("bspline");
-  const bool bspline_set = std::any_of(request.overrides.begin(), request.overrides.end(),
-                                       [&](const OptionOverride& o) { return o.option == bspline; });
-  if (f == OutputFormat::kStep && !bspline_set) request.overrides.push_back({bspline, std::string("true"), "--format step"});
-  // VTP carries kappa and tau: the format turns the geometry option on (method mixed) unless a flag sets it.
-  const TraceOptionSpec* geometry = find_trace_option("geometry");
-  const bool geometry_set = std::any_of(request.overrides.begin(), request.overrides.end(),
-                                        [&](const OptionOverride& o) { return o.option == geometry; });
-  if ((f == OutputFormat::kVtp || f == OutputFormat::kVtpAscii) && !geometry_set)
-    request.overrides.push_back({geometry, std::string("mixed"), "--format vtp"});
+  TraceRequest request{a.only, "--intersection", trace_overrides(a.options)};
+  add_format_overrides(f, &request);
   RunProgress progress(a.quiet);  // the trace's loops report to the thread's meter
   const TraceJobResult job = trace_scene(scene, request);
   progress.meter().close();
   write_runs(job.runs, f, a.output, &scene);
   if (!a.quiet) print_summary(job.runs);
   return job.complete() ? 0 : 1;
-}
-
-// The flags of the option table: --step-length, --taylor-order, ... with the table's help.
-void add_option_flags(CLI::App* cmd, TraceArgs* args) {
-  const auto& table = trace_option_table();
-  args->option_values.resize(table.size());
-  for (std::size_t i = 0; i < table.size(); ++i) {
-    const TraceOptionSpec& o = table[i];
-    std::string help = std::string(o.help) + " (overrides the scene; " + o.rule + "; default " + std::string(o.default_text) + ")";
-    CLI::Option* flag = cmd->add_option(o.flag(), args->option_values[i], help);
-    flag->type_name(o.type == TraceOptionSpec::Type::kChoice ? "NAME" : "VALUE");
-    args->option_flags.emplace_back(&o, flag);
-  }
 }
 
 }  // namespace
@@ -131,7 +98,7 @@ void add_trace_command(CLI::App& app, Commands& commands) {
   cmd->add_option("-o,--output", args->output, "Output file; '-' for standard output (default)");
   cmd->add_option("--format", args->format, "json | csv | obj | svg | step | vtp | vtp-ascii | html (default: from the output file's extension, .vtp/.vtm: vtp, .html: html; else json)");
   cmd->add_option("--intersection", args->only, "Trace only the intersection(s) with this name (repeatable)");
-  add_option_flags(cmd, args.get());
+  add_trace_option_flags(cmd, &args->options);
   cmd->add_option("--threads", args->threads,
                   "Threads for the intersections and the start-point search (default: every core; the result does "
                   "not depend on it)");

@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "ssimarch 0.1.0");
   ssimarch::cli::Commands commands;
   ssimarch::cli::add_trace_command(app, commands);
+  ssimarch::cli::add_section_command(app, commands);
   ssimarch::cli::add_eval_command(app, commands);
   ssimarch::cli::add_demo_command(app, commands);
   ssimarch::cli::add_surfaces_command(app, commands);

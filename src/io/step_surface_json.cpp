@@ -55,7 +55,8 @@ Surface step_surface_from_json(const nlohmann::json& spec, const std::filesystem
   return surface;
 }
 
-std::vector<int> step_face_list(const std::string& text, const StepModel& model, const std::string& where) {
+std::vector<int> step_face_list(const std::string& text, const StepModel& model, const std::string& where,
+                                std::size_t min_count) {
   const int n = static_cast<int>(model.faces().size());
   std::vector<int> out;
   if (text == "all") {
@@ -75,8 +76,9 @@ std::vector<int> step_face_list(const std::string& text, const StepModel& model,
       at = comma + 1;
     }
   }
-  if (out.size() < 2)
-    throw InputError(where, "needs at least two faces to intersect (" + model.file().source + " has " + std::to_string(n) + ")");
+  if (out.size() < min_count)
+    throw InputError(where, "needs at least " + std::to_string(min_count) + " face" + (min_count == 1 ? "" : "s") +
+                                " (" + model.file().source + " has " + std::to_string(n) + ")");
   return out;
 }
 

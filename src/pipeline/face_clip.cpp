@@ -36,6 +36,11 @@ namespace {
 // Dimensionless.
 constexpr double kBoundaryBand = 1e-6;
 
+// |phi| to which a crossing is solved on the curve, relative to max(1, model size)
+// (dimensionless): a hundred rounding units of the coordinates. A traced point (or one added at
+// a boundary point) this close to the boundary is a crossing as it stands.
+constexpr double kCrossingAccuracy = 1e-13;
+
 struct Clipper {
   const Problem& problem;
   std::array<const FaceRegion*, 2> regions;
@@ -91,7 +96,7 @@ std::optional<CurvePoint> crossing(const Clipper& c, const CurvePoint& a, const 
     }
     return f.value;
   };
-  const double tol = 1e-13 * c.scale;
+  const double tol = kCrossingAccuracy * c.scale;
   double s0 = 0, s1 = 1, f0 = fa, f1 = fb;
   for (int it = 0; it < 200 && std::abs(best.value) > tol && std::abs(s1 - s0) > 1e-17; ++it) {
     const double s = std::clamp(s1 - f1 * (s1 - s0) / (f1 - f0), std::min(s0, s1), std::max(s0, s1));
@@ -114,16 +119,44 @@ std::optional<CurvePoint> crossing(const Clipper& c, const CurvePoint& a, const 
   return CurvePoint{c.problem.wrap(x_best), c.problem.point(x_best), t.norm() > 0 ? Vec3(t.normalized()) : a.t};
 }
 
-// Curve points added around the boundary points that fall between two traced points (between
-// consecutive ones and the segment's ends), so that each crossing shows as a change of side
-// between consecutive points, found by `crossing` like any other: a curve that enters and leaves
-// a hole, or cuts a face's corner, within one step (issue 28 item 2). A boundary point q belongs to the segment (a, b)
-// whose chord is nearest to it, within a quarter of the chord (a step turns the tangent by less than a radian, so its
-// sagitta is below chord / 8) or the band; its place along the segment is its projection on the chord, and the new
-// point is the curve's point on the plane across the chord halfway between two such places.
-TracedCurve with_points_between(const Clipper& c, const TracedCurve& curve, const std::vector<Vec3>& boundary_points) {
+// The curve's point on the plane across the chord a -> b at chord parameter t, and the chord
+// parameter it has (empty where the corrector does not converge).
+std::optional<std::pair<CurvePoint, double>> point_across_chord(const Clipper& c, const CurvePoint& a,
+                                                                const CurvePoint& b, double t) {
+  const Vec3 d = b.p - a.p;
+  const Vec3 normal = d.normalized();
+  const CorrectorResult r =
+      solve_on_plane(c.problem, a.x + t * c.problem.difference(a.x, b.x), normal, normal.dot(a.p + t * d), c.corrector);
+  if (r.status != CorrectorStatus::kConverged) return std::nullopt;
+  const Vec3 p = c.problem.point(r.x);
+  const Linearization L = c.problem.linearize(r.x);
+  Vec3 tangent = L.normal_first.cross(L.normal_second);
+  if (tangent.dot(d) < 0) tangent = -tangent;
+  return std::pair{CurvePoint{c.problem.wrap(r.x), p, tangent.norm() > 0 ? Vec3(tangent.normalized()) : a.t},
+                   (p - a.p).dot(d) / d.squaredNorm()};
+}
+
+// A traced curve with curve points added at and around the boundary points (edge_surface_points)
+// that fall between two traced points; at_boundary marks the points added at boundary points.
+struct WithBoundaryPoints {
+  TracedCurve curve;
+  std::vector<bool> at_boundary;
+};
+
+// Each boundary point q between two traced points gets the curve's point at q itself (q is on
+// both surfaces and on the edge, so the plane across the chord through q meets the curve there)
+// and points halfway to its neighbours (the next boundary point or the segment's end), so that
+// each crossing shows as a change of side between consecutive points: a curve that enters and
+// leaves a hole, or cuts a face's corner, within one step (issue 28 item 2), and a run along an
+// edge ends at the edge's end. q belongs to the segment (a, b) whose chord is nearest to it,
+// within a quarter of the chord (a step turns the tangent by less than a radian, so its sagitta
+// is below chord / 8) or the band; its place is its projection on the chord.
+WithBoundaryPoints with_boundary_points(const Clipper& c, const TracedCurve& curve,
+                                        const std::vector<Vec3>& boundary_points) {
   const std::size_t n = curve.points.size();
-  if (boundary_points.empty() || n < 2) return curve;
+  WithBoundaryPoints out{curve, std::vector<bool>(n, false)};
+  if (boundary_points.empty() || n < 2) return out;
+  const double band = kBoundaryBand * c.scale;
   std::vector<std::vector<double>> at(n - 1);  // chord parameters of the boundary points per segment
   for (const Vec3& q : boundary_points) {
     double best = std::numeric_limits<double>::infinity(), best_t = 0;
@@ -133,43 +166,37 @@ TracedCurve with_points_between(const Clipper& c, const TracedCurve& curve, cons
       if (!(d.squaredNorm() > 0)) continue;
       const double t = std::clamp((q - a).dot(d) / d.squaredNorm(), 0.0, 1.0);
       const double dist = (a + t * d - q).norm();
-      if (dist < best && dist <= 0.25 * d.norm() + kBoundaryBand * c.scale) best = dist, best_t = t, best_i = i;
+      if (dist < best && dist <= 0.25 * d.norm() + band) best = dist, best_t = t, best_i = i;
     }
     // At a traced point (within the band of it) the point itself shows the crossing.
-    if (best_i < n && (q - curve.points[best_i].p).norm() > kBoundaryBand * c.scale &&
-        (q - curve.points[best_i + 1].p).norm() > kBoundaryBand * c.scale)
+    if (best_i < n && (q - curve.points[best_i].p).norm() > band && (q - curve.points[best_i + 1].p).norm() > band)
       at[best_i].push_back(best_t);
   }
-  TracedCurve out = curve;
-  out.points.clear();
+  out.curve.points.clear();
+  out.at_boundary.clear();
   for (std::size_t i = 0; i + 1 < n; ++i) {
-    const CurvePoint& a = curve.points[i];
-    const CurvePoint& b = curve.points[i + 1];
-    out.points.push_back(a);
+    out.curve.points.push_back(curve.points[i]);
+    out.at_boundary.push_back(false);
     std::vector<double>& t = at[i];
     if (t.empty()) continue;
-    // The ends too: a traced point on the boundary (where a face's rim ends the curve) has no side.
-    t.push_back(0.0);
-    t.push_back(1.0);
     std::sort(t.begin(), t.end());
-    const Vec3 d = b.p - a.p;
-    const Vec3 normal = d.normalized();
-    const VecX dx = c.problem.difference(a.x, b.x);
-    for (std::size_t k = 0; k + 1 < t.size(); ++k) {
-      const double mid = 0.5 * (t[k] + t[k + 1]);
-      const CorrectorResult r =
-          solve_on_plane(c.problem, a.x + mid * dx, normal, normal.dot(a.p + mid * d), c.corrector);
-      if (r.status != CorrectorStatus::kConverged) continue;
-      const Vec3 p = c.problem.point(r.x);
-      const double along = (p - a.p).dot(d) / d.squaredNorm();
-      if (!(along > t[k] && along < t[k + 1])) continue;
-      const Linearization L = c.problem.linearize(r.x);
-      Vec3 tangent = L.normal_first.cross(L.normal_second);
-      if (tangent.dot(d) < 0) tangent = -tangent;
-      out.points.push_back({c.problem.wrap(r.x), p, tangent.norm() > 0 ? Vec3(tangent.normalized()) : a.t});
+    std::vector<std::pair<double, bool>> targets;  // chord parameter, at a boundary point
+    for (std::size_t k = 0; k <= t.size(); ++k) {
+      targets.emplace_back(0.5 * ((k == 0 ? 0.0 : t[k - 1]) + (k == t.size() ? 1.0 : t[k])), false);
+      if (k < t.size()) targets.emplace_back(t[k], true);
+    }
+    double last = 0;
+    for (const auto& [target, on_edge] : targets) {
+      const auto p = point_across_chord(c, curve.points[i], curve.points[i + 1], target);
+      if (!p || !(p->second > last && p->second < 1) || (p->first.p - out.curve.points.back().p).norm() <= band)
+        continue;
+      out.curve.points.push_back(p->first);
+      out.at_boundary.push_back(on_edge);
+      last = p->second;
     }
   }
-  out.points.push_back(curve.points.back());
+  out.curve.points.push_back(curve.points.back());
+  out.at_boundary.push_back(false);
   return out;
 }
 
@@ -190,8 +217,8 @@ struct Marked {
 
 // Sets f to +|f| (inside) on every run of two or more points within the boundary band that has
 // a point outside (or on) the boundary.
-void keep_runs_along_boundary(const Clipper& c, const std::vector<Phi>& at, std::vector<double>* f,
-                              AlongBoundary* along) {
+void keep_runs_along_boundary(const Clipper& c, const std::vector<Phi>& at, const std::vector<bool>& at_boundary,
+                              std::vector<double>* f, AlongBoundary* along) {
   const double band = kBoundaryBand * c.scale;
   std::size_t i = 0;
   while (i < at.size()) {
@@ -201,7 +228,10 @@ void keep_runs_along_boundary(const Clipper& c, const std::vector<Phi>& at, std:
     const bool decided =
         std::any_of(at.begin() + static_cast<std::ptrdiff_t>(i), at.begin() + static_cast<std::ptrdiff_t>(j),
                     [](const Phi& p) { return !(p.value > 0); });
-    if (j - i >= 2 && decided) {
+    // Points added at boundary points lie in the band by construction: only traced ones make a run.
+    const auto traced = std::count(at_boundary.begin() + static_cast<std::ptrdiff_t>(i),
+                                   at_boundary.begin() + static_cast<std::ptrdiff_t>(j), false);
+    if (traced >= 2 && decided) {
       ++along->runs;
       for (std::size_t k = i; k < j; ++k) {
         (*f)[k] = std::max(std::abs(at[k].value), std::numeric_limits<double>::min());
@@ -213,7 +243,7 @@ void keep_runs_along_boundary(const Clipper& c, const std::vector<Phi>& at, std:
   }
 }
 
-// Traced points on the boundary itself, to crossing()'s accuracy (a curve ending where the face
+// Traced points on the boundary itself, to kCrossingAccuracy (a curve ending where the face
 // ends, the rim of a cylinder face; a crossing at a traced point), alone in the band (a run of
 // two or more is keep_runs_along_boundary's): their sign says nothing, so each takes its
 // neighbours' side, and one between two different sides is the crossing. Returns the crossings;
@@ -221,7 +251,7 @@ void keep_runs_along_boundary(const Clipper& c, const std::vector<Phi>& at, std:
 std::vector<bool> traced_crossings(const Clipper& c, const TracedCurve& curve, const std::vector<Phi>& at,
                                    std::vector<double>* f) {
   const std::size_t n = f->size();
-  const double on = 1e3 * 1e-13 * c.scale, band = kBoundaryBand * c.scale;
+  const double on = kCrossingAccuracy * c.scale, band = kBoundaryBand * c.scale;
   std::vector<bool> out(n, false);
   const auto m = static_cast<std::ptrdiff_t>(n);
   auto index = [&](std::ptrdiff_t k) -> std::optional<std::size_t> {  // a closed curve wraps
@@ -243,7 +273,8 @@ std::vector<bool> traced_crossings(const Clipper& c, const TracedCurve& curve, c
 
 // The points of curve `curve` with the crossings inserted (a closed curve rotated to start at
 // its first crossing, and then open). *crossings counts them; runs along a boundary go to *along.
-std::vector<Marked> mark(const Clipper& c, const TracedCurve& curve, int* crossings, AlongBoundary* along) {
+std::vector<Marked> mark(const Clipper& c, const TracedCurve& curve, const std::vector<bool>& at_boundary,
+                         int* crossings, AlongBoundary* along) {
   std::vector<Marked> out;
   std::vector<Phi> at;
   std::vector<double> f;
@@ -251,7 +282,7 @@ std::vector<Marked> mark(const Clipper& c, const TracedCurve& curve, int* crossi
     at.push_back(phi(c, p.x));
     f.push_back(at.back().value);
   }
-  keep_runs_along_boundary(c, at, &f, along);
+  keep_runs_along_boundary(c, at, at_boundary, &f, along);
   const std::vector<bool> on_boundary = traced_crossings(c, curve, at, &f);
   bool inside = f.front() > 0;
   *crossings = 0;
@@ -287,9 +318,10 @@ std::string end_message(const Clipper& c, int region) {
 
 // The pieces of one curve inside the regions; each piece's first point index in the input curve
 // is not kept (pieces are new curves).
-std::vector<TracedCurve> pieces(const Clipper& c, const TracedCurve& curve, AlongBoundary* along) {
+std::vector<TracedCurve> pieces(const Clipper& c, const TracedCurve& curve, const std::vector<bool>& at_boundary,
+                                AlongBoundary* along) {
   int crossings = 0;
-  const std::vector<Marked> m = mark(c, curve, &crossings, along);
+  const std::vector<Marked> m = mark(c, curve, at_boundary, &crossings, along);
   if (crossings == 0) return m.front().inside ? std::vector<TracedCurve>{curve} : std::vector<TracedCurve>{};
   std::vector<TracedCurve> out;
   TracedCurve piece;
@@ -386,8 +418,8 @@ void clip_to_regions(const std::array<const FaceRegion*, 2>& regions, Intersecti
   std::vector<std::vector<int>> new_index(run->result.curves.size());
   AlongBoundary along;
   for (std::size_t i = 0; i < run->result.curves.size(); ++i) {
-    const TracedCurve curve = with_points_between(c, run->result.curves[i], boundary_points);
-    for (TracedCurve& piece : pieces(c, curve, &along)) {
+    const WithBoundaryPoints with = with_boundary_points(c, run->result.curves[i], boundary_points);
+    for (TracedCurve& piece : pieces(c, with.curve, with.at_boundary, &along)) {
       new_index[i].push_back(static_cast<int>(kept.size()));
       if (i < run->conics.size()) {
         conics.push_back(conic_piece(run->conics[i], piece));

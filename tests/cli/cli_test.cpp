@@ -2,6 +2,8 @@
 // messages and exit statuses checked.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include <numbers>
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -479,4 +481,44 @@ TEST(Cli, TraceFacesOfAStepModel) {
   EXPECT_THAT(scene.err, HasSubstr("STEP model"));
   CliRun help = run("trace --help");
   EXPECT_THAT(help.out, HasSubstr("--faces"));
+}
+
+// `section MODEL.step --plane ...`: every face the plane reaches, cut by it and trimmed to its
+// loops (plate_with_hole.step as above). x = 0 cuts the plate's line |y| <= 3 without the hole
+// (two pieces of 2) and the cylinder's circle of radius 0.5: 4 + pi; x = 2.9 only the plate's
+// line (6), the cylinder (|x| <= 2.5) left out by its box; both planes at once give both.
+TEST(Cli, SectionOfAStepModelByPlanes) {
+  const std::string model = std::string(SSIMARCH_SOURCE_DIR) + "/tests/step/data/plate_with_hole.step";
+  auto total = [](const nlohmann::json& j, const std::string& suffix) {
+    double sum = 0;
+    for (const auto& i : j["intersections"]) {
+      const std::string name = i["name"];
+      if (name.size() >= suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0)
+        for (const auto& c : i["curves"]) sum += c["length"].get<double>();
+    }
+    return sum;
+  };
+  CliRun r = run("section " + model + " --plane 0,0,0,1,0,0 --plane 2.9,0,0,1,0,0");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["intersections"].size(), 3u);  // face1 and face2 with plane1, face1 with plane2
+  EXPECT_NEAR(total(j, "-plane1"), 4 + std::numbers::pi, 1e-9);
+  EXPECT_NEAR(total(j, "-plane2"), 6, 1e-9);
+  EXPECT_THAT(r.err, HasSubstr("plane1: 2 face(s) cut, 3 curve(s)"));
+  EXPECT_THAT(r.err, HasSubstr("1 left out"));
+  // Only face 1; a plane beyond the model (exit 1, an empty list); bad planes and faces.
+  CliRun one = run("section " + model + " --plane 0,0,0,1,0,0 --faces 1 -q");
+  ASSERT_EQ(one.status, 0) << one.err;
+  EXPECT_NEAR(total(nlohmann::json::parse(one.out), "-plane1"), 4, 1e-9);
+  CliRun beyond = run("section " + model + " --plane 10,0,0,1,0,0 -q");
+  EXPECT_EQ(beyond.status, 1);
+  EXPECT_EQ(nlohmann::json::parse(beyond.out)["intersections"].size(), 0u);
+  for (const char* bad : {"0,0,0,0,0,0", "0,0,0,1,0", "0,0,0,1,0,0,1", "0,0,x,1,0,0", "0,0,0,1,0,nan", "0,0,0,1,0,"}) {
+    CliRun e = run("section " + model + " --plane " + bad + " -q");
+    EXPECT_EQ(e.status, 2) << bad;
+    EXPECT_THAT(e.err, HasSubstr("--plane")) << bad;
+  }
+  EXPECT_EQ(run("section " + model + " -q").status, 2);
+  EXPECT_EQ(run("section " + model + " --plane 0,0,0,1,0,0 --faces 3 -q").status, 2);
+  EXPECT_THAT(run("section --help").out, HasSubstr("--plane"));
 }

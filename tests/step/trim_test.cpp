@@ -116,7 +116,9 @@ TEST(StepTrim, AShortChordOfTheHoleIsCutAtEveryStep) {
     for (const TracedCurve& c : r.result.curves) {
       EXPECT_NEAR(c.length, 3 - half_chord, 1e-9);
       const double inner = std::min(std::abs(c.points.front().p.x()), std::abs(c.points.back().p.x()));
-      EXPECT_NEAR(inner, half_chord, 1e-12);
+      // The crossing is solved to |phi| <= 1e-13 x the model size (about 7) and the line meets the
+      // circle at sin = 0.141: 5e-12 along the line.
+      EXPECT_NEAR(inner, half_chord, 1e-11);
     }
   }
 }

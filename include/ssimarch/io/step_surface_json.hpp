@@ -39,9 +39,10 @@ Surface step_surface_from_json(const nlohmann::json& spec, const std::filesystem
                                std::optional<SplineSurfaceData>* spline = nullptr);
 
 /// The faces of a STEP model to intersect, from a command-line list: "3,7,12" (numbers as
-/// `ssimarch faces` lists them, each at most once, at least two) or "all". Throws
+/// `ssimarch faces` lists them, each at most once, at least min_count) or "all". Throws
 /// InputError(where, ...) for anything else or a face the model does not have.
-std::vector<int> step_face_list(const std::string& text, const StepModel& model, const std::string& where);
+std::vector<int> step_face_list(const std::string& text, const StepModel& model, const std::string& where,
+                                std::size_t min_count = 2);
 
 /// A scene of faces of a STEP model ({"step": path, "face": i} named "face<i>", trimmed to
 /// their loops) with one intersection per pair of them, named "face<i>-face<j>", i < j in the
