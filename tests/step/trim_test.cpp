@@ -1,9 +1,10 @@
 // Trimming loops of STEP faces (docs/cad.md, "Trimming loops"): curves traced between faces are
 // cut to the faces' outer and inner loops, each piece ending exactly on the boundary it
-// crosses. Models: tests/step/data/plate_with_hole.step and half_cylinder_cut.step (written by
+// crosses. Models: tests/step/data/plate_with_hole.step, half_cylinder_cut.step and block_edge.step (written by
 // tests/step/data/make_trim_models.py); references are closed forms.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -120,6 +121,27 @@ TEST(StepTrim, AShortChordOfTheHoleIsCutAtEveryStep) {
       // circle at sin = 0.141: 5e-12 along the line.
       EXPECT_NEAR(inner, half_chord, 1e-11);
     }
+  }
+}
+
+// Two faces of a block (block_edge.step) meet along x = 1, z = 0, -1 <= y <= 0.5: their
+// intersection is that edge, which lies on the first face's boundary and runs on past its vertex
+// (1, 0.5, 0) inside the face's box. The piece kept as on the closed face ends at the vertex, the
+// boundary's own point on the other surface (was 1.3974, ending where the band's crossing fell).
+TEST(StepTrim, AnEdgeSharedByTwoFacesEndsAtItsVertex) {
+  for (const char* options : {R"({"closed_form": true})", R"({"closed_form": false})"}) {
+    SCOPED_TRACE(options);
+    const Scene s = faces_scene("block_edge.step", options);
+    const IntersectionRun r = run_intersection(s, s.intersections[0]);
+    ASSERT_EQ(r.result.curves.size(), 1u);
+    const TracedCurve& c = r.result.curves[0];
+    EXPECT_NEAR(c.length, 1.5, 1e-12);
+    const double y0 = std::min(c.points.front().p.y(), c.points.back().p.y());
+    const double y1 = std::max(c.points.front().p.y(), c.points.back().p.y());
+    EXPECT_NEAR(y0, -1.0, 1e-12);
+    EXPECT_NEAR(y1, 0.5, 1e-12);
+    EXPECT_FALSE(r.result.start_search.certified);  // decided by the boundary band
+    EXPECT_EQ(r.result.warnings.size(), 1u);
   }
 }
 

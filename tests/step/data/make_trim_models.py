@@ -135,3 +135,15 @@ occurrence(w,'2','plate_1',root_pd,plate_pd,plate_rep,root_rep,plate_origin,at_p
 occurrence(w,'3','sub_1',root_pd,sub_pd,root_rep,sub_rep,at_sub,sub_origin)
 occurrence(w,'4','rod_2',sub_pd,rod_pd,rod_rep,sub_rep,rod_origin,in_sub)
 open('rod_assembly.step','w').write(w.text("An assembly (root): the rod (a cylinder of radius 1 on its z axis, 0 <= z <= 10) as rod_1 at (5, 0, -2), as sub_1/rod_2 along y through (0, -5, 0.5) (sub_1 turned 90 degrees about z, the rod along sub's x) and as rod_3 (a MAPPED_ITEM) at (-5, 0, -2); the plate z = 0, |x|, |y| <= 20 as plate_1."))
+
+# 6. two faces of a block sharing an edge: the pentagon z = 0 with corners (-1, -1), (1, -1),
+# (1, 0.5), (0.5, 1), (-1, 1) (face 1) and the rectangle x = 1, |y| <= 1, 0 <= z <= 2 (face 2);
+# they share x = 1, z = 0, -1 <= y <= 0.5, each with its own edges
+w=W()
+def polygon_face(w, name, pts, place):
+    vs=[w.vertex(p) for p in pts]
+    edges=[(w.line_edge(vs[i],vs[(i+1)%len(pts)],pts[i],pts[(i+1)%len(pts)]),True) for i in range(len(pts))]
+    return w.face(name,[w.loop(edges)],w.add(f"PLANE('',#{w.place(*place)})"))
+polygon_face(w,'bottom',[[-1,-1,0],[1,-1,0],[1,0.5,0],[0.5,1,0],[-1,1,0]],([0,0,0],[0,0,1],[1,0,0]))
+polygon_face(w,'side',[[1,-1,0],[1,1,0],[1,1,2],[1,-1,2]],([1,0,1],[1,0,0],[0,1,0]))
+open('block_edge.step','w').write(w.text("Two faces of a block sharing the edge x = 1, z = 0, -1 <= y <= 0.5: the pentagon z = 0 with corners (-1, -1), (1, -1), (1, 0.5), (0.5, 1), (-1, 1) (face 1) and the rectangle x = 1, |y| <= 1, 0 <= z <= 2 (face 2)."))
