@@ -41,11 +41,17 @@ Eigen::Matrix<double, kDegree + 1, 4> quarter(int k, double v) {
   return B.partialPivLu().solve(rhs);
 }
 
+// The quarters share their end poles (C0 joints, knots of multiplicity kDegree), so each quarter's
+// homogeneous coefficients are scaled to start with the weight the previous one ends with
+// (w = (1 + t^2)^5 runs from 1 to 32 over a quarter): scaling one piece's coefficients keeps its
+// curve, while a shared pole with another piece's weight bent quarters 2-4 (the surfaces of this
+// case before 2026-12-07 left the knot by up to 1.3 in quarters 2-4).
 Handle(Geom_BSplineCurve) knot_curve(double v) {
   TColgp_Array1OfPnt poles(1, kSegments * kDegree + 1);
   TColStd_Array1OfReal weights(1, kSegments * kDegree + 1);
   for (int k = 0; k < kSegments; ++k) {
-    const auto h = quarter(k, v);
+    Eigen::Matrix<double, kDegree + 1, 4> h = quarter(k, v);
+    if (k > 0) h *= weights(k * kDegree + 1) / h(0, 3);
     for (int i = (k == 0 ? 0 : 1); i <= kDegree; ++i) {
       const int index = k * kDegree + i + 1;
       poles(index) = gp_Pnt(h(i, 0) / h(i, 3), h(i, 1) / h(i, 3), h(i, 2) / h(i, 3));

@@ -1,8 +1,9 @@
 // Side-by-side benchmark: OpenCASCADE (GeomAPI_IntSS, analytic and B-spline input), SISL (s1859 +
-// s1310) and ssimarch on the peer cases in one process, OpenCASCADE and ssimarch interleaved, SISL
-// after them (docs/benchmarks.md, "Peers").
+// s1310) and ssimarch (analytic input with and without its closed forms, and OpenCASCADE's B-spline
+// surfaces in both orders: ssimarch_bspline_scene.hpp) on the peer cases in one process,
+// OpenCASCADE and ssimarch interleaved, SISL after them (docs/benchmarks.md, "Peers").
 //
-//   peer_bench [--reps N] [--case NAME] [--scenes DIR]
+//   peer_bench [--reps N] [--case NAME] [--scenes DIR] [--write-bspline-scenes DIR]
 //
 // Prints Markdown: per case and engine, curves (+ isolated points), closed curves, |total length -
 // exact|, the largest distance of a sampled point from the two surfaces, the median and fastest
@@ -12,10 +13,12 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <string>
 #include <vector>
 
 #include "peer_engines.hpp"
+#include "ssimarch_bspline_scene.hpp"
 #include "ssimarch/io/scene.hpp"
 
 namespace {
@@ -50,8 +53,23 @@ const Case kCases[] = {
     {"occt_bug33244", 13.9478623648, 2, "OCCT tests/lowalgos/intss/bug33244 (trimmed |h| <= 3): reference_lengths.py"},
 };
 
-enum Engine { kOcctAnalytic, kOcctBspline, kSisl, kSsimarch, kSsimarchTraced, kEngines };
-const char* kEngineNames[kEngines] = {"OCCT analytic", "OCCT B-spline", "SISL", "ssimarch", "ssimarch traced"};
+enum Engine {
+  kOcctAnalytic,
+  kOcctBspline,
+  kSisl,
+  kSsimarch,
+  kSsimarchTraced,
+  kSsimarchBspline,
+  kSsimarchBsplineSwapped,
+  kEngines
+};
+const char* kEngineNames[kEngines] = {"OCCT analytic",
+                                      "OCCT B-spline",
+                                      "SISL",
+                                      "ssimarch",
+                                      "ssimarch traced",
+                                      "ssimarch B-spline",
+                                      "ssimarch B-spline swapped"};
 
 struct Row {
   Outcome outcome;
@@ -63,6 +81,7 @@ struct Loaded {
   ssimarch::Scene scene;
   ssimarch::IntersectionSpec spec, traced;
   OcctPair analytic, bspline;
+  ssimarch::Scene bspline_scene;  // OpenCASCADE's B-splines as given and swapped
   Row rows[kEngines];
 };
 
@@ -78,7 +97,9 @@ void run_once(Loaded* l, bool first, int from, int to) {
       case kOcctBspline: o = run_occt(l->bspline, a, b, &ms); break;
       case kSisl: o = run_sisl(l->bspline, a, b, &ms); break;
       case kSsimarch: o = run_ssimarch(l->scene, l->spec, &ms); break;
-      default: o = run_ssimarch(l->scene, l->traced, &ms); break;
+      case kSsimarchTraced: o = run_ssimarch(l->scene, l->traced, &ms); break;
+      case kSsimarchBspline: o = run_ssimarch(l->bspline_scene, l->bspline_scene.intersections.at(0), &ms); break;
+      default: o = run_ssimarch(l->bspline_scene, l->bspline_scene.intersections.at(1), &ms); break;
     }
     if (first) {
       l->rows[e].outcome = o;
@@ -135,16 +156,22 @@ void print(const Loaded& l) {
 
 int main(int argc, char** argv) {
   int reps = 7;
-  std::string only, dir = std::string(SSIMARCH_SOURCE_DIR) + "/bench/peers/scenes";
+  std::string only, write_to, dir = std::string(SSIMARCH_SOURCE_DIR) + "/bench/peers/scenes";
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--reps")) reps = std::atoi(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--case")) only = argv[i + 1];
     else if (!std::strcmp(argv[i], "--scenes")) dir = argv[i + 1];
+    else if (!std::strcmp(argv[i], "--write-bspline-scenes"))
+      write_to = argv[i + 1];
   }
   std::vector<Loaded> cases;
   for (const Case& c : kCases) {
     if (!only.empty() && only != c.name) continue;
-    Loaded l{&c, ssimarch::load_scene(dir + "/" + c.name + ".json"), {}, {}, occt_analytic(c.name), occt_bspline(c.name), {}};
+    const std::string path = dir + "/" + c.name + ".json";
+    Loaded l{&c, ssimarch::load_scene(path), {}, {}, occt_analytic(c.name), occt_bspline(c.name), {}, {}};
+    l.bspline_scene = ssimarch_bspline_scene(path, l.bspline);
+    if (!write_to.empty())
+      std::ofstream(write_to + "/" + c.name + "_bspline.json") << ssimarch_bspline_scene_json(path, l.bspline).dump(1);
     l.spec = l.scene.intersections.at(0);
     l.traced = l.spec;
     l.traced.options.closed_form = false;
@@ -154,7 +181,8 @@ int main(int argc, char** argv) {
   // forked child (sisl_engine.cpp), and after a fork every page of this process is copy-on-write:
   // the engine run next paid for re-faulting its heap (3-5 ms, malloc_consolidate and page faults in
   // `perf record`), so SISL's repetitions come after all the others.
-  const int engines[] = {kOcctAnalytic, kOcctBspline, kSsimarch, kSsimarchTraced};
+  const int engines[] = {kOcctAnalytic,   kOcctBspline,     kSsimarch,
+                         kSsimarchTraced, kSsimarchBspline, kSsimarchBsplineSwapped};
   for (int r = 0; r < reps; ++r)
     for (Loaded& l : cases)
       for (int e : engines) run_once(&l, r == 0, e, e + 1);
@@ -162,7 +190,9 @@ int main(int argc, char** argv) {
     for (Loaded& l : cases) run_once(&l, r == 0, kSisl, kSisl + 1);
   std::printf("| case | exact length (components) |");
   for (const char* e : kEngineNames) std::printf(" %s |", e);
-  std::printf("\n|---|---|---|---|---|---|---|\n");
+  std::printf("\n|---|---|");
+  for (int e = 0; e < kEngines; ++e) std::printf("---|");
+  std::printf("\n");
   for (const Loaded& l : cases) print(l);
   return 0;
 }

@@ -17,6 +17,8 @@
 #include "ssimarch/march/arc_length.hpp"
 #include "ssimarch/march/tracer.hpp"
 #include "ssimarch/pipeline/edge_surface_points.hpp"
+#include "ssimarch/pipeline/parameter_loops.hpp"
+#include "ssimarch/problem/closest_point.hpp"
 #include "ssimarch/problem/gauss_newton.hpp"
 
 namespace ssimarch {
@@ -46,13 +48,44 @@ struct Clipper {
   std::array<const FaceRegion*, 2> regions;
   CorrectorOptions corrector;
   double scale;  // max(1, model size)
+  std::array<std::optional<ParameterLoops>, 2> loops;  // regions[k]'s loops on the Problem's surface k
 };
+
+// Whether a point at signed distance phi from the nearest boundary is decided in the parameter
+// planes: beyond the band and beyond four times the sampled loops' resolution (nearer, the 3D
+// sign is exact and the samples' chords are not).
+bool far_from_boundary(const Clipper& c, double phi) {
+  double near = kBoundaryBand * c.scale;
+  for (const auto& l : c.loops)
+    if (l) near = std::max(near, 4 * l->resolution());
+  return std::abs(phi) > near;
+}
+
+// The side of a point far from every boundary (far_from_boundary): in each region's parameter
+// plane where its loops are there (parameter_loops.hpp), else by the 3D sign.
+bool inside_far(const Clipper& c, const Vec3& p, const VecX& x) {
+  const Linearization L = c.problem.linearize(x);
+  for (std::size_t k = 0; k < 2; ++k) {
+    if (!c.regions[k]) continue;
+    const Surface& s = k == 0 ? c.problem.first() : c.problem.second();
+    if (c.loops[k]) {
+      if (const std::optional<Vec2> uv = closest_parameters(s, p)) {
+        if (!c.loops[k]->contains(*uv)) return false;
+        continue;
+      }
+    }
+    if (!(c.regions[k]->side(p, k == 0 ? L.normal_first : L.normal_second).signed_distance > 0)) return false;
+  }
+  return true;
+}
 
 // Runs of points along a boundary (kBoundaryBand) met while clipping, for the warning.
 struct AlongBoundary {
   int runs = 0;
   double max_gap = 0;  // largest |phi| of a point of such a run (model length)
   int region = -1;
+  double off_surface = 0;  // largest gap beyond the band of a crossing with an edge off its surface
+  int off_region = -1;
 };
 
 // phi at x and the region that attains it.
@@ -80,7 +113,7 @@ Phi phi(const Clipper& c, const VecX& x) {
 // corrected or phi does not vanish there (its sign changed across a jump of the nearest
 // boundary part, not across the boundary).
 std::optional<CurvePoint> crossing(const Clipper& c, const CurvePoint& a, const CurvePoint& b, double fa, double fb,
-                                   int* region) {
+                                   int* region, double* gap) {
   const VecX dx = c.problem.difference(a.x, b.x);
   Eigen::Index i = 0;
   dx.cwiseAbs().maxCoeff(&i);
@@ -111,11 +144,20 @@ std::optional<CurvePoint> crossing(const Clipper& c, const CurvePoint& a, const 
     s1 = s;
     f1 = *f;
   }
-  if (!(std::abs(best.value) <= 1e3 * tol && best.gap <= 1e3 * tol)) return std::nullopt;
+  // The gap to the edge curve is the model's own accuracy where its edges lie off its surfaces
+  // (Ventilator.stp: 1.4e-5 and 1.2e-3 of a model of 88; refusing them dropped whole curves that
+  // start outside a face and enter it): up to the band, or twice the largest gap of the region's
+  // boundary samples. A sign change of phi away from the boundary (beyond a corner, where the
+  // nearest boundary point is the vertex) has a gap of the order of its distance to the face.
+  double allowed = std::max(1e3 * tol, kBoundaryBand * c.scale);
+  if (best.region >= 0 && c.loops[static_cast<std::size_t>(best.region)])
+    allowed = std::max(allowed, 2 * c.loops[static_cast<std::size_t>(best.region)]->edge_gap());
+  if (!(std::abs(best.value) <= 1e3 * tol && best.gap <= allowed)) return std::nullopt;
   const Linearization L = c.problem.linearize(x_best);
   Vec3 t = L.normal_first.cross(L.normal_second);
   if (t.dot(b.p - a.p) < 0) t = -t;
   *region = best.region;
+  *gap = best.gap;
   return CurvePoint{c.problem.wrap(x_best), c.problem.point(x_best), t.norm() > 0 ? Vec3(t.normalized()) : a.t};
 }
 
@@ -284,6 +326,13 @@ std::vector<Marked> mark(const Clipper& c, const TracedCurve& curve, const std::
   }
   keep_runs_along_boundary(c, at, at_boundary, &f, along);
   const std::vector<bool> on_boundary = traced_crossings(c, curve, at, &f);
+  // The first point's side starts the count: far from the boundary it is taken in the parameter
+  // planes (the 3D sign there is that of whatever edge is nearest).
+  if (far_from_boundary(c, at.front().value)) {
+    const bool in = inside_far(c, curve.points.front().p, curve.points.front().x);
+    f.front() = in ? std::abs(f.front()) : -std::abs(f.front());
+    if (curve.closed) f.back() = f.front();
+  }
   bool inside = f.front() > 0;
   *crossings = 0;
   for (std::size_t i = 0; i < curve.points.size(); ++i) {
@@ -295,8 +344,11 @@ std::vector<Marked> mark(const Clipper& c, const TracedCurve& curve, const std::
     }
     if (i > 0 && !on_boundary[i - 1] && (f[i] > 0) != (f[i - 1] > 0)) {
       int region = -1;
-      if (auto x = crossing(c, curve.points[i - 1], curve.points[i], f[i - 1], f[i], &region)) {
+      double gap = 0;
+      if (auto x = crossing(c, curve.points[i - 1], curve.points[i], f[i - 1], f[i], &region, &gap)) {
         out.push_back({*x, true, true, region});
+        if (gap > kBoundaryBand * c.scale && gap > along->off_surface)
+          along->off_surface = gap, along->off_region = region;
         inside = f[i] > 0;
         ++*crossings;
       }
@@ -405,7 +457,11 @@ Conic conic_piece(const Conic& k, const TracedCurve& piece) {
 void clip_to_regions(const std::array<const FaceRegion*, 2>& regions, IntersectionRun* run) {
   if (!regions[0] && !regions[1]) return;
   const Problem& P = run->problem;
-  const Clipper c{P, regions, CorrectorOptions{run->used.options.tolerance, 20}, P.scale()};
+  Clipper c{P, regions, CorrectorOptions{run->used.options.tolerance, 20}, P.scale(), {}};
+  for (std::size_t k = 0; k < 2; ++k)
+    if (regions[k] &&
+        !(run->result.curves.empty() && run->result.singular_points.empty() && run->result.isolated_points.empty()))
+      c.loops[k] = ParameterLoops::build(*regions[k], k == 0 ? P.first() : P.second());
   std::vector<Vec3> boundary_points;
   const EdgeSurfaceTolerances edge{run->used.options.tolerance, kBoundaryBand * c.scale};
   for (std::size_t k = 0; k < 2; ++k)
@@ -440,9 +496,21 @@ void clip_to_regions(const std::array<const FaceRegion*, 2>& regions, Intersecti
       << "): kept as on the closed face, which that band decides, not certified";
     run->result.warnings.push_back(w.str());
   }
+  if (along.off_region >= 0) {
+    run->result.start_search.certified = false;
+    std::ostringstream w;
+    w.precision(3);
+    w << "the boundary of " << regions[static_cast<std::size_t>(along.off_region)]->name() << " lies up to "
+      << along.off_surface << " off its surface (beyond the band, " << kBoundaryBand * c.scale
+      << "): the curve is cut where it passes the boundary, to the model's accuracy, not certified";
+    run->result.warnings.push_back(w.str());
+  }
   // Singular and isolated points: kept inside the regions, curve indices renumbered (a curve
   // cut into pieces is listed by each piece).
-  auto inside = [&](const SingularPointReport& s) { return phi(c, s.x).value >= -1e-9 * c.scale; };
+  auto inside = [&](const SingularPointReport& s) {
+    const double f = phi(c, s.x).value;
+    return far_from_boundary(c, f) ? inside_far(c, s.p, s.x) : f >= -1e-9 * c.scale;
+  };
   for (auto* list : {&run->result.singular_points, &run->result.isolated_points}) {
     std::vector<SingularPointReport> keep;
     for (SingularPointReport& s : *list) {

@@ -1,7 +1,7 @@
 // Trimming loops of STEP faces (docs/cad.md, "Trimming loops"): curves traced between faces are
 // cut to the faces' outer and inner loops, each piece ending exactly on the boundary it
-// crosses. Models: tests/step/data/plate_with_hole.step, half_cylinder_cut.step and block_edge.step (written by
-// tests/step/data/make_trim_models.py); references are closed forms.
+// crosses. Models: tests/step/data/plate_with_hole.step, half_cylinder_cut.step, block_edge.step and torus_patch.step
+// (written by tests/step/data/make_trim_models.py); references are closed forms.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -142,6 +142,33 @@ TEST(StepTrim, AnEdgeSharedByTwoFacesEndsAtItsVertex) {
     EXPECT_NEAR(y1, 0.5, 1e-12);
     EXPECT_FALSE(r.result.start_search.certified);  // decided by the boundary band
     EXPECT_EQ(r.result.warnings.size(), 1u);
+  }
+}
+
+// A quarter of the outer half of a torus (torus_patch.step: R = 2, r = 0.5, 0 <= u <= pi/2,
+// -pi/2 <= v <= pi/2) cut by y = 1: the piece x >= sqrt(3) of the section, (sqrt(rho^2 - 1), 1,
+// z) with rho = 2 + cos(v) / 2, z = sin(v) / 2, of length 1.6684747033 (quadrature); the section's
+// other oval, on the far side of the ring, lies outside the face though its nearest edge in space
+// said inside (27b043d kept it: 2 curves). y = -1 misses the face.
+TEST(StepTrim, ATorusPatchKeepsOnlyItsOwnPieceOfTheSection) {
+  for (const char* options : {R"({"closed_form": true})", R"({"closed_form": false})"}) {
+    SCOPED_TRACE(options);
+    for (double y : {1.0, -1.0}) {
+      const Scene s = parse_scene(
+          std::string(R"({"surfaces": {"a": {"step": "torus_patch.step", "face": 1},)") +
+              R"("b": {"plane": {"point": [0, )" + std::to_string(y) +
+              R"(, 0], "normal": [0, 1, 0]}}}, "intersections": [{"name": "ab", "surfaces": ["a", "b"], "options": )" +
+              options + "}]}",
+          "torus.json", kData);
+      const IntersectionRun r = run_intersection(s, s.intersections[0]);
+      if (y < 0) {
+        EXPECT_TRUE(r.result.curves.empty());
+        continue;
+      }
+      ASSERT_EQ(r.result.curves.size(), 1u);
+      EXPECT_NEAR(r.result.curves[0].length, 1.6684747033, 1e-8);
+      for (const CurvePoint& p : r.result.curves[0].points) EXPECT_GE(p.p.x(), std::sqrt(3.0) - 1e-9);
+    }
   }
 }
 

@@ -147,3 +147,19 @@ def polygon_face(w, name, pts, place):
 polygon_face(w,'bottom',[[-1,-1,0],[1,-1,0],[1,0.5,0],[0.5,1,0],[-1,1,0]],([0,0,0],[0,0,1],[1,0,0]))
 polygon_face(w,'side',[[1,-1,0],[1,1,0],[1,1,2],[1,-1,2]],([1,0,1],[1,0,0],[0,1,0]))
 open('block_edge.step','w').write(w.text("Two faces of a block sharing the edge x = 1, z = 0, -1 <= y <= 0.5: the pentagon z = 0 with corners (-1, -1), (1, -1), (1, 0.5), (0.5, 1), (-1, 1) (face 1) and the rectangle x = 1, |y| <= 1, 0 <= z <= 2 (face 2)."))
+
+# 7. a quarter of the outer half of a torus (R = 2, r = 0.5 about z): 0 <= u <= pi/2 around the
+# axis, -pi/2 <= v <= pi/2 around the tube; bounded by two arcs of radius 2 at z = -+0.5 and two
+# half circles of the tube at u = 0 and u = pi/2
+w=W()
+R,r=2.0,0.5
+p00=[R,0,-r]; p10=[0,R,-r]; p11=[0,R,r]; p01=[R,0,r]
+va,vb,vc,vd=[w.vertex(p) for p in (p00,p10,p11,p01)]
+bottom=w.circle_edge(va,vb,[0,0,-r],[0,0,1],[1,0,0],R)
+side1=w.circle_edge(vb,vc,[0,R,0],[1,0,0],[0,1,0],r)
+top=w.circle_edge(vd,vc,[0,0,r],[0,0,1],[1,0,0],R)
+side0=w.circle_edge(va,vd,[R,0,0],[0,-1,0],[1,0,0],r)
+loop=w.loop([(bottom,True),(side1,True),(top,False),(side0,False)])
+torus=w.add(f"TOROIDAL_SURFACE('',#{w.place([0,0,0],[0,0,1],[1,0,0])},{R!r},{r!r})")
+w.face('torus_patch',[loop],torus)
+open('torus_patch.step','w').write(w.text("A quarter of the outer half of the torus R = 2, r = 0.5 about z: 0 <= u <= pi/2, -pi/2 <= v <= pi/2 (face 1)."))
