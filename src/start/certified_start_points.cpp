@@ -372,6 +372,8 @@ bool Collector::decide_isolated(const IntervalBox& region) {
 // grown by `factor` times its half-widths plus a floor of kSaddleFloor of the domain, clipped to
 // the bounds.
 constexpr long kSaddleFaceBoxes = 100;  // least box budget of each face system of a saddle box
+// The turning systems' first pass gets the box budget divided by this (dimensionless).
+constexpr long kTurningFirstPassDivisor = 4;
 IntervalBox grown(const Problem& P, const IntervalBox& region, double factor) {
   IntervalBox out;
   for (std::size_t i = 0; i < region.size(); ++i) {
@@ -520,10 +522,16 @@ std::vector<VecX> certified_start_points(const Tracer& tracer, TraceStats* stats
   std::vector<std::optional<VecX>> collapsed(boundary.size());
   for (std::size_t i = 0; i < boundary.size(); ++i)
     collapsed[i] = collapsed_face(P, boundary[i], tracer.options().tolerance);
+  // Turning systems go in two passes: each first with a tenth of the budget, so that one that
+  // decides at once does not wait behind one that spends the whole budget (a plane across a
+  // B-spline half cylinder: the first turning system spent 5,000 boxes, the second decided in 9),
+  // then those whose tenth ran out, with all of it (issue 26 item 3).
+  RootSearchOptions quick = ro;
+  quick.max_boxes = std::max(1L, ro.max_boxes / kTurningFirstPassDivisor);
   parallel_for(found.size(), [&](std::size_t i) {
     if (i < boundary.size() && collapsed[i]) return;
     const System& s = i < boundary.size() ? boundary[i] : first[0];
-    found[i] = find_all_roots(s.equations, s.box, ro);
+    found[i] = find_all_roots(s.equations, s.box, i < boundary.size() ? ro : quick);
   });
   bool boundary_decided = true;
   // Progress by systems taken: the boundary ones (solved together above), then at most one turning
@@ -545,18 +553,32 @@ std::vector<VecX> certified_start_points(const Tracer& tracer, TraceStats* stats
   // One turning system decided everywhere suffices for the loops; the others' roots still help.
   bool loops_decided = false;
   std::vector<std::pair<System, RootSearchResult>> undecided_turning;
+  std::vector<System> retry;  // pass 1's systems whose tenth of the budget ran out
   for (int k = 0; k < P.dim() && !loops_decided; ++k) {
     report_progress("start points", solved++, systems);
     System s = k == 0 ? std::move(first[0]) : turning_system(P, k);
-    RootSearchResult r = k == 0 ? std::move(found.back()) : find_all_roots(s.equations, s.box, ro);
+    RootSearchResult r = k == 0 ? std::move(found.back()) : find_all_roots(s.equations, s.box, quick);
+    if (std::any_of(r.undecided.begin(), r.undecided.end(), [](const UndecidedBox& u) { return u.budget; })) {
+      search->boxes += r.boxes;  // its roots and regions come from the second pass
+      retry.push_back(std::move(s));
+      continue;
+    }
     loops_decided = out.take(s, r) || decide_clusters(s, r, ro, true, &out, &saddle_boxes);
-    if (loops_decided) break;
-    const bool budget_spent =
-        std::any_of(r.undecided.begin(), r.undecided.end(), [](const UndecidedBox& u) { return u.budget; });
-    undecided_turning.emplace_back(std::move(s), std::move(r));
     // Only singular roots left undecided: they are roots of every turning system (J_H loses rank
     // there), so no other k can be decided; their Newton candidates are start points already.
-    if (!budget_spent) break;
+    if (!loops_decided) undecided_turning.emplace_back(std::move(s), std::move(r));
+    break;
+  }
+  // The second pass stops where the first did: at a decided system, or after a singular-only one
+  // (the earlier systems still get the whole budget, as they did in one pass).
+  for (System& s : retry) {
+    if (loops_decided) break;
+    RootSearchResult r = find_all_roots(s.equations, s.box, ro);
+    loops_decided = out.take(s, r) || decide_clusters(s, r, ro, true, &out, &saddle_boxes);
+    const bool singular_only =
+        std::none_of(r.undecided.begin(), r.undecided.end(), [](const UndecidedBox& u) { return u.budget; });
+    undecided_turning.emplace_back(std::move(s), std::move(r));
+    if (singular_only) break;
   }
   report_progress("start points", systems, systems);  // the turning loop may stop early
   if (!loops_decided)
