@@ -230,7 +230,9 @@ WithBoundaryPoints with_boundary_points(const Clipper& c, const TracedCurve& cur
     double last = 0;
     for (const auto& [target, on_edge] : targets) {
       const auto p = point_across_chord(c, curve.points[i], curve.points[i + 1], target);
-      if (!p || !(p->second > last && p->second < 1) || (p->first.p - out.curve.points.back().p).norm() <= band)
+      // Not within the band of its neighbours: two such points in a row read as a run along the boundary.
+      if (!p || !(p->second > last && p->second < 1) || (p->first.p - out.curve.points.back().p).norm() <= band ||
+          (p->first.p - curve.points[i + 1].p).norm() <= band)
         continue;
       out.curve.points.push_back(p->first);
       out.at_boundary.push_back(on_edge);
