@@ -62,10 +62,11 @@ bench: deps
 	./bench/run-benchmarks
 
 # Side-by-side with OpenCASCADE and SISL (docs/benchmarks.md, "Peers"): an optional build of its own.
+# It also builds build-peers/bin/occt_section, OpenCASCADE's section of a STEP model (docs/cad.md).
 bench-peers:
 	./scripts/install-deps --peers
 	cmake -S . -B build-peers -G Ninja -DCMAKE_BUILD_TYPE=Release -DSSIMARCH_BUILD_TESTS=OFF -DSSIMARCH_BENCH_PEERS=ON
-	cmake --build build-peers -j $(JOBS) --target peer_bench ssimarch
+	cmake --build build-peers -j $(JOBS) --target peer_bench ssimarch occt_section ssimarch_cli
 	build-peers/bin/peer_bench --reps 7
 	bench/peers/process_times --ssimarch build-peers/bin/ssimarch
 
