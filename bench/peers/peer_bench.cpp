@@ -169,9 +169,9 @@ int main(int argc, char** argv) {
     if (!only.empty() && only != c.name) continue;
     const std::string path = dir + "/" + c.name + ".json";
     Loaded l{&c, ssimarch::load_scene(path), {}, {}, occt_analytic(c.name), occt_bspline(c.name), {}, {}};
-    l.bspline_scene = ssimarch_bspline_scene(path, l.bspline);
-    if (!write_to.empty())
-      std::ofstream(write_to + "/" + c.name + "_bspline.json") << ssimarch_bspline_scene_json(path, l.bspline).dump(1);
+    const nlohmann::json bspline_scene = ssimarch_bspline_scene_json(path, l.bspline);
+    if (!write_to.empty()) std::ofstream(write_to + "/" + c.name + "_bspline.json") << bspline_scene.dump(1);
+    l.bspline_scene = ssimarch::parse_scene(bspline_scene.dump(), path + " (B-spline form)");
     l.spec = l.scene.intersections.at(0);
     l.traced = l.spec;
     l.traced.options.closed_form = false;

@@ -6,8 +6,6 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
-#include "ssimarch/io/scene.hpp"
-
 namespace peers {
 
 namespace {
@@ -66,11 +64,6 @@ json ssimarch_bspline_scene_json(const std::string& scene_path, const OcctPair& 
   scene["description"] =
       "OpenCASCADE's GeomConvert B-splines of " + scene_path + " (bench/peers/ssimarch_bspline_scene.cpp)";
   return scene;
-}
-
-ssimarch::Scene ssimarch_bspline_scene(const std::string& scene_path, const OcctPair& bspline) {
-  return ssimarch::parse_scene(ssimarch_bspline_scene_json(scene_path, bspline).dump(),
-                               scene_path + " (B-spline form)");
 }
 
 }  // namespace peers

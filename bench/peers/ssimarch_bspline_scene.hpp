@@ -8,15 +8,13 @@
 #include <string>
 
 #include "occt_surfaces.hpp"
-#include "ssimarch/pipeline/scene.hpp"
 
 namespace peers {
 
 /// The scene of `scene_path` (one intersection) with its surfaces replaced by `bspline`'s, in a
 /// clamped (non-periodic) form, and two intersections: "<name>" and "<name>_swapped", with the
-/// case's options: as scene JSON (`peer_bench --write-bspline-scenes DIR` writes it, for
-/// `ssimarch trace`), and parsed.
+/// case's options, as scene JSON (`peer_bench --write-bspline-scenes DIR` writes it, for
+/// `ssimarch trace`).
 nlohmann::json ssimarch_bspline_scene_json(const std::string& scene_path, const OcctPair& bspline);
-ssimarch::Scene ssimarch_bspline_scene(const std::string& scene_path, const OcctPair& bspline);
 
 }  // namespace peers

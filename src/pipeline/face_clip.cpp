@@ -107,6 +107,15 @@ Phi phi(const Clipper& c, const VecX& x) {
   return out;
 }
 
+// The curve's point at x (on both surfaces), its unit tangent n1 x n2 turned along `travel`
+// (`fallback` where the normals are parallel).
+CurvePoint curve_point(const Clipper& c, const VecX& x, const Vec3& travel, const Vec3& fallback) {
+  const Linearization L = c.problem.linearize(x);
+  Vec3 t = L.normal_first.cross(L.normal_second);
+  if (t.dot(travel) < 0) t = -t;
+  return CurvePoint{c.problem.wrap(x), c.problem.point(x), t.norm() > 0 ? Vec3(t.normalized()) : fallback};
+}
+
 // The curve point between a and b (a inside, b outside, or the reverse) where phi = 0: Illinois
 // regula falsi in s, each trial point the curve's point where the unknown i that changes most
 // between a and b takes a.x[i] + s (b.x[i] - a.x[i]). Empty when a trial point cannot be
@@ -153,12 +162,9 @@ std::optional<CurvePoint> crossing(const Clipper& c, const CurvePoint& a, const 
   if (best.region >= 0 && c.loops[static_cast<std::size_t>(best.region)])
     allowed = std::max(allowed, 2 * c.loops[static_cast<std::size_t>(best.region)]->edge_gap());
   if (!(std::abs(best.value) <= 1e3 * tol && best.gap <= allowed)) return std::nullopt;
-  const Linearization L = c.problem.linearize(x_best);
-  Vec3 t = L.normal_first.cross(L.normal_second);
-  if (t.dot(b.p - a.p) < 0) t = -t;
   *region = best.region;
   *gap = best.gap;
-  return CurvePoint{c.problem.wrap(x_best), c.problem.point(x_best), t.norm() > 0 ? Vec3(t.normalized()) : a.t};
+  return curve_point(c, x_best, b.p - a.p, a.t);
 }
 
 // The curve's point on the plane across the chord a -> b at chord parameter t, and the chord
@@ -170,12 +176,8 @@ std::optional<std::pair<CurvePoint, double>> point_across_chord(const Clipper& c
   const CorrectorResult r =
       solve_on_plane(c.problem, a.x + t * c.problem.difference(a.x, b.x), normal, normal.dot(a.p + t * d), c.corrector);
   if (r.status != CorrectorStatus::kConverged) return std::nullopt;
-  const Vec3 p = c.problem.point(r.x);
-  const Linearization L = c.problem.linearize(r.x);
-  Vec3 tangent = L.normal_first.cross(L.normal_second);
-  if (tangent.dot(d) < 0) tangent = -tangent;
-  return std::pair{CurvePoint{c.problem.wrap(r.x), p, tangent.norm() > 0 ? Vec3(tangent.normalized()) : a.t},
-                   (p - a.p).dot(d) / d.squaredNorm()};
+  const CurvePoint p = curve_point(c, r.x, d, a.t);
+  return std::pair{p, (p.p - a.p).dot(d) / d.squaredNorm()};
 }
 
 // A traced curve with curve points added at and around the boundary points (edge_surface_points)

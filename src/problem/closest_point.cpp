@@ -50,12 +50,14 @@ Vec2 refine_closest_parameters(const Surface& surface, const Vec3& X, Vec2 uv) {
     Vec2 step = A.completeOrthogonalDecomposition().solve(-r);
     if (!step.allFinite()) break;
     Vec2 next = clamp_to_domain(d, uv + step);
-    while (!(distance2(next) < r.squaredNorm()) && step.norm() > still) {
+    double next2 = distance2(next);
+    while (!(next2 < r.squaredNorm()) && step.norm() > still) {
       step /= 2;
       next = clamp_to_domain(d, uv + step);
+      next2 = distance2(next);
     }
     double moved = (next - uv).norm();
-    if (!(distance2(next) <= r.squaredNorm())) break;  // no step decreases |r|: a local minimum
+    if (!(next2 <= r.squaredNorm())) break;  // no step decreases |r|: a local minimum
     uv = next;
     if (moved <= still) break;
   }
