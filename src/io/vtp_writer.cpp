@@ -36,12 +36,16 @@ void add_curve(const IntersectionRun& run, int ri, std::size_t ci, VtkPolyData* 
   const std::vector<CurveGeometry>* g = ci < run.geometry.size() ? &run.geometry[ci] : nullptr;
   std::vector<std::int64_t> line;
   double s = 0;
-  // The curve's own length rule (march/arc_length.hpp): estimate plus shortfall per segment.
+  // The curve's own lengths: per segment as measured (TracedCurve::segment_lengths), else the
+  // rule of march/arc_length.hpp, estimate plus shortfall.
   const std::vector<double> shortfall = arc_length_shortfalls(c.points, c.closed);
+  const bool measured = c.segment_lengths.size() + 1 == c.points.size();
   for (std::size_t i = 0; i < c.points.size(); ++i) {
     const CurvePoint& p = c.points[i];
     if (i > 0)
-      s += arc_length_estimate(c.points[i - 1].p, c.points[i - 1].t, p.p, p.t) + (i - 1 < shortfall.size() ? shortfall[i - 1] : 0.0);
+      s += measured ? c.segment_lengths[i - 1]
+                    : arc_length_estimate(c.points[i - 1].p, c.points[i - 1].t, p.p, p.t) +
+                          (i - 1 < shortfall.size() ? shortfall[i - 1] : 0.0);
     line.push_back(static_cast<std::int64_t>(d->points.size()));
     d->points.push_back(p.p);
     append_params(p.x, &a->params);

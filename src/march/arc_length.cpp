@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "march_steps.hpp"
 #include "ssimarch/march/tracer.hpp"
@@ -20,14 +21,19 @@ struct Segment {
 // curvature is 0 to that precision and it gives no osculating plane.
 constexpr double kNoPlaneTurn = 1e-12;
 
-// The shortfall of segment i from the three segments centred at j (j = i inside; the nearest
-// interior window at an open curve's ends), segments indexed modulo m.
-double segment_shortfall(const std::vector<Segment>& g, std::size_t i, std::size_t j) {
+// What the circle's estimate may be off by where no shortfall is added: its own correction at
+// the largest turning angle `turn` that the window saw.
+double unresolved_error(double h, double turn) { return h * turn * turn / 24; }
+
+// The shortfall of segment i from the three segments centred at j (segments indexed modulo m;
+// i is j or one of its neighbours); empty where the window does not resolve the curve. *turn:
+// the window's largest turning angle.
+std::optional<double> window_shortfall(const std::vector<Segment>& g, std::size_t i, std::size_t j, double* turn) {
   const std::size_t m = g.size();
   const std::size_t w[3] = {(j + m - 1) % m, j, (j + 1) % m};
-  for (std::size_t k : w)
-    if (g[k].phi > kShortfallMaxTurn) return 0;
-  if (g[i].phi > kShortfallMaxTurn) return 0;
+  *turn = std::max({g[w[0]].phi, g[w[1]].phi, g[w[2]].phi, g[i].phi});
+  const double h = g[i].h;
+  if (*turn > kShortfallMaxTurn) return std::nullopt;
   // Signs relative to the best-defined osculating plane of the window: through an inflection
   // (the lemniscate's node) the binormal flips and the signed curvature passes through 0.
   const Vec3 ref = g[*std::max_element(w, w + 3, [&](std::size_t a, std::size_t b) { return g[a].phi < g[b].phi; })].b;
@@ -43,36 +49,68 @@ double segment_shortfall(const std::vector<Segment>& g, std::size_t i, std::size
     const Vec3 b2 = g[w[2]].b.dot(ref) < 0 ? Vec3(-g[w[2]].b) : g[w[2]].b;
     tau = internal::angle_between(b0, b2) / (d1 + d2);
   }
-  const double k = kappa(i), h = g[i].h;
+  const double k = kappa(i);
   const double shortfall = std::pow(h, 5) / 1440 * (k1 * k1 - 2 * k * k2 + 3 * k * k * tau * tau);
   // Consistency: on a smooth curve resolved by the window the curvature changes across the
   // segment by less than a few times its largest value there, and the shortfall stays below
   // the circle's own correction at the window's largest turning angle, h Phi^2 / 24. Beyond it
   // the samples are noise (tangents at a node, steps of very different lengths): nothing added.
-  const double turn = std::max({g[w[0]].phi, g[w[1]].phi, g[w[2]].phi, g[i].phi});
-  return std::fabs(shortfall) <= h * turn * turn / 24 ? shortfall : 0.0;
+  if (!(std::fabs(shortfall) <= unresolved_error(h, *turn))) return std::nullopt;
+  return shortfall;
+}
+
+// Segment i's shortfall from the window centred at j (j = i inside; the nearest interior window
+// at an open curve's ends) and what may remain wrong: the next term of the expansion, smaller by
+// about (h kappa)^2 <= turn^2 (at an open end the whole shortfall), or, where the windows beside
+// it give another value (steps of very different lengths, the curvature changing faster than the
+// differences follow), the difference.
+SegmentLength segment_shortfall(const std::vector<Segment>& g, std::size_t i, std::size_t j, bool closed) {
+  const std::size_t m = g.size();
+  const double h = g[i].h;
+  double turn = 0;
+  const std::optional<double> s = window_shortfall(g, i, j, &turn);
+  if (!s) return {h, 0.0, unresolved_error(h, turn)};
+  // An open curve's end segment takes its neighbour's window, kappa' carried by one difference:
+  // an extrapolation, which may miss all of it.
+  double error = i == j ? std::fabs(*s) * std::min(1.0, turn * turn) : std::fabs(*s);
+  for (const std::size_t k : {(j + m - 1) % m, (j + 1) % m}) {
+    const bool window = closed ? m > 3 : (k >= 1 && k + 2 <= m && (k + 1 >= i && k <= i + 1) && k != j);
+    double other_turn = 0;
+    if (window)
+      if (const std::optional<double> t = window_shortfall(g, i, k, &other_turn))
+        error = std::max(error, std::fabs(*t - *s));
+  }
+  return {h, *s, error};
 }
 
 }  // namespace
 
-std::vector<double> arc_length_shortfalls(const std::vector<CurvePoint>& points, bool closed) {
+std::vector<SegmentLength> segment_length_estimates(const std::vector<CurvePoint>& points, bool closed) {
   std::size_t n = points.size();
   // A closed curve's list may repeat its first point at the end: the closing segment is then
   // the last listed one, not one back to the start.
   if (closed && n > 1 && points.back().p == points.front().p) --n;
   const std::size_t m = closed ? n : (n > 0 ? n - 1 : 0);  // segments
-  std::vector<double> out(m, 0.0);
-  if (n < 2 || m < 3) return out;
   std::vector<Segment> g(m);
+  std::vector<SegmentLength> out(m);
+  bool differences = m >= 3;
   for (std::size_t i = 0; i < m; ++i) {
     const CurvePoint &a = points[i], &b = points[(i + 1) % n];
     g[i].h = arc_length_estimate(a.p, a.t, b.p, b.t);
     g[i].phi = internal::angle_between(a.t, b.t);
     if (g[i].phi > kNoPlaneTurn) g[i].b = a.t.cross(b.t).normalized();
-    if (!(g[i].h > 0)) return out;  // a repeated point: no differences to take
+    if (!(g[i].h > 0)) differences = false;  // a repeated point: no differences to take
+    out[i] = {g[i].h, 0.0, unresolved_error(g[i].h, g[i].phi)};
   }
-  for (std::size_t i = 0; i < m; ++i)
-    out[i] = segment_shortfall(g, i, closed ? i : std::clamp<std::size_t>(i, 1, m - 2));
+  if (differences)
+    for (std::size_t i = 0; i < m; ++i)
+      out[i] = segment_shortfall(g, i, closed ? i : std::clamp<std::size_t>(i, 1, m - 2), closed);
+  return out;
+}
+
+std::vector<double> arc_length_shortfalls(const std::vector<CurvePoint>& points, bool closed) {
+  std::vector<double> out;
+  for (const SegmentLength& s : segment_length_estimates(points, closed)) out.push_back(s.shortfall);
   return out;
 }
 

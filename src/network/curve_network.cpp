@@ -41,15 +41,18 @@ std::vector<Cut> singular_cuts(const TracedCurve& c, const std::vector<NetworkVe
   return cuts;
 }
 
-// The edge's length as the curve's: each segment's circular-arc estimate plus its shortfall
-// (march/arc_length.hpp), so that a branch's edges add up to its curve's length.
+// The edge's length as the curve's: each segment's measured length (TracedCurve::segment_lengths)
+// or, without it, its circular-arc estimate plus its shortfall (march/arc_length.hpp), so that a
+// branch's edges add up to its curve's length.
 double arc_length(const TracedCurve& c, const std::vector<double>& shortfall, std::size_t first, std::size_t last) {
   double length = 0;
   const std::size_t n = c.points.size();
+  const bool measured = c.segment_lengths.size() + 1 == n;
   auto add = [&](std::size_t a, std::size_t b) {
     for (std::size_t i = a; i < b; ++i)
-      length += arc_length_estimate(c.points[i].p, c.points[i].t, c.points[i + 1].p, c.points[i + 1].t) +
-                (i < shortfall.size() ? shortfall[i] : 0.0);
+      length += measured ? c.segment_lengths[i]
+                         : arc_length_estimate(c.points[i].p, c.points[i].t, c.points[i + 1].p, c.points[i + 1].t) +
+                               (i < shortfall.size() ? shortfall[i] : 0.0);
   };
   if (last > first) {
     add(first, last);

@@ -15,6 +15,7 @@
 
 #include "ssimarch/analytic/conic_pieces.hpp"
 #include "ssimarch/march/arc_length.hpp"
+#include "ssimarch/march/refined_arc_length.hpp"
 #include "ssimarch/march/tracer.hpp"
 #include "ssimarch/pipeline/edge_surface_points.hpp"
 #include "ssimarch/pipeline/parameter_loops.hpp"
@@ -217,6 +218,7 @@ WithBoundaryPoints with_boundary_points(const Clipper& c, const TracedCurve& cur
       at[best_i].push_back(best_t);
   }
   out.curve.points.clear();
+  out.curve.segment_lengths.clear();
   out.at_boundary.clear();
   for (std::size_t i = 0; i + 1 < n; ++i) {
     out.curve.points.push_back(curve.points[i]);
@@ -246,11 +248,20 @@ WithBoundaryPoints with_boundary_points(const Clipper& c, const TracedCurve& cur
   return out;
 }
 
-double length_of(const TracedCurve& c) {
-  double length = 0;
-  for (std::size_t i = 0; i + 1 < c.points.size(); ++i)
-    length += arc_length_estimate(c.points[i].p, c.points[i].t, c.points[i + 1].p, c.points[i + 1].t);
-  return length + arc_length_shortfall(c.points, false);
+// A piece's segments measured as trace_all measures a curve's (march/refined_arc_length.hpp);
+// a piece of a curve of tangential contact by its points alone.
+void measure(const Clipper& c, TracedCurve* piece) {
+  piece->length = 0;
+  piece->segment_lengths.clear();
+  if (piece->tangential_contact) {
+    for (std::size_t i = 0; i + 1 < piece->points.size(); ++i)
+      piece->length +=
+          arc_length_estimate(piece->points[i].p, piece->points[i].t, piece->points[i + 1].p, piece->points[i + 1].t);
+    piece->length += arc_length_shortfall(piece->points, false);
+    return;
+  }
+  piece->segment_lengths = segment_lengths(c.problem, piece->points, false, c.corrector);
+  for (double l : piece->segment_lengths) piece->length += l;
 }
 
 // A point of the curve with where it stands, and at crossings the boundary point itself.
@@ -386,7 +397,7 @@ std::vector<TracedCurve> pieces(const Clipper& c, const TracedCurve& curve, cons
     piece.end_end = end;
     piece.end_message = message;
     piece.closed = false;
-    piece.length = length_of(piece);
+    measure(c, &piece);
     if (piece.points.size() >= 2) out.push_back(piece);
     piece = TracedCurve{};
     piece.tangential_contact = curve.tangential_contact;

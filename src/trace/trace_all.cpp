@@ -10,11 +10,13 @@
 
 #include "ssimarch/march/arc_length.hpp"
 #include "ssimarch/march/predictor.hpp"
+#include "ssimarch/march/refined_arc_length.hpp"
 #include "ssimarch/problem/closed_form_tolerances.hpp"
 #include "ssimarch/problem/curve_jet.hpp"
 #include "ssimarch/problem/gauss_newton.hpp"
 #include "ssimarch/problem/poles_and_trims.hpp"
 #include "ssimarch/trace/branch_length_bound.hpp"
+#include "ssimarch/trace/half_branch_guide.hpp"
 #include "ssimarch/start/certified_start_points.hpp"
 #include "ssimarch/singular/detection.hpp"
 #include "ssimarch/singular/analysis.hpp"
@@ -639,9 +641,20 @@ TraceResult trace_all(const Tracer& unbounded, const std::vector<Vec3>& starts, 
           : std::vector<Vec3>{};
   points_are_not_curves(tracer, registry_merge, radius, &result.stats, &result.curves, reg, &result.isolated_points);
   for (TracedCurve& c : result.curves) explain_bound(bound, &c);
-  // The circular-arc estimates summed while marching fall short where the curvature varies
-  // (docs/marching.md, "Length."): one pass over each finished curve's points adds that.
-  for (TracedCurve& c : result.curves) c.length += arc_length_shortfall(c.points, c.closed);
+  // The circular-arc estimates summed while marching fall short where the curvature varies and
+  // do not resolve cusps and tight turns (docs/marching.md, "Length."): each finished curve is
+  // measured once more from its points, bisected on the curve where they do not suffice.
+  const CorrectorOptions length_corrector{tracer.options().tolerance, tracer.options().max_corrector_iterations};
+  const CurveGuide guide = half_branch_guide(registry.nodes());
+  for (TracedCurve& c : result.curves) {
+    if (c.tangential_contact) {
+      c.length += arc_length_shortfall(c.points, c.closed);
+      continue;
+    }
+    c.segment_lengths = segment_lengths(P, c.points, c.closed, length_corrector, guide);
+    c.length = 0;
+    for (double l : c.segment_lengths) c.length += l;
+  }
   if (reg) result.singular_points = registry.reports();
   // A regular point is no singular point of the curve: the registry holds one only where a
   // parametrisation is degenerate on the curve (a B-spline sphere's pole), for the walk to pass.

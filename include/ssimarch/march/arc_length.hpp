@@ -21,6 +21,20 @@ constexpr double kShortfallMaxTurn = 0.5;
 /// (model units; 0 for fewer than three segments). Add it to the sum of arc_length_estimate.
 double arc_length_shortfall(const std::vector<CurvePoint>& points, bool closed);
 
+/// One segment's length as the points give it: the circular-arc estimate, its shortfall (0 where
+/// the window does not resolve the curve) and what may remain wrong of their sum (model units):
+/// where a shortfall is added, the next term of its expansion, |shortfall| min(1, Phi^2) with Phi
+/// the window's largest turning angle (the expansion is in powers of h kappa <= Phi); where none
+/// is, the circle's own correction at that angle, h Phi^2 / 24.
+struct SegmentLength {
+  double estimate = 0;
+  double shortfall = 0;
+  double error = 0;
+};
+
+/// Per segment, in the order of arc_length_shortfalls.
+std::vector<SegmentLength> segment_length_estimates(const std::vector<CurvePoint>& points, bool closed);
+
 /// The same per segment: entry i belongs to the segment from points[i] to the next point (the
 /// last, of a closed curve not repeating its first point, to the closing segment).
 std::vector<double> arc_length_shortfalls(const std::vector<CurvePoint>& points, bool closed);

@@ -38,7 +38,12 @@ struct CurvePoint {
 struct TracedCurve {
   std::vector<CurvePoint> points;
   bool closed = false;
-  double length = 0;  // arc length (model units), circular-arc estimate per segment
+  double length = 0;  // arc length (model units): the sum of segment_lengths where they are given
+  // Per segment (points i -> i + 1; a closed curve's last point repeats its first), its length
+  // (model units) to kSegmentLengthTolerance (march/refined_arc_length.hpp), as trace_all and the
+  // face clip measured it; empty where the points are the only record (the circular-arc estimate
+  // plus its shortfall, march/arc_length.hpp, stands in). Whoever changes `points` clears it.
+  std::vector<double> segment_lengths;
   Termination start_end = Termination::kClosedLoop;  // why the start end stopped (open curves)
   Termination end_end = Termination::kClosedLoop;
   std::string start_message, end_message;  // details, e.g. the singular point's rank ratio
