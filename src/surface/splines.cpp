@@ -8,6 +8,7 @@
 #include "ssimarch/surface/bspline_surface.hpp"
 #include "ssimarch/surface/frame.hpp"
 #include "ssimarch/surface/spline_basis.hpp"
+#include "ssimarch/surface/spline_limits.hpp"
 #include "edge_samples.hpp"
 
 namespace ssimarch {
@@ -103,12 +104,25 @@ int find_span(std::span<const double> knots, int degree, int n_ctrl, double t) {
 
 }  // namespace internal
 
+namespace {
+
+// kMaxSplineDegree (surface/spline_limits.hpp) along both directions.
+void check_degrees(int u, int v, const std::string& key, const char* what) {
+  if (u <= kMaxSplineDegree && v <= kMaxSplineDegree) return;
+  throw InputError(key, "degrees (" + std::string(what) + ") must be at most " + std::to_string(kMaxSplineDegree) +
+                            " (the largest CAD kernels write, OpenCASCADE's Geom_BSplineSurface::MaxDegree), got [" +
+                            std::to_string(u) + ", " + std::to_string(v) + "]");
+}
+
+}  // namespace
+
 BezierPatch::BezierPatch(const ControlNet& points, const WeightNet& weights, const std::string& where)
     : rational_(!weights.empty()) {
   homogeneous_ = std::make_shared<const std::vector<std::array<double, 4>>>(
       homogeneous_net(points, weights, 2, 2, where, &box_));
   n_ = static_cast<int>(points.size()) - 1;
   m_ = static_cast<int>(points[0].size()) - 1;
+  check_degrees(n_, m_, where + ".control_points", "rows - 1 and points per row - 1");
   domain_ = {{0, 1}, {0, 1}, false, false};
 }
 
@@ -118,6 +132,7 @@ BSplineSurface::BSplineSurface(int degree_u, int degree_v, std::vector<double> k
   if (degree_u < 1 || degree_v < 1)
     throw InputError(where + ".degree", "degrees must be >= 1, got [" + std::to_string(degree_u) + ", " +
                                             std::to_string(degree_v) + "]");
+  check_degrees(degree_u, degree_v, where + ".degree", "[p, q]");
   auto data = std::make_shared<Data>();
   data->homogeneous = homogeneous_net(points, weights, static_cast<std::size_t>(p_) + 1,
                                       static_cast<std::size_t>(q_) + 1, where, &box_);

@@ -170,9 +170,10 @@ TEST_F(porosity_Cli, OverlappingParticlesAreReportedAndFailUnderStrict) {
 TEST_F(porosity_Cli, RangesAreValidatedWithTheReason) {
   std::ofstream(p("ok.csv")) << "x,y,z,d\n0,0,0.5,1\n";
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {"--container-radius 3 --radii 2000000000", "--radii: must be at most 10000000"},
+      {"--container-radius 3 --radii 2000000000", "--radii: must be at most 1000000"},
+      {"--container-radius 3 --radii 10000000", "--radii: must be at most 1000000"},
       {"--container-radius 1e-300", "--container-radius: the radius 1e-300 is below 1e-100"},
-      {"--container-radius 3 --map 10000,10000", "--map: a map of at most 10000000 cells"},
+      {"--container-radius 3 --map 10000,10000", "--map: a map of at most 1000000 cells"},
       {"--container-radius 3 --tolerance nan", "--tolerance: must be a finite number > 0"},
   };
   for (const auto& [args, message] : cases) {

@@ -267,6 +267,29 @@ TEST(BSplineSurface, RejectsInvalidInput) {
   expect_error([&] { return BezierPatch({{Vec3::Zero()}, {Vec3::Zero()}}); }, "bezier.control_points");
 }
 
+// Issue 29 item 4: degrees beyond kMaxSplineDegree (25, OpenCASCADE's largest) are refused by
+// key, before any work; degree 25 itself is a surface.
+TEST(SplineSurfaces, DegreesAreBoundedByTheLargestCadKernelsWrite) {
+  auto where_of = [](auto make) {
+    try {
+      make();
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("at most 25"), std::string::npos) << e.what();
+      return e.where();
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(where_of([] { return BezierPatch(test_net(27, 3)); }), "bezier.control_points");
+  EXPECT_EQ(where_of([] { return BezierPatch(test_net(3, 27)); }), "bezier.control_points");
+  EXPECT_NO_THROW(BezierPatch(test_net(26, 26)));
+  std::vector<double> U(27 + 26 + 1, 0.0), V{0, 0, 1, 1};
+  for (std::size_t i = 27; i < U.size(); ++i) U[i] = 1;
+  EXPECT_EQ(where_of([&] { return BSplineSurface(26, 1, U, V, test_net(27, 2)); }), "bspline.degree");
+  U.assign(26 + 25 + 1, 0.0);
+  for (std::size_t i = 26; i < U.size(); ++i) U[i] = 1;
+  EXPECT_NO_THROW(BSplineSurface(25, 1, U, V, test_net(26, 2)));
+}
+
 TEST(SplineBasis, SpanSearchClampsToTheDomain) {
   const std::vector<double> U{0, 0, 0, 0.3, 0.3, 0.7, 1, 1, 1};  // degree 2, 6 points
   EXPECT_EQ(internal::find_span(U, 2, 6, 0.0), 2);
