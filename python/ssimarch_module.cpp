@@ -16,6 +16,10 @@
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/io/scene.hpp"
 #include "ssimarch/io/singular_json.hpp"
+#include "ssimarch/io/step_intersect.hpp"
+#include "ssimarch/io/step_section.hpp"
+#include "ssimarch/io/step_surface_json.hpp"
+#include "ssimarch/step/units.hpp"
 #include "ssimarch/io/topology_json.hpp"
 #include "ssimarch/io/trace_writers.hpp"
 #include "ssimarch/pipeline/option_table.hpp"
@@ -150,6 +154,120 @@ PyTrace trace(const py::object& scene, const py::object& other, const py::object
   const TraceRequest request = request_of(only, overrides);
   job->result = python::run_interruptible([&] { return trace_scene(job->scene, request); });
   return PyTrace{std::move(job)};
+}
+
+// ---- STEP models (issue 28: `ssimarch faces`, `section` and `intersect` from Python) -----------
+
+// A face that could not be read is left out, as the CLI leaves it out, and said as a RuntimeWarning
+// (the CLI's stderr line); warnings.simplefilter("error", RuntimeWarning) makes it an exception.
+void warn_not_read(const std::vector<std::string>& not_read, const char* function) {
+  for (const std::string& w : not_read) {
+    const std::string m = std::string(function) + ": not read, left out: " + w;
+    if (PyErr_WarnEx(PyExc_RuntimeWarning, m.c_str(), 2) != 0) throw py::error_already_set();
+  }
+}
+
+PyTrace trace_generated(const nlohmann::json& scene_json, const std::string& source, const py::kwargs& overrides) {
+  auto job = std::make_shared<TraceJob>();
+  const TraceRequest request = request_of(py::none(), overrides);  // the options checked even with no pair
+  if (scene_json["intersections"].empty()) return PyTrace{std::move(job)};
+  job->scene = parse_scene(scene_json.dump(), source);
+  job->result = python::run_interruptible([&] { return trace_scene(job->scene, request); });
+  return PyTrace{std::move(job)};
+}
+
+// The model's length unit and its faces as `ssimarch faces` lists them, each with its placed box
+// (None, and the reason in "error", where its surface cannot be read).
+py::dict read_step(const std::string& path) {
+  const StepModel model = StepModel::read(path);
+  const StepLengthUnit unit = step_length_unit(model.file());
+  py::list faces;
+  for (const StepFace& f : model.faces()) {
+    py::dict d;
+    d["face"] = f.index;
+    d["entity"] = f.entity;
+    d["line"] = f.line;
+    d["surface_type"] = f.surface_type;
+    d["instance"] = f.instance;
+    d["box"] = py::none();
+    d["error"] = py::none();
+    try {
+      const Box b = model.surface(f.entity, f.placement).box();
+      d["box"] = py::make_tuple(py::make_tuple(b.x.lo, b.y.lo, b.z.lo), py::make_tuple(b.x.hi, b.y.hi, b.z.hi));
+    } catch (const InputError& e) {
+      d["error"] = std::string(e.what());
+    }
+    faces.append(d);
+  }
+  py::dict out;
+  out["unit"] =
+      py::dict(py::arg("name") = unit.name, py::arg("metres") = unit.metres, py::arg("several") = unit.several);
+  out["faces"] = faces;
+  return out;
+}
+
+// "X,Y,Z,NX,NY,NZ" of one plane given as six numbers, for the CLI's parser and messages.
+SectionPlane plane_of(const py::handle& p, const std::string& where) {
+  std::vector<double> v;
+  try {
+    v = p.cast<std::vector<double>>();
+  } catch (const py::cast_error&) {
+    throw InputError(where, "expected six numbers X, Y, Z, NX, NY, NZ (a point and the normal)");
+  }
+  std::ostringstream text;
+  text.precision(17);
+  for (std::size_t i = 0; i < v.size(); ++i) text << (i ? "," : "") << v[i];
+  return parse_section_plane(text.str(), where);
+}
+
+PyTrace section(const std::string& model_path, const py::object& planes, const std::string& faces,
+                const py::kwargs& overrides) {
+  std::vector<SectionPlane> list;
+  const py::sequence seq = planes.cast<py::sequence>();
+  const bool one = seq.size() == 6 && !py::isinstance<py::sequence>(seq[0]);
+  if (one) list.push_back(plane_of(planes, "planes"));
+  for (std::size_t k = 0; !one && k < seq.size(); ++k)
+    list.push_back(plane_of(seq[k], "planes[" + std::to_string(k) + "]"));
+  if (list.empty()) throw InputError("planes", "at least one plane X, Y, Z, NX, NY, NZ is required");
+  const StepModel model = StepModel::read(model_path);
+  const SectionScene s =
+      step_section_scene(std::filesystem::absolute(model_path), model, step_face_list(faces, model, "faces", 1), list);
+  warn_not_read(s.not_read, "section");
+  return trace_generated(s.scene, model_path, overrides);
+}
+
+PyTrace intersect(const std::string& a_path, const py::object& b_path, const std::string& a_faces,
+                  const std::string& b_faces, const py::kwargs& overrides) {
+  const std::string b = b_path.is_none() ? a_path : b_path.cast<std::string>();
+  std::error_code unreadable;  // a missing file is reported by its reader below
+  const bool same = b == a_path || std::filesystem::equivalent(a_path, b, unreadable);
+  const StepModel ma = StepModel::read(a_path);
+  const std::unique_ptr<StepModel> mb = same ? nullptr : std::make_unique<StepModel>(StepModel::read(b));
+  const StepModel& b_model = same ? ma : *mb;
+  const StepFaceSet sa{std::filesystem::absolute(a_path), &ma, step_face_list(a_faces, ma, "a_faces", 1)};
+  const StepFaceSet sb{std::filesystem::absolute(b), &b_model, step_face_list(b_faces, b_model, "b_faces", 1)};
+  const IntersectScene s = step_intersect_scene(sa, sb, same);
+  warn_not_read(s.not_read, "intersect");
+  return trace_generated(s.scene, a_path, overrides);
+}
+
+void bind_step(py::module_& m) {
+  m.def("read_step", &read_step, py::arg("path"),
+        "The length unit ({'name', 'metres', 'several'}: as the file declares it; coordinates are kept in it) and "
+        "the faces of a STEP model as `ssimarch faces` numbers them (list of dicts face, entity, line, "
+        "surface_type, instance (the part's path in the assembly), box ((x0, y0, z0), (x1, y1, z1)) placed, or "
+        "None with the reason in error). Raises InputError naming file:line for a malformed file (docs/cad.md).");
+  m.def("section", &section, py::arg("model"), py::arg("planes"), py::kw_only(), py::arg("faces") = "all",
+        "The curves where planes cut a STEP model, as `ssimarch section` (docs/cad.md, \"Sections\"): planes is "
+        "one (X, Y, Z, NX, NY, NZ) or a list of them; faces 'all', '3,7' or 'part:NAME'. One intersection "
+        "faceI-planeK per face whose box a plane reaches, each face trimmed to its loops. Keyword options as "
+        "for trace. Unreadable faces are left out with a RuntimeWarning. Returns a Trace.");
+  m.def("intersect", &intersect, py::arg("a"), py::arg("b") = py::none(), py::kw_only(), py::arg("a_faces") = "all",
+        py::arg("b_faces") = "all",
+        "The curves where the faces of one STEP part or model meet another's, as `ssimarch intersect` (docs/cad.md, "
+        "\"Part against part\"): b None is a's file; face sets 'all', '3,7' or 'part:NAME'; pairs whose boxes are "
+        "apart are not traced. One intersection faceI-faceJ (one model) or aI-bJ (two) per pair. Keyword options "
+        "as for trace. Unreadable faces are left out with a RuntimeWarning. Returns a Trace.");
 }
 
 // ---- trace results ----------------------------------------------------------------------------
@@ -294,6 +412,7 @@ PYBIND11_MODULE(_ssimarch, m) {
   py::register_exception<ssimarch::InputError>(m, "InputError", PyExc_ValueError);
   ssimarch::python::main_thread() = std::this_thread::get_id();  // imports run on the main thread
   ssimarch::bind_trace(m);
+  ssimarch::bind_step(m);
   ssimarch::bind_surface(m);
   ssimarch::bind_curve_geometry(m);
   py::module_ porosity = m.def_submodule("porosity", "Porosity profiles of packed beds (docs/porosity.md).");

@@ -7,10 +7,6 @@
 
 #include "commands.hpp"
 #include "run_budget.hpp"
-#include "run_progress.hpp"
-#include "ssimarch/core/thread_pool.hpp"
-#include "ssimarch/io/output_files.hpp"
-#include "ssimarch/io/scene.hpp"
 #include "ssimarch/io/step_section.hpp"
 #include "ssimarch/io/step_surface_json.hpp"
 #include "trace_flags.hpp"
@@ -24,11 +20,7 @@ struct SectionArgs {
   std::string model;
   std::vector<std::string> planes;
   std::string faces = "all";
-  std::string output = "-";
-  std::string format;
-  bool quiet = false;
-  unsigned threads = 0;
-  TraceOptionFlags options;
+  GeneratedSceneFlags out;
 };
 
 // Per plane: the faces it cuts, their curves and total length; then what was left out.
@@ -60,27 +52,12 @@ int run_section(const SectionArgs& a) {
   if (a.planes.empty()) throw CliError("section: at least one --plane X,Y,Z,NX,NY,NZ is required (--help)");
   std::vector<SectionPlane> planes;
   for (const std::string& p : a.planes) planes.push_back(parse_section_plane(p, "--plane"));
-  if (a.threads > 0) set_thread_count(a.threads);
   const StepModel model = StepModel::read(a.model, input_limits());
   const std::vector<int> faces = step_face_list(a.faces, model, "--faces", 1);
   const SectionScene s = step_section_scene(std::filesystem::absolute(a.model), model, faces, planes);
   for (const std::string& w : s.not_read) std::cerr << "section: not read, left out: " << w << "\n";
-  if (a.output != "-") refuse_input_as_output(a.output);
-  const OutputFormat f =
-      a.format.empty() ? (a.output == "-" ? OutputFormat::kJson : format_from_path(a.output)) : parse_format(a.format);
-  TraceRequest request{{}, "--intersection", trace_overrides(a.options)};
-  add_format_overrides(f, &request);
-  TraceJobResult job;
-  if (s.pairs > 0) {
-    const Scene scene = parse_scene(s.scene.dump(), a.model, {}, input_limits());
-    RunProgress progress(a.quiet);
-    job = trace_scene(scene, request);
-    progress.meter().close();
-    write_runs(job.runs, f, a.output, &scene);
-  } else {
-    write_runs(job.runs, f, a.output, nullptr);
-  }
-  if (!a.quiet) print_section_summary(job.runs, planes.size(), s);
+  const TraceJobResult job = trace_generated_scene(s.scene, a.model, a.out);
+  if (!a.out.quiet) print_section_summary(job.runs, planes.size(), s);
   return job.complete() && s.not_read.empty() && s.pairs > 0 ? 0 : 1;
 }
 
@@ -105,16 +82,7 @@ void add_section_command(CLI::App& app, Commands& commands) {
       ->required();
   cmd->add_option("--faces", args->faces,
                   "The faces to cut: numbers as `ssimarch faces MODEL.step` lists them (I[,J,...]) or all (default)");
-  cmd->add_option("-o,--output", args->output, "Output file; '-' for standard output (default)");
-  cmd->add_option(
-      "--format", args->format,
-      "json | csv | obj | svg | step | vtp | vtp-ascii | html (default: from the output file's extension; else json)");
-  add_trace_option_flags(cmd, &args->options);
-  cmd->add_option("--threads", args->threads,
-                  "Threads for the faces (default: every core; the result does not depend on it)");
-  cmd->add_flag("-q,--quiet", args->quiet, "No summary and no progress on stderr");
-  add_progress_option(cmd);
-  add_budget_options(cmd);
+  add_generated_scene_flags(cmd, &args->out, "faces");
   commands.add(cmd, [args] { return run_section(*args); });
 }
 

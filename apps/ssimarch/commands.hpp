@@ -54,6 +54,7 @@ class Commands {
 
 void add_trace_command(CLI::App& app, Commands& commands);
 void add_section_command(CLI::App& app, Commands& commands);
+void add_intersect_command(CLI::App& app, Commands& commands);
 void add_eval_command(CLI::App& app, Commands& commands);
 void add_demo_command(CLI::App& app, Commands& commands);
 void add_surfaces_command(CLI::App& app, Commands& commands);

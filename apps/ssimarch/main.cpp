@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   ssimarch::cli::Commands commands;
   ssimarch::cli::add_trace_command(app, commands);
   ssimarch::cli::add_section_command(app, commands);
+  ssimarch::cli::add_intersect_command(app, commands);
   ssimarch::cli::add_eval_command(app, commands);
   ssimarch::cli::add_demo_command(app, commands);
   ssimarch::cli::add_surfaces_command(app, commands);

@@ -2,6 +2,13 @@
 
 #include <algorithm>
 
+#include "commands.hpp"
+#include "run_budget.hpp"
+#include "run_progress.hpp"
+#include "ssimarch/core/thread_pool.hpp"
+#include "ssimarch/io/output_files.hpp"
+#include "ssimarch/io/scene.hpp"
+
 namespace ssimarch::cli {
 
 void add_trace_option_flags(CLI::App* cmd, TraceOptionFlags* flags) {
@@ -36,6 +43,41 @@ void add_format_overrides(OutputFormat format, TraceRequest* request) {
     request->overrides.push_back({find_trace_option("bspline"), std::string("true"), "--format step"});
   if ((format == OutputFormat::kVtp || format == OutputFormat::kVtpAscii) && !set("geometry"))
     request->overrides.push_back({find_trace_option("geometry"), std::string("mixed"), "--format vtp"});
+}
+
+void add_generated_scene_flags(CLI::App* cmd, GeneratedSceneFlags* flags, const std::string& parallel) {
+  cmd->add_option("-o,--output", flags->output, "Output file; '-' for standard output (default)");
+  cmd->add_option(
+      "--format", flags->format,
+      "json | csv | obj | svg | step | vtp | vtp-ascii | html (default: from the output file's extension; else json)");
+  add_trace_option_flags(cmd, &flags->options);
+  cmd->add_option("--threads", flags->threads,
+                  "Threads for the " + parallel + " (default: every core; the result does not depend on it)");
+  cmd->add_flag("-q,--quiet", flags->quiet, "No summary and no progress on stderr");
+  add_progress_option(cmd);
+  add_budget_options(cmd);
+}
+
+TraceJobResult trace_generated_scene(const nlohmann::json& scene_json, const std::string& source,
+                                     const GeneratedSceneFlags& flags) {
+  if (flags.threads > 0) set_thread_count(flags.threads);
+  if (flags.output != "-") refuse_input_as_output(flags.output);
+  const OutputFormat f = flags.format.empty()
+                             ? (flags.output == "-" ? OutputFormat::kJson : format_from_path(flags.output))
+                             : parse_format(flags.format);
+  TraceRequest request{{}, "--intersection", trace_overrides(flags.options)};
+  add_format_overrides(f, &request);
+  TraceJobResult job;
+  if (scene_json["intersections"].empty()) {
+    write_runs(job.runs, f, flags.output, nullptr);
+    return job;
+  }
+  const Scene scene = parse_scene(scene_json.dump(), source, {}, input_limits());
+  RunProgress progress(flags.quiet);
+  job = trace_scene(scene, request);
+  progress.meter().close();
+  write_runs(job.runs, f, flags.output, &scene);
+  return job;
 }
 
 }  // namespace ssimarch::cli

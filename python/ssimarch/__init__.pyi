@@ -136,6 +136,22 @@ def trace(
     **kwargs: Union[bool, float, int, str],
 ) -> Trace: ...
 def trace_options() -> list[str]: ...
+def read_step(path: str) -> dict[str, Any]: ...
+def section(
+    model: str,
+    planes: Sequence[float] | Sequence[Sequence[float]],
+    *,
+    faces: str = ...,
+    **kwargs: Union[bool, float, int, str],
+) -> Trace: ...
+def intersect(
+    a: str,
+    b: Optional[str] = ...,
+    *,
+    a_faces: str = ...,
+    b_faces: str = ...,
+    **kwargs: Union[bool, float, int, str],
+) -> Trace: ...
 def curve_geometry(
     scene: _Scene,
     other: Optional[Surface] = ...,

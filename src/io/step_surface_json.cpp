@@ -61,13 +61,23 @@ std::vector<int> step_face_list(const std::string& text, const StepModel& model,
   std::vector<int> out;
   if (text == "all") {
     for (int i = 1; i <= n; ++i) out.push_back(i);
+  } else if (text.rfind("part:", 0) == 0) {
+    const std::string name = text.substr(5);
+    if (name.empty()) throw InputError(where, "part: needs a name (part:NAME, a part of the faces' instance paths)");
+    for (const StepFace& f : model.faces())
+      if (f.instance.find(name) != std::string::npos) out.push_back(f.index);
+    if (out.empty())
+      throw InputError(where, "no face of " + model.file().source + " is placed as a part whose path contains \"" +
+                                  name + "\" (`ssimarch faces` lists the paths)");
   } else {
     std::size_t at = 0;
     while (at <= text.size()) {
       const std::size_t comma = std::min(text.find(',', at), text.size());
       const std::string item = text.substr(at, comma - at);
       const bool digits = !item.empty() && item.size() <= 9 && item.find_first_not_of("0123456789") == std::string::npos;
-      if (!digits) throw InputError(where, "expected face numbers separated by commas (e.g. 3,7) or all, got \"" + text + "\"");
+      if (!digits)
+        throw InputError(
+            where, "expected face numbers separated by commas (e.g. 3,7), part:NAME or all, got \"" + text + "\"");
       const int k = std::stoi(item);
       model.face(k, where);  // throws naming how many faces there are
       if (std::find(out.begin(), out.end(), k) != out.end())

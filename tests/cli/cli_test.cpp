@@ -487,6 +487,46 @@ TEST(Cli, TraceFacesOfAStepModel) {
 // loops (plate_with_hole.step as above). x = 0 cuts the plate's line |y| <= 3 without the hole
 // (two pieces of 2) and the cylinder's circle of radius 0.5: 4 + pi; x = 2.9 only the plate's
 // line (6), the cylinder (|x| <= 2.5) left out by its box; both planes at once give both.
+// Issue 28 item 4: part against part. rod_assembly.step (make_trim_models.py): rods 1 and 3 stand
+// through the plate z = 0 (circles of radius 1), rod 2 lies along y with its axis 0.5 above it
+// (two lines x = +-sqrt(3)/2 of length 10); the rods' boxes are apart.
+TEST(Cli, IntersectPartsOfAStepModel) {
+  const std::string model = std::string(SSIMARCH_SOURCE_DIR) + "/tests/step/data/rod_assembly.step";
+  auto total = [](const nlohmann::json& j) {
+    double sum = 0;
+    for (const auto& i : j["intersections"])
+      for (const auto& c : i["curves"]) sum += c["length"].get<double>();
+    return sum;
+  };
+  const double exact = 4 * std::numbers::pi + 20;
+  CliRun all = run("intersect " + model);
+  ASSERT_EQ(all.status, 0) << all.err;
+  const auto j = nlohmann::json::parse(all.out);
+  ASSERT_EQ(j["intersections"].size(), 3u);
+  EXPECT_EQ(j["intersections"][0]["name"], "face1-face4");
+  EXPECT_NEAR(total(j), exact, 1e-9 * exact);
+  EXPECT_THAT(all.err, HasSubstr("3 face pair(s) traced, 3 left out"));
+  CliRun parts = run("intersect " + model + " --a-faces part:plate --b-faces part:rod");
+  ASSERT_EQ(parts.status, 0) << parts.err;
+  EXPECT_NEAR(total(nlohmann::json::parse(parts.out)), exact, 1e-9 * exact);
+  EXPECT_THAT(parts.err, HasSubstr("3 face pair(s) traced, 0 left out"));
+  // Two files: faces named a<i> and b<j>. The plates of both lie in z = 0: coincident, exit 1.
+  const std::string other = std::string(SSIMARCH_SOURCE_DIR) + "/tests/step/data/rod_in_hole.step";
+  CliRun two = run("intersect " + model + " " + other + " -q");
+  EXPECT_EQ(two.status, 1);
+  const auto jt = nlohmann::json::parse(two.out);
+  ASSERT_FALSE(jt["intersections"].empty());
+  EXPECT_EQ(jt["intersections"][0]["name"].get<std::string>().substr(0, 1), "a");
+  // Bad face sets name their option.
+  CliRun none = run("intersect " + model + " --a-faces part:nothing -q");
+  EXPECT_EQ(none.status, 2);
+  EXPECT_THAT(none.err, HasSubstr("--a-faces"));
+  CliRun nine = run("intersect " + model + " --b-faces 9 -q");
+  EXPECT_EQ(nine.status, 2);
+  EXPECT_THAT(nine.err, HasSubstr("--b-faces"));
+  EXPECT_THAT(run("intersect --help").out, HasSubstr("--a-faces"));
+}
+
 TEST(Cli, SectionOfAStepModelByPlanes) {
   const std::string model = std::string(SSIMARCH_SOURCE_DIR) + "/tests/step/data/plate_with_hole.step";
   auto total = [](const nlohmann::json& j, const std::string& suffix) {

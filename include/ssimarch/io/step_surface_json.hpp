@@ -39,8 +39,10 @@ Surface step_surface_from_json(const nlohmann::json& spec, const std::filesystem
                                std::optional<SplineSurfaceData>* spline = nullptr);
 
 /// The faces of a STEP model to intersect, from a command-line list: "3,7,12" (numbers as
-/// `ssimarch faces` lists them, each at most once, at least min_count) or "all". Throws
-/// InputError(where, ...) for anything else or a face the model does not have.
+/// `ssimarch faces` lists them, each at most once, at least min_count), "part:NAME" (every face
+/// whose instance path in the assembly contains NAME, e.g. part:rod for rod_1 and sub_1/rod_2) or
+/// "all". Throws InputError(where, ...) for anything else, a face the model does not have or a
+/// part no face is placed as.
 std::vector<int> step_face_list(const std::string& text, const StepModel& model, const std::string& where,
                                 std::size_t min_count = 2);
 
