@@ -4,7 +4,6 @@
 #include <limits>
 
 #include "ssimarch/march/arc_length.hpp"
-#include "ssimarch/march/tracer.hpp"
 
 namespace ssimarch {
 
@@ -36,16 +35,11 @@ void add_curve(const IntersectionRun& run, int ri, std::size_t ci, VtkPolyData* 
   const std::vector<CurveGeometry>* g = ci < run.geometry.size() ? &run.geometry[ci] : nullptr;
   std::vector<std::int64_t> line;
   double s = 0;
-  // The curve's own lengths: per segment as measured (TracedCurve::segment_lengths), else the
-  // rule of march/arc_length.hpp, estimate plus shortfall.
-  const std::vector<double> shortfall = arc_length_shortfalls(c.points, c.closed);
-  const bool measured = c.segment_lengths.size() + 1 == c.points.size();
+  // The curve's own segment lengths (march/arc_length.hpp, recorded_segment_lengths).
+  const std::vector<double> segments = recorded_segment_lengths(c);
   for (std::size_t i = 0; i < c.points.size(); ++i) {
     const CurvePoint& p = c.points[i];
-    if (i > 0)
-      s += measured ? c.segment_lengths[i - 1]
-                    : arc_length_estimate(c.points[i - 1].p, c.points[i - 1].t, p.p, p.t) +
-                          (i - 1 < shortfall.size() ? shortfall[i - 1] : 0.0);
+    if (i > 0) s += segments[i - 1];
     line.push_back(static_cast<std::int64_t>(d->points.size()));
     d->points.push_back(p.p);
     append_params(p.x, &a->params);

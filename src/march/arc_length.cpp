@@ -108,6 +108,18 @@ std::vector<SegmentLength> segment_length_estimates(const std::vector<CurvePoint
   return out;
 }
 
+std::vector<double> recorded_segment_lengths(const TracedCurve& c) {
+  const std::size_t n = c.points.size();
+  if (n < 2) return {};
+  if (c.segment_lengths.size() + 1 == n) return c.segment_lengths;
+  const std::vector<SegmentLength> s = segment_length_estimates(c.points, c.closed);
+  std::vector<double> out(n - 1);
+  for (std::size_t i = 0; i + 1 < n; ++i)
+    out[i] = i < s.size() ? s[i].estimate + s[i].shortfall
+                          : arc_length_estimate(c.points[i].p, c.points[i].t, c.points[i + 1].p, c.points[i + 1].t);
+  return out;
+}
+
 std::vector<double> arc_length_shortfalls(const std::vector<CurvePoint>& points, bool closed) {
   std::vector<double> out;
   for (const SegmentLength& s : segment_length_estimates(points, closed)) out.push_back(s.shortfall);

@@ -4,7 +4,6 @@
 #include <numeric>
 
 #include "ssimarch/march/arc_length.hpp"
-#include "ssimarch/march/tracer.hpp"
 
 namespace ssimarch {
 
@@ -41,18 +40,13 @@ std::vector<Cut> singular_cuts(const TracedCurve& c, const std::vector<NetworkVe
   return cuts;
 }
 
-// The edge's length as the curve's: each segment's measured length (TracedCurve::segment_lengths)
-// or, without it, its circular-arc estimate plus its shortfall (march/arc_length.hpp), so that a
-// branch's edges add up to its curve's length.
-double arc_length(const TracedCurve& c, const std::vector<double>& shortfall, std::size_t first, std::size_t last) {
+// The edge's length as the curve's: the sum of its segments' recorded lengths
+// (march/arc_length.hpp, recorded_segment_lengths), so that a branch's edges add up to its curve's length.
+double arc_length(const TracedCurve& c, const std::vector<double>& segments, std::size_t first, std::size_t last) {
   double length = 0;
   const std::size_t n = c.points.size();
-  const bool measured = c.segment_lengths.size() + 1 == n;
   auto add = [&](std::size_t a, std::size_t b) {
-    for (std::size_t i = a; i < b; ++i)
-      length += measured ? c.segment_lengths[i]
-                         : arc_length_estimate(c.points[i].p, c.points[i].t, c.points[i + 1].p, c.points[i + 1].t) +
-                               (i < shortfall.size() ? shortfall[i] : 0.0);
+    for (std::size_t i = a; i < b; ++i) length += segments[i];
   };
   if (last > first) {
     add(first, last);
@@ -83,9 +77,9 @@ NetworkBranch branch_of(const Problem& P, const TracedCurve& c, int ci, std::vec
   const std::size_t n = c.points.size();
   std::vector<bool> corner(n, false);
   for (const Cut& k : cuts) corner[k.index] = true;
-  const std::vector<double> shortfall = arc_length_shortfalls(c.points, c.closed);
+  const std::vector<double> segments = recorded_segment_lengths(c);
   auto add_edge = [&](const Cut& a, const Cut& z) {
-    net->edges.push_back({a.vertex, z.vertex, ci, a.index, z.index, arc_length(c, shortfall, a.index, z.index)});
+    net->edges.push_back({a.vertex, z.vertex, ci, a.index, z.index, arc_length(c, segments, a.index, z.index)});
     b.edges.push_back(static_cast<int>(net->edges.size()) - 1);
   };
   if (c.closed) {

@@ -35,6 +35,12 @@ struct SegmentLength {
 /// Per segment, in the order of arc_length_shortfalls.
 std::vector<SegmentLength> segment_length_estimates(const std::vector<CurvePoint>& points, bool closed);
 
+/// The length of each segment between consecutive listed points (points i -> i + 1), as the curve
+/// records it: its measured TracedCurve::segment_lengths where they match its points, else the
+/// estimate plus its shortfall. What the network's edges and the VTP arc length sum, so that they
+/// add up to the curve's length.
+std::vector<double> recorded_segment_lengths(const TracedCurve& c);
+
 /// The same per segment: entry i belongs to the segment from points[i] to the next point (the
 /// last, of a closed curve not repeating its first point, to the closing segment).
 std::vector<double> arc_length_shortfalls(const std::vector<CurvePoint>& points, bool closed);

@@ -69,8 +69,8 @@ inline constexpr int kRefinementStrikes = 2;
 /// more than that tolerance of the segment and by at most half of what its parent's halves
 /// disagreed (a refinement that does not converge measures noise and stops), never below
 /// kRefinementFloorRatio point tolerances; so the work is bounded by log2 of the segment over the
-/// floor in depth. Curves of tangential contact keep the estimate: their normals are parallel
-/// everywhere and no point of them can be found on a plane.
+/// floor in depth. Callers keep the estimate for curves of tangential contact (trace_all, the face
+/// clip): their normals are parallel everywhere and no point of them can be found on a plane.
 std::vector<double> segment_lengths(const Problem& problem, const std::vector<CurvePoint>& points, bool closed,
                                     const CorrectorOptions& corrector, const CurveGuide& guide = {});
 
