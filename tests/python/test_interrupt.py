@@ -59,6 +59,10 @@ TRACE_CHILD = textwrap.dedent("""
     import sys, time
     import ssimarch
 
+    # Once before the signal can come: the first call imports modules lazily (json, inside the
+    # bindings), and a SIGINT that lands inside an import lock is dropped by Python's import
+    # machinery (seen in CI on a loaded machine: the trace then ran to its end).
+    ssimarch.trace(sys.argv[1], only="viviani")
     print("start", flush=True)
     t0 = time.monotonic()
     try:
