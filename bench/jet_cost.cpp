@@ -4,7 +4,8 @@
 // pair 1, plus points and jets of a bicubic NURBS surface on its Bezier pieces against de Boor
 // on its net (issue 27 item 1), and its interval enclosures (what the certified search
 // evaluates: an interval, a gradient over intervals, a nested one) from the pieces' restricted
-// control nets against de Boor run in the interval type, with the enclosures' widths (item 2).
+// control nets against de Boor run in the interval type, with the enclosures' widths (item 2),
+// and the elementary functions of order-12 jets (graded recurrences against Horner's rule).
 //
 //   jet_cost [--reps N]        (cmake --preset bench && cmake --build build-bench --target jet_cost)
 //
@@ -30,6 +31,7 @@
 #include "ssimarch/start/gradient.hpp"
 #include "ssimarch/start/interval_number.hpp"
 #include "ssimarch/surface/bspline_surface.hpp"
+#include "ssimarch/surface/surface.hpp"
 #include "testing/surface_pairs.hpp"
 
 using namespace ssimarch;
@@ -171,6 +173,43 @@ void interval_rows(int reps) {
   }
 }
 
+// Elementary functions of an order-12 jet in two variables (the local curves' jets, built at
+// every singular-point analysis, contact point and hunt sample): the graded recurrences of
+// core/jet.hpp against Horner's rule with the univariate series (Jet::apply), and a torus's
+// point as such a jet (four of them).
+void elementary_rows(int reps) {
+  using J = Jet<2, 12>;
+  const J s = J::variable(0, 0.7), t = J::variable(1, -0.2);
+  J a = 1.1 + 0.3 * s + s * t - 0.2 * t * t;
+  double sink = 0;
+  std::printf("\n%-34s %12s %12s\n", "Jet<2,12> function", "recurrence", "Horner");
+  const auto row = [&](const char* name, auto&& fast, auto&& horner) {
+    const double f = ns_per_call(reps, 200, [&] {
+      a[2] += 1e-12;
+      sink += fast(a)[50];
+    });
+    const double h = ns_per_call(reps, 200, [&] {
+      a[2] += 1e-12;
+      sink += horner(a)[50];
+    });
+    std::printf("%-34s %12.0f %12.0f\n", name, f, h);
+  };
+  row(
+      "sin", [](const J& x) { return sin(x); }, [](const J& x) { return J::apply(x, internal::sin<12>(x.value())); });
+  row(
+      "exp", [](const J& x) { return exp(x); }, [](const J& x) { return J::apply(x, internal::exp<12>(x.value())); });
+  row(
+      "sqrt", [](const J& x) { return sqrt(x); },
+      [](const J& x) { return J::apply(x, internal::sqrt<12>(x.value())); });
+  const Surface torus = Surface(Torus(Vec3::Zero(), Vec3::UnitZ(), 2.0, 1.0));
+  const double p = ns_per_call(reps, 200, [&] {
+    a[2] += 1e-12;
+    sink += torus.point(a, a).x[50];
+  });
+  std::printf("%-34s %12.0f\n", "torus point (4 sin/cos)", p);
+  if (sink == 42) std::printf(" ");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -180,5 +219,6 @@ int main(int argc, char** argv) {
   problem_rows(reps);
   nurbs_rows(reps);
   interval_rows(reps);
+  elementary_rows(reps);
   return 0;
 }

@@ -4,7 +4,9 @@
 #include <cmath>
 #include <limits>
 
+#include "ssimarch/singular/third_order_point.hpp"
 #include "ssimarch/trace/tangential_contact.hpp"
+#include "ssimarch/trace/trace_tolerances.hpp"
 
 namespace ssimarch {
 
@@ -26,6 +28,20 @@ int SingularRegistry::add(const SingularLocation& s) {
       SingularLocation at = *c;
       at.x = problem_.wrap(c->x);
       static_cast<SingularAnalysis&>(n) = analyse_singular_point(problem_, at, without_branches);
+    }
+  }
+  // A node whose quadratic form is no larger than the location's error is a point of multiplicity
+  // 3 located off it (trace_tolerances.hpp kThirdOrderHessianFall): refined, and re-analysed there.
+  if (n.analysed() && n.kind.type == SingularType::kNode) {
+    const ThirdOrderPoint t = third_order_point(problem_, n.location, merge_);
+    if (t.hessian_norm <= kThirdOrderHessianFall * t.initial_hessian_norm) {
+      SingularAnalysis a = analyse_singular_point(problem_, t.location, without_branches);
+      if (a.analysed() && a.kind.multiplicity >= 3) {
+        for (std::size_t i = 0; i < nodes_.size(); ++i)
+          if ((nodes_[i].location.point - a.location.point).norm() <= merge_) return static_cast<int>(i);
+        a.location.x = problem_.wrap(a.location.x);
+        static_cast<SingularAnalysis&>(n) = std::move(a);
+      }
     }
   }
   if (const std::optional<int> same = within_resolution(n)) return *same;

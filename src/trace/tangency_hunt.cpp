@@ -129,7 +129,11 @@ void attach_crossings(SingularRegistry* registry, std::vector<TracedCurve>* curv
     for (std::size_t ci = 0; ci < curves->size(); ++ci) {
       TracedCurve& c = (*curves)[ci];
       const auto& on = registry->nodes()[n].curves;
-      if (c.tangential_contact || std::find(on.begin(), on.end(), static_cast<int>(ci)) != on.end()) continue;
+      // A contact curve's march records the crossings it passes without making them points of
+      // its own (march_contact steps over them): they become points here too, or the network
+      // would not cut the contact curve there and its crossing branch would be another component.
+      const bool met = std::find(on.begin(), on.end(), static_cast<int>(ci)) != on.end();
+      if (met && !c.tangential_contact) continue;
       insert_into(registry, static_cast<int>(n), static_cast<int>(ci), &c, radius);
     }
   }

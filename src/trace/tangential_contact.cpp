@@ -10,6 +10,7 @@
 #include "ssimarch/march/pole_passage.hpp"
 #include "ssimarch/march/tracer.hpp"
 #include "ssimarch/problem/poles_and_trims.hpp"
+#include "ssimarch/singular/third_order_point.hpp"
 #include "ssimarch/problem/singular_tolerances.hpp"
 #include "ssimarch/trace/trace_tolerances.hpp"
 #include "ssimarch/singular/classify.hpp"
@@ -64,6 +65,12 @@ ContactPoint correct_onto_contact(const Problem& P, const VecX& guess, const Con
   p.location.x = guess;
   VecX x = guess;
   const double floor = 1e-15 * P.scale();
+  // A step within the gap tolerance that is no shorter than the one before is rounding: the
+  // local curve of a parametric-parametric pair is exact to ~1e-12 only, and Newton there wandered
+  // at that level for all max_corrections local curves of every corrected point (a third of the
+  // trace of two tori tangent along a circle, 13 local curves per contact point).
+  const double rounding = o.gap_tolerance * P.scale();
+  double last = std::numeric_limits<double>::infinity();
   for (int k = 0; k < o.max_corrections; ++k) {
     p.curve = local_curve(P, P.wrap(x));
     ++p.location.expansions;
@@ -77,7 +84,8 @@ ContactPoint correct_onto_contact(const Problem& P, const VecX& guess, const Con
     p.location.last_step = z.norm();
     if (!z.allFinite() || z.norm() > 0.1 * P.scale()) return p;
     x = p.curve.unknowns_at(z);
-    if (z.norm() <= floor) break;
+    if (z.norm() <= floor || (z.norm() <= rounding && z.norm() >= last)) break;
+    last = z.norm();
   }
   p.curve = local_curve(P, P.wrap(x));
   if (p.curve.status != LocalCurveStatus::kOk) return p;
@@ -130,7 +138,9 @@ std::optional<SingularLocation> locate_crossing(const Problem& P, const ContactP
     if (c.lambda == 0) break;
   }
   if (!(best_f <= kCrossingLambdaRatio * std::max(std::fabs(a.lambda), std::fabs(b.lambda)))) return std::nullopt;
-  return best;
+  // lambda's zero places the crossing only as well as lambda is known, and the corrected points are
+  // worst there (§3): the crossing is refined where h vanishes to third order.
+  return third_order_point(P, best, ds).location;
 }
 
 struct Half {

@@ -162,5 +162,61 @@ TEST(OcctCases, Bug21494ApexTouchingThePoleIsOneIsolatedPointNeverACurve) {
   }
 }
 
+// bug23163_1's situation (its surfaces are data files not available here; the scene is
+// examples/occt_tori_tangent_circle.json): two tori tangent along a whole circle, crossed there
+// by a closed transversal curve that passes itself at a node. One network in every form: the
+// contact circle cut at the two tangent_line_crossings into arcs of 2 acos(2/3) and
+// 2 pi - 2 acos(2/3), the transversal curve through both crossings and twice through the node.
+// The crossings lie where the separation's curvature cos v / (2 + cos v) + 1/2 vanishes (cos v =
+// -2/3), at (4/3, 0, +-sqrt(5)/3); the transversal curve's length 26.9159167989017 comes from
+// tests/trace/data/tangent/tori_tangent_circle_reference.py (its own continuation in 80-bit floats
+// and Gauss-Legendre panels, converged to 1e-12).
+TEST(OcctCases, Bug23163TangentCircleCrossedByAClosedCurveIsOneNetwork) {
+  const std::string torus_a = R"({"torus": {"center": [0, 0, 0], "axis": [0, 0, 1], "reference": [1, 0, 0], )"
+                              R"("major_radius": 2, "minor_radius": 1}})";
+  const std::string torus_b = R"({"torus": {"center": [2, 0, 0], "axis": [0, 1, 0], "reference": [1, 0, 0], )"
+                              R"("major_radius": 3, "minor_radius": 2}})";
+  const double kTransversal = 26.9159167989017, arc = 2 * std::acos(2.0 / 3.0);
+  for (const char* as : {"", R"(, "as": ["parametric", "implicit"])", R"(, "as": ["implicit", "parametric"])",
+                         R"(, "as": ["parametric", "parametric"])"}) {
+    SCOPED_TRACE(as);
+    const Scene scene = parse_scene(R"({"surfaces": {"a": )" + torus_a + R"(, "b": )" + torus_b +
+                                        R"(}, "intersections": [{"name": "t", "surfaces": ["a", "b"])" + as + "}]}",
+                                    "bug23163");
+    const IntersectionRun run = run_intersection(scene, scene.intersections.at(0));
+    const TraceResult& r = run.result;
+    ASSERT_EQ(r.curves.size(), 2u);
+    double contact = 0, transversal = 0;
+    for (const TracedCurve& c : r.curves) {
+      EXPECT_TRUE(c.closed);
+      (c.tangential_contact ? contact : transversal) += c.length;
+    }
+    EXPECT_NEAR(contact, 2 * std::numbers::pi, 1e-9);
+    EXPECT_NEAR(transversal, kTransversal, 1e-9 * kTransversal);
+    std::vector<Vec3> crossings, nodes;
+    for (const SingularPointReport& s : r.singular_points)
+      (s.type == SingularType::kTangentLineCrossing ? crossings : nodes).push_back(s.p);
+    ASSERT_EQ(crossings.size(), 2u);
+    ASSERT_EQ(nodes.size(), 1u);
+    for (const Vec3& p : crossings) {
+      EXPECT_NEAR(p.x(), 4.0 / 3.0, 1e-9);
+      EXPECT_NEAR(std::fabs(p.y()), 0.0, 1e-9);
+      EXPECT_NEAR(std::fabs(p.z()), std::sqrt(5.0) / 3.0, 1e-9);
+    }
+    EXPECT_THAT(nodes[0], testing::IsNear(Vec3(-3, 0, 0), 1e-9));
+    const CurveNetwork& net = run.network;
+    EXPECT_EQ(net.components.size(), 1u);
+    EXPECT_TRUE(net.complete());
+    std::vector<double> contact_edges;
+    for (const NetworkEdge& e : net.edges)
+      if (r.curves[static_cast<std::size_t>(e.curve)].tangential_contact) contact_edges.push_back(e.length);
+    std::sort(contact_edges.begin(), contact_edges.end());
+    ASSERT_EQ(contact_edges.size(), 2u);
+    EXPECT_NEAR(contact_edges[0], arc, 1e-9);
+    EXPECT_NEAR(contact_edges[1], 2 * std::numbers::pi - arc, 1e-9);
+    EXPECT_EQ(net.edges.size(), 6u);
+  }
+}
+
 }  // namespace
 }  // namespace ssimarch

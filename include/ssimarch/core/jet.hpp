@@ -9,10 +9,11 @@
 //     u = 2 + du, v = 3 + dv  ->  u*v = 6 + 3 du + 2 dv + 1 du dv
 //     coef({1,1}) = 1, derivative({1,1}) = d2f/dudv = 1, derivative({1,0}) = 3.
 //
-// Elementary functions use f(a0 + h) = sum_k f_k h^k, with the univariate Taylor coefficients
-// f_k = f^(k)(a0)/k! of f at the primal value a0 (computed by the recurrences in
-// univariate_series.hpp) and Horner's rule in h = a - a0, whose constant term is zero. This is
-// exact to order K and costs K truncated products.
+// sin, cos, exp, log, sqrt and real powers use recurrences in the graded order (Jet::sin_cos:
+// one product's work). The other elementary functions use f(a0 + h) = sum_k f_k h^k, with the
+// univariate Taylor coefficients f_k = f^(k)(a0)/k! of f at the primal value a0 (computed by the
+// recurrences in univariate_series.hpp) and Horner's rule in h = a - a0, whose constant term is
+// zero. Both are exact to order K; Horner costs K truncated products.
 //
 // Singular inputs are not hidden: sqrt, log, real powers at 0 produce infinite or NaN
 // coefficients, which callers detect with is_finite(). No silent zeros (style.md 3.16).
@@ -26,6 +27,8 @@
 #include <cmath>
 #include <cstddef>
 #include <ostream>
+#include <span>
+#include <utility>
 #include <vector>
 
 #include "ssimarch/core/univariate_series.hpp"
@@ -250,6 +253,66 @@ class Jet {
 
   friend Jet reciprocal(const Jet& b) { return Jet(1.0) / b; }
 
+  // --- elementary functions by recurrences in the graded order -------------------------------
+  // The Euler operator E = sum_i x_i d/dx_i multiplies a monomial of degree d by d, so an ODE
+  // such as d sin a = cos a da becomes, coefficient by coefficient,
+  //   d_k S_k = sum_{i+j=k} C_i (d_j a_j),        d_k C_k = -sum_{i+j=k} S_i (d_j a_j),
+  // where every C_i, S_i on the right has a lower degree than k (d_j >= 1 where d_j a_j != 0),
+  // so is known (Griewank & Walther, "Evaluating Derivatives", 2nd ed., §13.2, Table 13.2, the
+  // univariate recurrences; the Euler operator makes them multivariate). One product's work per
+  // result where Horner's rule in apply() took K products: a torus's point as an order-12 jet in
+  // two variables (the local curve of a parametric-parametric pair) cost 48 products in its four
+  // sines and cosines, 8 now.
+
+  /// (sin a, cos a) together.
+  static std::pair<Jet, Jet> sin_cos(const Jet& a) {
+    const Jet da = euler(a);
+    Jet s(std::sin(a.c_[0])), c(std::cos(a.c_[0]));
+    graded([&](int k, const auto& products) {
+      double ds = 0, dc = 0;
+      for (const auto& p : products) {
+        ds += c.c_[static_cast<std::size_t>(p.i)] * da.c_[static_cast<std::size_t>(p.j)];
+        dc -= s.c_[static_cast<std::size_t>(p.i)] * da.c_[static_cast<std::size_t>(p.j)];
+      }
+      const double d = Layout::get().degree[static_cast<std::size_t>(k)];
+      s.c_[static_cast<std::size_t>(k)] = ds / d;
+      c.c_[static_cast<std::size_t>(k)] = dc / d;
+    });
+    return {s, c};
+  }
+  /// exp a: E v = v E a.
+  static Jet exp_of(const Jet& a) {
+    const Jet da = euler(a);
+    Jet v(std::exp(a.c_[0]));
+    graded([&](int k, const auto& products) {
+      double dv = 0;
+      for (const auto& p : products) dv += v.c_[static_cast<std::size_t>(p.i)] * da.c_[static_cast<std::size_t>(p.j)];
+      v.c_[static_cast<std::size_t>(k)] = dv / Layout::get().degree[static_cast<std::size_t>(k)];
+    });
+    return v;
+  }
+  /// a^r for real r: a E y = r y E a, so a_0 d_k y_k = r sum y_i (d_j a_j) - sum_{i != 0} a_i (d_j y_j).
+  /// log a (r = 0 marks it): a E y = E a, so a_0 d_k y_k = d_k a_k - sum_{i != 0} a_i (d_j y_j).
+  /// A zero or negative a_0 gives non-finite coefficients, as the series did.
+  static Jet power_of(const Jet& a, double r, bool logarithm) {
+    const Jet da = euler(a);
+    Jet y(logarithm ? std::log(a.c_[0]) : std::pow(a.c_[0], r)), dy;
+    const double inv = 1.0 / a.c_[0];
+    graded([&](int k, const auto& products) {
+      const std::size_t kk = static_cast<std::size_t>(k);
+      double sum = logarithm ? da.c_[kk] : 0.0;
+      for (const auto& p : products) {
+        const std::size_t i = static_cast<std::size_t>(p.i), j = static_cast<std::size_t>(p.j);
+        if (!logarithm) sum += r * y.c_[i] * da.c_[j];
+        if (i != 0) sum -= a.c_[i] * dy.c_[j];
+      }
+      const double d = Layout::get().degree[kk];
+      y.c_[kk] = sum * inv / d;
+      dy.c_[kk] = sum * inv;
+    });
+    return y;
+  }
+
   // Comparisons act on the primal value only (branching code must use primal(), style.md 3.3).
   friend bool operator<(const Jet& a, const Jet& b) { return a.value() < b.value(); }
   friend bool operator>(const Jet& a, const Jet& b) { return a.value() > b.value(); }
@@ -262,6 +325,28 @@ class Jet {
 
  private:
   std::array<double, kSize> c_;
+
+  // E a: coefficient k times its degree.
+  static Jet euler(const Jet& a) {
+    Jet r;
+    for (int k = 1; k < kSize; ++k)
+      r.c_[static_cast<std::size_t>(k)] =
+          Layout::get().degree[static_cast<std::size_t>(k)] * a.c_[static_cast<std::size_t>(k)];
+    return r;
+  }
+  // Calls f(k, products of k) for k = 1 .. kSize - 1 in the graded order (products: a range of
+  // the layout's (i, j, k) entries with i + j = k).
+  template <class F>
+  static void graded(F&& f) {
+    const auto& products = Layout::get().products;
+    std::size_t e = 0;
+    while (e < products.size() && products[e].k == 0) ++e;
+    for (int k = 1; k < kSize; ++k) {
+      const std::size_t first = e;
+      while (e < products.size() && products[e].k == k) ++e;
+      f(k, std::span(products.data() + first, e - first));
+    }
+  }
 };
 
 /// A univariate truncated Taylor series: coefficient k is f^(k)(s0)/k!.
@@ -284,17 +369,12 @@ bool is_finite(const Jet<NV, K>& x) {
 }
 
 // --- elementary functions (each: the univariate series it composes with) ------------------------
-#define SSIMARCH_JET_UNARY(name)                                      \
-  template <int NV, int K>                                            \
-  Jet<NV, K> name(const Jet<NV, K>& a) {                              \
-    return Jet<NV, K>::apply(a, internal::name<K>(a.value()));          \
+#define SSIMARCH_JET_UNARY(name)                               \
+  template <int NV, int K>                                     \
+  Jet<NV, K> name(const Jet<NV, K>& a) {                       \
+    return Jet<NV, K>::apply(a, internal::name<K>(a.value())); \
   }
-SSIMARCH_JET_UNARY(exp)    // exp(a0+h) = e^a0 sum h^k/k!
-SSIMARCH_JET_UNARY(log)    // log(a0+h) = log a0 + sum (-1)^(k+1) h^k/(k a0^k)
-SSIMARCH_JET_UNARY(sqrt)   // binomial series with r = 1/2
 SSIMARCH_JET_UNARY(cbrt)   // binomial series with r = 1/3 (odd-symmetric)
-SSIMARCH_JET_UNARY(sin)    // sin(a0+h) = sin a0 cos h + cos a0 sin h
-SSIMARCH_JET_UNARY(cos)    // cos(a0+h) = cos a0 cos h - sin a0 sin h
 SSIMARCH_JET_UNARY(tan)    // y' = 1 + y^2
 SSIMARCH_JET_UNARY(asin)   // y' = (1 - x^2)^(-1/2)
 SSIMARCH_JET_UNARY(acos)   // y' = -(1 - x^2)^(-1/2)
@@ -305,12 +385,34 @@ SSIMARCH_JET_UNARY(tanh)   // y' = 1 - y^2
 SSIMARCH_JET_UNARY(abs)    // sign(a0) * a; not differentiable at 0 (derivatives NaN there)
 #undef SSIMARCH_JET_UNARY
 
+// By the graded recurrences (Jet::sin_cos, exp_of, power_of): one product's work each.
+template <int NV, int K>
+Jet<NV, K> sin(const Jet<NV, K>& a) {
+  return Jet<NV, K>::sin_cos(a).first;
+}
+template <int NV, int K>
+Jet<NV, K> cos(const Jet<NV, K>& a) {
+  return Jet<NV, K>::sin_cos(a).second;
+}
+template <int NV, int K>
+Jet<NV, K> exp(const Jet<NV, K>& a) {
+  return Jet<NV, K>::exp_of(a);
+}
+template <int NV, int K>
+Jet<NV, K> log(const Jet<NV, K>& a) {
+  return Jet<NV, K>::power_of(a, 0.0, true);
+}
+template <int NV, int K>
+Jet<NV, K> sqrt(const Jet<NV, K>& a) {
+  return Jet<NV, K>::power_of(a, 0.5, false);
+}
+
 /// a^r for real r: binomial series a0^r (1 + h/a0)^r; needs a0 > 0 unless r is an integer.
 template <int NV, int K>
 Jet<NV, K> pow(const Jet<NV, K>& a, double r) {
   double ri = std::round(r);
   if (ri == r && std::fabs(r) <= 64) return pow(a, static_cast<int>(ri));
-  return Jet<NV, K>::apply(a, internal::pow<K>(a.value(), r));
+  return Jet<NV, K>::power_of(a, r, false);
 }
 
 /// a^n for integer n by repeated squaring, exact also at a0 = 0 for n >= 0.

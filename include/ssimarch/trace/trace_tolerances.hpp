@@ -16,6 +16,14 @@ namespace ssimarch {
 /// values. 1e-6 separates the two by orders of magnitude.
 inline constexpr double kCrossingLambdaRatio = 1e-6;
 
+/// Fall of the Hessian's norm (ratio, dimensionless) that makes a located node a point of
+/// multiplicity 3 located off it (trace/singular_registry.cpp): a march along a transversal branch
+/// meets a tangent-line crossing a few 1e-9 from it, where h = u^2 v seen from (u0, 0) has the
+/// node's form 2 u0 u v; refined where h vanishes to third order (singular/third_order_point.hpp)
+/// the Hessian falls to rounding (1e-8 -> 1e-16 on two tori tangent along a circle), while at a
+/// true node the refinement's first step leaves the merge radius and nothing falls.
+inline constexpr double kThirdOrderHessianFall = 1e-6;
+
 /// Multiple of the corrector's tolerance (model units) within which a start point is on a traced
 /// curve where the curve is straight (trace/on_traced_curve.hpp): the start and the curve's points
 /// are each within the tolerance of the true curve, and a straight segment's Hermite arc is the
