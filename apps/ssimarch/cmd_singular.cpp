@@ -22,8 +22,13 @@ struct SingularArgs {
   bool json = false;
 };
 
-void print_table(const std::string& name, const nlohmann::json& points) {
+void print_table(const std::string& name, const nlohmann::json& points, int contact_points) {
   std::cout << fmt::format("intersection {}: {} singular point(s)\n", name, points.size());
+  if (contact_points > 0)
+    std::cout << fmt::format(
+        "  and {} point(s) of curves of tangential contact, not listed (`ssimarch trace` gives the "
+        "curves; their crossings with other branches are listed)\n",
+        contact_points);
   if (points.empty()) return;
   std::cout << fmt::format("  {:<36} {:<22} {:<5} {:>3} {:>3} {:>8}  {}\n", "point", "type", "A_k", "mu", "m", "branches",
                            "half-branch tangents");
@@ -48,9 +53,9 @@ void run_singular(const SingularArgs& a) {
     nlohmann::json points = nlohmann::json::array();
     for (const SingularAnalysis& p : r.points) points.push_back(singular_analysis_to_json(p));
     if (a.json)
-      out[r.intersection] = {{"singular_points", points}};
+      out[r.intersection] = {{"singular_points", points}, {"tangential_contact_points", r.contact_points}};
     else
-      print_table(r.intersection, points);
+      print_table(r.intersection, points, r.contact_points);
   }
   if (a.json) std::cout << out.dump(2) << "\n";
 }

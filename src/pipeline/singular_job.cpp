@@ -1,9 +1,65 @@
 #include "ssimarch/pipeline/singular_job.hpp"
 
+#include <optional>
+#include <utility>
+#include <vector>
+
 #include "ssimarch/core/error.hpp"
+#include "ssimarch/problem/singular_tolerances.hpp"
 #include "ssimarch/singular/detection.hpp"
+#include "ssimarch/singular/third_order_point.hpp"
+#include "ssimarch/trace/tangential_contact.hpp"
+#include "ssimarch/trace/trace_tolerances.hpp"
 
 namespace ssimarch {
+
+namespace {
+
+// The hunt's locations are converged; each is analysed where it was located.
+SingularAnalysis analysed_at(const Problem& P, const SingularLocation& s) {
+  SingularAnalysisOptions analyse;
+  analyse.locate = false;
+  return analyse_singular_point(P, s, analyse);
+}
+
+void add_new(SingularAnalysis a, double merge, SingularJobResult* r) {
+  for (const SingularAnalysis& p : r->points)
+    if ((p.location.point - a.location.point).norm() <= merge) return;
+  r->points.push_back(std::move(a));
+}
+
+// One hunted point into the result. A point of a contact curve is counted, and the crossing of
+// that curve near it (within the registry's reach, trace/singular_registry.cpp) is listed instead;
+// a node that is a crossing located off it (h = u^2 v seen from (u0, 0): the node's form 2 u0 u v)
+// is refined where h vanishes to third order, as the trace's registry does.
+// crossing_near looks `reach` along the curve both ways, so the contact points within half of it
+// of one already searched are not searched again (`searched`).
+void take(const Problem& P, const SingularLocation& s, std::vector<Vec3>* searched, SingularJobResult* r) {
+  const double merge = kSingularMergeDistance * P.scale(), reach = 0.1 * P.scale();
+  SingularAnalysis a = analysed_at(P, s);
+  if (a.analysed() && a.kind.type == SingularType::kTangentialContact) {
+    ++r->contact_points;
+    for (const Vec3& p : *searched)
+      if ((p - a.location.point).norm() <= 0.5 * reach) return;
+    searched->push_back(a.location.point);
+    if (const std::optional<SingularLocation> c = crossing_near(P, a.location.x, reach)) {
+      SingularAnalysis crossing = analysed_at(P, *c);
+      if (crossing.analysed() && crossing.kind.type == SingularType::kTangentLineCrossing)
+        add_new(std::move(crossing), merge, r);
+    }
+    return;
+  }
+  if (a.analysed() && a.kind.type == SingularType::kNode) {
+    const ThirdOrderPoint t = third_order_point(P, a.location, third_order_reach(a, merge));
+    if (t.hessian_norm <= kThirdOrderHessianFall * t.initial_hessian_norm) {
+      SingularAnalysis refined = analysed_at(P, t.location);
+      if (refined.analysed() && refined.kind.multiplicity >= 3) a = std::move(refined);
+    }
+  }
+  add_new(std::move(a), merge, r);
+}
+
+}  // namespace
 
 std::vector<SingularJobResult> run_singular_job(const Scene& scene, const SingularJobOptions& options) {
   if (options.grid < 3) throw InputError("--grid", "must be at least 3, got " + std::to_string(options.grid));
@@ -14,11 +70,8 @@ std::vector<SingularJobResult> run_singular_job(const Scene& scene, const Singul
     HuntOptions hunt;
     hunt.grid = options.grid;
     SingularJobResult r{spec.name, {}};
-    // The hunt's locations are converged; each is analysed where it was located.
-    SingularAnalysisOptions analyse;
-    analyse.locate = false;
-    for (const SingularLocation& s : hunt_singular_points(problem, hunt))
-      r.points.push_back(analyse_singular_point(problem, s, analyse));
+    std::vector<Vec3> searched;
+    for (const SingularLocation& s : hunt_singular_points(problem, hunt)) take(problem, s, &searched, &r);
     out.push_back(std::move(r));
   }
   if (out.empty() && !options.only.empty())

@@ -1,9 +1,11 @@
 #include "ssimarch/singular/third_order_point.hpp"
 
 #include <Eigen/QR>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
+#include "ssimarch/problem/singular_tolerances.hpp"
 #include "ssimarch/singular/local_curve.hpp"
 #include "ssimarch/singular/local_jet.hpp"
 
@@ -40,6 +42,10 @@ ThirdOrderPoint third_order_point(const Problem& P, const SingularLocation& gues
     x = c.unknowns_at(z);
   }
   return best;
+}
+
+double third_order_reach(const SingularAnalysis& node, double floor) {
+  return std::max(floor, std::sqrt(kLocateSineTolerance) * node.curve.germ_length);
 }
 
 }  // namespace ssimarch

@@ -33,7 +33,7 @@ int SingularRegistry::add(const SingularLocation& s) {
   // A node whose quadratic form is no larger than the location's error is a point of multiplicity
   // 3 located off it (trace_tolerances.hpp kThirdOrderHessianFall): refined, and re-analysed there.
   if (n.analysed() && n.kind.type == SingularType::kNode) {
-    const ThirdOrderPoint t = third_order_point(problem_, n.location, merge_);
+    const ThirdOrderPoint t = third_order_point(problem_, n.location, third_order_reach(n, merge_));
     if (t.hessian_norm <= kThirdOrderHessianFall * t.initial_hessian_norm) {
       SingularAnalysis a = analyse_singular_point(problem_, t.location, without_branches);
       if (a.analysed() && a.kind.multiplicity >= 3) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "ssimarch/problem/problem.hpp"
+#include "ssimarch/singular/analysis.hpp"
 #include "ssimarch/singular/locate.hpp"
 
 namespace ssimarch {
@@ -21,5 +22,11 @@ struct ThirdOrderPoint {
   double initial_hessian_norm = 0;
 };
 ThirdOrderPoint third_order_point(const Problem& problem, const SingularLocation& guess, double radius);
+
+/// How far from a located node (model units) a point of multiplicity 3 it stands for may lie: a
+/// location accepted at |grad h| <= kLocateSineTolerance lies within sqrt(kLocateSineTolerance)
+/// germ lengths of such a point (grad h grows like the distance squared there; resolution_radius
+/// of a point of multiplicity 3), and never less than `floor` (the caller's merge distance).
+double third_order_reach(const SingularAnalysis& node, double floor);
 
 }  // namespace ssimarch
