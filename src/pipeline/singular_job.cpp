@@ -7,7 +7,6 @@
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/problem/singular_tolerances.hpp"
 #include "ssimarch/singular/detection.hpp"
-#include "ssimarch/singular/third_order_point.hpp"
 #include "ssimarch/trace/tangential_contact.hpp"
 #include "ssimarch/trace/trace_tolerances.hpp"
 
@@ -30,12 +29,12 @@ void add_new(SingularAnalysis a, double merge, SingularJobResult* r) {
 
 // One hunted point into the result. A point of a contact curve is counted, and the crossing of
 // that curve near it (within the registry's reach, trace/singular_registry.cpp) is listed instead;
-// a node that is a crossing located off it (h = u^2 v seen from (u0, 0): the node's form 2 u0 u v)
-// is refined where h vanishes to third order, as the trace's registry does.
+// a node that is a crossing located off it is that crossing (crossing_behind_node), as in the
+// trace's registry.
 // crossing_near looks `reach` along the curve both ways, so the contact points within half of it
 // of one already searched are not searched again (`searched`).
 void take(const Problem& P, const SingularLocation& s, std::vector<Vec3>* searched, SingularJobResult* r) {
-  const double merge = kSingularMergeDistance * P.scale(), reach = 0.1 * P.scale();
+  const double merge = kSingularMergeDistance * P.scale(), reach = kCrossingSearchReach * P.scale();
   SingularAnalysis a = analysed_at(P, s);
   if (a.analysed() && a.kind.type == SingularType::kTangentialContact) {
     ++r->contact_points;
@@ -49,13 +48,7 @@ void take(const Problem& P, const SingularLocation& s, std::vector<Vec3>* search
     }
     return;
   }
-  if (a.analysed() && a.kind.type == SingularType::kNode) {
-    const ThirdOrderPoint t = third_order_point(P, a.location, third_order_reach(a, merge));
-    if (t.hessian_norm <= kThirdOrderHessianFall * t.initial_hessian_norm) {
-      SingularAnalysis refined = analysed_at(P, t.location);
-      if (refined.analysed() && refined.kind.multiplicity >= 3) a = std::move(refined);
-    }
-  }
+  if (std::optional<SingularAnalysis> crossing = crossing_behind_node(P, a, merge)) a = std::move(*crossing);
   add_new(std::move(a), merge, r);
 }
 

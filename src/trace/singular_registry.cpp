@@ -4,15 +4,18 @@
 #include <cmath>
 #include <limits>
 
-#include "ssimarch/singular/third_order_point.hpp"
 #include "ssimarch/trace/tangential_contact.hpp"
 #include "ssimarch/trace/trace_tolerances.hpp"
 
 namespace ssimarch {
 
 int SingularRegistry::add(const SingularLocation& s) {
-  for (std::size_t i = 0; i < nodes_.size(); ++i)
-    if ((nodes_[i].location.point - s.point).norm() <= merge_) return static_cast<int>(i);
+  auto known = [&](const Vec3& p) -> std::optional<int> {
+    for (std::size_t i = 0; i < nodes_.size(); ++i)
+      if ((nodes_[i].location.point - p).norm() <= merge_) return static_cast<int>(i);
+    return std::nullopt;
+  };
+  if (const std::optional<int> same = known(s.point)) return *same;
   SingularAnalysisOptions without_branches;
   without_branches.half_branches = false;
   SingularNode n;
@@ -22,27 +25,18 @@ int SingularRegistry::add(const SingularLocation& s) {
   // the branch crosses that curve, but the location converged to the nearest contact point;
   // move to the crossing (docs/math/tangential_contact.md §3).
   if (n.analysed() && n.kind.type == SingularType::kTangentialContact) {
-    if (auto c = crossing_near(problem_, n.location.x, 0.1 * problem_.scale())) {
-      for (std::size_t i = 0; i < nodes_.size(); ++i)
-        if ((nodes_[i].location.point - c->point).norm() <= merge_) return static_cast<int>(i);
+    if (auto c = crossing_near(problem_, n.location.x, kCrossingSearchReach * problem_.scale())) {
+      if (const std::optional<int> same = known(c->point)) return *same;
       SingularLocation at = *c;
       at.x = problem_.wrap(c->x);
       static_cast<SingularAnalysis&>(n) = analyse_singular_point(problem_, at, without_branches);
     }
   }
-  // A node whose quadratic form is no larger than the location's error is a point of multiplicity
-  // 3 located off it (trace_tolerances.hpp kThirdOrderHessianFall): refined, and re-analysed there.
-  if (n.analysed() && n.kind.type == SingularType::kNode) {
-    const ThirdOrderPoint t = third_order_point(problem_, n.location, third_order_reach(n, merge_));
-    if (t.hessian_norm <= kThirdOrderHessianFall * t.initial_hessian_norm) {
-      SingularAnalysis a = analyse_singular_point(problem_, t.location, without_branches);
-      if (a.analysed() && a.kind.multiplicity >= 3) {
-        for (std::size_t i = 0; i < nodes_.size(); ++i)
-          if ((nodes_[i].location.point - a.location.point).norm() <= merge_) return static_cast<int>(i);
-        a.location.x = problem_.wrap(a.location.x);
-        static_cast<SingularAnalysis&>(n) = std::move(a);
-      }
-    }
+  // A node whose quadratic form is no larger than the location's error: the crossing it stands for.
+  if (std::optional<SingularAnalysis> a = crossing_behind_node(problem_, n, merge_, without_branches)) {
+    if (const std::optional<int> same = known(a->location.point)) return *same;
+    a->location.x = problem_.wrap(a->location.x);
+    static_cast<SingularAnalysis&>(n) = std::move(*a);
   }
   if (const std::optional<int> same = within_resolution(n)) return *same;
   with_half_branches(problem_, &n);

@@ -349,6 +349,16 @@ std::optional<SingularLocation> crossing_near(const Problem& P, const VecX& x, d
   return best;
 }
 
+std::optional<SingularAnalysis> crossing_behind_node(const Problem& P, const SingularAnalysis& node, double merge,
+                                                     const SingularAnalysisOptions& options) {
+  if (!node.analysed() || node.kind.type != SingularType::kNode) return std::nullopt;
+  const ThirdOrderPoint t = third_order_point(P, node.location, third_order_reach(node, merge));
+  if (!(t.hessian_norm <= kThirdOrderHessianFall * t.initial_hessian_norm)) return std::nullopt;
+  SingularAnalysis a = analyse_singular_point(P, t.location, options);
+  if (!a.analysed() || a.kind.multiplicity < 3) return std::nullopt;
+  return a;
+}
+
 ContactTrace trace_tangential_contact(const Problem& P, const VecX& x0, const ContactOptions& o) {
   ContactTrace out;
   const ContactPoint start = correct_onto_contact(P, x0, o);

@@ -19,6 +19,7 @@
 
 #include "ssimarch/march/result.hpp"
 #include "ssimarch/problem/problem.hpp"
+#include "ssimarch/singular/analysis.hpp"
 #include "ssimarch/singular/locate.hpp"
 
 namespace ssimarch {
@@ -66,6 +67,15 @@ struct ContactTrace {
 /// that branch meets (its location converges to the nearest contact point, not to the crossing).
 std::optional<SingularLocation> crossing_near(const Problem& problem, const VecX& x, double radius,
                                               const ContactOptions& options = {});
+
+/// The crossing a located node stands for, if it stands for one: a tangent-line crossing located
+/// off it (h = u^2 v seen from (u0, 0) has the node's form 2 u0 u v) is where h vanishes to third
+/// order within third_order_reach of the node (singular/third_order_point.hpp). The analysis
+/// there (with `options`) when `node` is a node, h's Hessian falls there by kThirdOrderHessianFall
+/// (trace_tolerances.hpp) and the point has multiplicity 3 or more; none otherwise (a true node).
+/// `merge` (model units): the caller's merge distance, the least reach.
+std::optional<SingularAnalysis> crossing_behind_node(const Problem& problem, const SingularAnalysis& node, double merge,
+                                                     const SingularAnalysisOptions& options = {});
 
 /// The curve of tangential contact through x0 (unknowns near a point of it), marched both ways
 /// until it closes, leaves the domain, or the corrector fails.

@@ -16,6 +16,11 @@ namespace ssimarch {
 /// values. 1e-6 separates the two by orders of magnitude.
 inline constexpr double kCrossingLambdaRatio = 1e-6;
 
+/// Arc distance (times the problem's scale) along a contact curve within which a point of it that
+/// a march or the hunt located is taken to stand for a crossing (trace/tangential_contact.hpp
+/// crossing_near): the trace's registry and `ssimarch singular` look this far both ways.
+inline constexpr double kCrossingSearchReach = 0.1;
+
 /// Fall of the Hessian's norm (ratio, dimensionless) that makes a located node a point of
 /// multiplicity 3 located off it (trace/singular_registry.cpp): a march along a transversal branch
 /// meets a tangent-line crossing a few 1e-9 from it, where h = u^2 v seen from (u0, 0) has the
