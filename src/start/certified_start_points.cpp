@@ -1,4 +1,5 @@
 #include "ssimarch/start/certified_start_points.hpp"
+#include "ssimarch/start/interval_forms.hpp"
 
 #include <algorithm>
 #include <chrono>

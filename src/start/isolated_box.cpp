@@ -1,4 +1,5 @@
 #include "ssimarch/start/isolated_box.hpp"
+#include "ssimarch/start/interval_forms.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,5 @@
 #include "ssimarch/start/patch_exclusion.hpp"
+#include "ssimarch/start/interval_forms.hpp"
 
 #include <cmath>
 

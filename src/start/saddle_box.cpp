@@ -1,4 +1,5 @@
 #include "ssimarch/start/saddle_box.hpp"
+#include "ssimarch/start/interval_forms.hpp"
 
 #include <cmath>
 

@@ -250,20 +250,21 @@ DynamicCurveJet to_dynamic(const CurveJet<K>& j, int n) {
 }  // namespace internal
 
 /// Throws InputError when order is outside 1..kMaxCurveJetOrder (or as curve_jet).
-inline DynamicCurveJet curve_jet_dynamic(const Problem& problem, const UnknownVec& x0, int order, const Vec3* hint = nullptr) {
-  const int n = problem.dim();
-  switch (order) {
-    case 1: return internal::to_dynamic(curve_jet<1>(problem, x0, hint), n);
-    case 2: return internal::to_dynamic(curve_jet<2>(problem, x0, hint), n);
-    case 3: return internal::to_dynamic(curve_jet<3>(problem, x0, hint), n);
-    case 4: return internal::to_dynamic(curve_jet<4>(problem, x0, hint), n);
-    case 5: return internal::to_dynamic(curve_jet<5>(problem, x0, hint), n);
-    case 6: return internal::to_dynamic(curve_jet<6>(problem, x0, hint), n);
-    case 7: return internal::to_dynamic(curve_jet<7>(problem, x0, hint), n);
-    case 8: return internal::to_dynamic(curve_jet<8>(problem, x0, hint), n);
-  }
-  static_assert(kMaxCurveJetOrder == 8, "add the cases above up to kMaxCurveJetOrder");
-  throw InputError("curve_jet", "order " + std::to_string(order) + " outside 1.." + std::to_string(kMaxCurveJetOrder));
-}
+DynamicCurveJet curve_jet_dynamic(const Problem& problem, const UnknownVec& x0, int order, const Vec3* hint = nullptr);
+
+// Each order's jet is compiled once, in src/problem/curve_jet_orders_*.cpp, not in every
+// translation unit that asks for it: an order-K jet evaluates the surfaces on K + 1 number types
+// for each of the three pair kinds (issue 29, the demo's build time).
+#define SSIMARCH_CURVE_JET_ORDER(PREFIX, K) \
+  PREFIX CurveJet<K> curve_jet<K>(const Problem&, const UnknownVec&, const Vec3*)
+SSIMARCH_CURVE_JET_ORDER(extern template, 1);
+SSIMARCH_CURVE_JET_ORDER(extern template, 2);
+SSIMARCH_CURVE_JET_ORDER(extern template, 3);
+SSIMARCH_CURVE_JET_ORDER(extern template, 4);
+SSIMARCH_CURVE_JET_ORDER(extern template, 5);
+SSIMARCH_CURVE_JET_ORDER(extern template, 6);
+SSIMARCH_CURVE_JET_ORDER(extern template, 7);
+SSIMARCH_CURVE_JET_ORDER(extern template, 8);
+static_assert(kMaxCurveJetOrder == 8, "declare (and instantiate) every order up to kMaxCurveJetOrder");
 
 }  // namespace ssimarch
