@@ -140,7 +140,9 @@ void report(const PorosityJobResult& r, bool quiet) {
   std::ostringstream msg;
   msg.precision(10);
   msg << "bulk porosity: " << r.bulk.porosity << " (R = " << c.radius << ", z in [" << c.slab.z_min << ", "
-      << c.slab.z_max << "], " << r.bulk.stats.particles_used << " particles)\n";
+      << c.slab.z_max << "], " << r.bulk.stats.particles_used << (r.clumped_particles > 0 ? " spheres" : " particles");
+  if (r.clumped_particles > 0) msg << " of " << r.clumped_particles << " clumped particles";
+  msg << ")\n";
   if (!quiet) std::cerr << msg.str();
   if (r.unconverged > 0)
     std::cerr << "ssimarch: warning: " << r.unconverged
@@ -197,6 +199,8 @@ void write_outputs(const PorosityArgs& a, const PorosityJobResult& r, const Poro
     if (a.strict) throw CliError("--strict: " + what + "; no output was written", 1);
     std::cerr << "ssimarch: " << (job.options.overlaps == OverlapRule::kUnion ? "note: " : "warning: ") << what << "\n";
   }
+  if (const std::string within = describe_clump_overlaps(r, job.options.overlaps); !within.empty() && !a.quiet)
+    std::cerr << "ssimarch: note: " << within << "\n";
   const std::string name = std::filesystem::path(a.packing).filename().string();
   nlohmann::json js = porosity_summary_json(job, r, a.packing);
   OutputFiles files;  // every output or none (io/output_files.hpp)
@@ -240,7 +244,7 @@ void add_porosity_command(CLI::App& app, Commands& commands) {
   sub->add_option("--threads", args->threads, "worker threads (default: all cores)");
   sub->add_flag("--strict", args->strict,
                 "fail (exit 1, no output) when particles overlap each other instead of saying so (overlapping input "
-                "rejected)");
+                "rejected; the spheres of one clumped particle, a packing's clump column, may overlap)");
   sub->add_option("--overlaps", args->overlaps,
                   "union (default): a volume that overlapping particles share counts once, the profiles of their "
                   "union (soft-sphere DEM beds, multi-sphere clumps); sum: once per particle holding it");

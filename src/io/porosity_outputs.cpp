@@ -158,6 +158,8 @@ nlohmann::json porosity_summary_json(const PorosityJob& job, const PorosityJobRe
   nlohmann::json js;
   js["packing"] = packing_name;
   js["particles"] = r.particles;
+  // Rows grouped into clumped particles (a clump column): how many particles they form.
+  if (r.clumped_particles > 0) js["clumped_particles"] = r.clumped_particles;
   js["particle_type"] = r.spherocylinders ? "spherocylinder" : "sphere";
   js["container_radius"] = r.container.radius;
   js["z_range"] = {r.container.slab.z_min, r.container.slab.z_max};
@@ -177,6 +179,10 @@ nlohmann::json porosity_summary_json(const PorosityJob& job, const PorosityJobRe
                     {"max_depth", r.overlaps.max_depth},
                     {"doubled_volume", r.overlaps.doubled_volume},
                     {"groups", r.bulk.stats.overlap_groups}};
+  if (r.clumped_particles > 0) {
+    js["overlaps"]["within_clumps"] = {{"pairs", r.overlaps.clump_pairs},
+                                       {"doubled_volume", r.overlaps.clump_doubled_volume}};
+  }
   return js;
 }
 

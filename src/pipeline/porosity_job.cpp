@@ -83,16 +83,23 @@ ProfileOptions stage_options(const PorosityJob& job, const Groups& groups, std::
   return opt;
 }
 
-// The job's particles: its own, or those of its packing file (read into `storage`).
-std::span<const Particle> packing_of(const PorosityJob& job, Packing& storage, bool* spherocylinders) {
+// The job's particles: its own, or those of its packing file (read into `storage`); `clumps` their
+// clump ids (empty when they have none).
+std::span<const Particle> packing_of(const PorosityJob& job, Packing& storage, bool* spherocylinders,
+                                     std::span<const long>* clumps) {
   if (!job.packing.empty()) {
     *spherocylinders = std::any_of(job.packing.begin(), job.packing.end(), [](const Particle& p) { return p.length != 0; });
+    if (!job.clumps.empty() && job.clumps.size() != job.packing.size())
+      throw InputError("clumps", std::to_string(job.clumps.size()) + " clump ids for " +
+                                     std::to_string(job.packing.size()) + " particles: one per particle");
+    *clumps = job.clumps;
     return job.packing;
   }
   if (job.packing_file.empty()) throw InputError("packing", "no packing given (neither particles nor a file)");
   storage = read_packing(job.packing_file, job.input_limits, job.options.threads);
   if (storage.particles.empty()) throw InputError(job.packing_file.string(), "no particles");
   *spherocylinders = storage.spherocylinders;
+  *clumps = storage.clumps;
   return storage.particles;
 }
 
@@ -189,7 +196,9 @@ PorosityJobResult run_shared_porosity_job(const PorosityJob& job, const ProfileC
     throw InputError(problem.substr(0, problem.find('\x1f')), problem.substr(problem.find('\x1f') + 1));
   // The overlap search moves the particles into slabs of the bed, with their neighbours from the
   // slabs beside (overlaps.hpp, docs/scaling.md): each pair is counted once, by one process.
-  if (job.find_overlaps) out.overlaps = find_overlaps(ps, first, comm, kOverlapTolerance, job.options.threads);
+  if (comm.any(!share.clumps.empty())) out.clumped_particles = distinct_count(share.clumps, comm);
+  if (job.find_overlaps)
+    out.overlaps = find_overlaps(ps, first, comm, kOverlapTolerance, job.options.threads, share.clumps);
   // The union's overlap groups, found once for every stage (each process: those of its slab).
   Groups groups = job.options.overlap_groups;
   if (job.options.overlaps == OverlapRule::kUnion && !groups)
@@ -214,8 +223,10 @@ PorosityJobResult run_porosity_job(const PorosityJob& job) {
   if (comm && comm->size() > 1 && job.packing.empty()) return run_shared_porosity_job(job, *comm);
   PorosityJobResult out;
   Packing read;
-  const std::span<const Particle> all = packing_of(job, read, &out.spherocylinders);
+  std::span<const long> clumps;
+  const std::span<const Particle> all = packing_of(job, read, &out.spherocylinders, &clumps);
   out.particles = static_cast<long>(all.size());
+  if (!clumps.empty()) out.clumped_particles = distinct_count(clumps);
   require_packing_scale(all, job.packing.empty() ? job.packing_file.string() : "packing");
   // Particles in memory on several processes: each integrates its block, and the profile
   // functions add the blocks' exact sums, so every process gets the single-process result.
@@ -225,7 +236,7 @@ PorosityJobResult run_porosity_job(const PorosityJob& job) {
     ps = all.subspan(n * k / p, n * (k + 1) / p - n * k / p);
   }
   if (job.find_overlaps && (!comm || comm->rank() == 0))
-    out.overlaps = find_overlaps(all, kOverlapTolerance, job.options.threads);
+    out.overlaps = find_overlaps(all, kOverlapTolerance, job.options.threads, clumps);
   out.container.radius = job.container_radius;
   out.container.slab = job.height_range ? *job.height_range : vertical_extent(all);
   // The union's overlap groups, found once for every stage; with the particles split over
@@ -257,12 +268,27 @@ long values_outside_unit_interval(const PorosityJobResult& r) {
 
 }  // namespace
 
+std::string describe_clump_overlaps(const PorosityJobResult& r, OverlapRule rule) {
+  const ParticleOverlaps& o = r.overlaps;
+  if (o.clump_pairs <= 0) return {};
+  std::ostringstream m;
+  m.precision(6);
+  m << o.clump_pairs << " pair" << (o.clump_pairs == 1 ? "" : "s")
+    << " of spheres overlap inside their clumped particles (" << r.clumped_particles << " particles of " << r.particles
+    << " spheres), sharing a volume of " << o.clump_doubled_volume;
+  m << (rule == OverlapRule::kUnion
+            ? ", counted once (the union)"
+            : ", counted once per sphere holding it (the sum rule): the porosities are too low");
+  return m.str();
+}
+
 std::string describe_overlaps(const PorosityJobResult& r, OverlapRule rule, const OverlapWording& wording) {
   const ParticleOverlaps& o = r.overlaps;
   if (o.pairs <= 0) return {};
   std::ostringstream m;
   m.precision(6);
-  m << o.pairs << " pair" << (o.pairs == 1 ? "" : "s") << " of particles overlap (worst: particles "
+  m << o.pairs << " pair" << (o.pairs == 1 ? "" : "s") << " of " << (r.clumped_particles > 0 ? "clumped " : "")
+    << "particles overlap (worst: " << (r.clumped_particles > 0 ? "rows " : "particles ")
     << o.worst_first + wording.first_index << " and " << o.worst_second + wording.first_index
     << (wording.first_index == 0 ? ", 0-based," : "") << " by " << o.max_depth << "); their common volume ("
     << o.doubled_volume << ")";

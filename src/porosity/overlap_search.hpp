@@ -58,23 +58,32 @@ PairOverlap pair_overlap(const Particle& a, const Particle& b);
 
 /// Pairs (a, b) with a among the first `owned` particles, (level, id) of a before that of b, and
 /// depth above relative_tolerance times the smaller diameter. `ids` empty: particle k is numbered k.
-/// The doubled volume is summed with the quantum of FixedPointSum(volume_scale).
-PairTally search_overlaps(std::span<const Particle> particles, std::span<const long> ids, std::size_t owned,
-                          double relative_tolerance, double volume_scale, unsigned threads);
+/// The doubled volume is summed with the quantum of FixedPointSum(volume_scale). With `clumps`
+/// (one id per particle, Packing::clumps), pairs within one clump are tallied apart.
+struct OverlapTallies {
+  PairTally between;  ///< pairs of different particles
+  PairTally within;   ///< pairs of spheres of one clumped particle
+};
+OverlapTallies search_overlaps(std::span<const Particle> particles, std::span<const long> ids, std::size_t owned,
+                               double relative_tolerance, double volume_scale, unsigned threads,
+                               std::span<const long> clumps = {});
 
 /// The particles one process searches (overlap_slabs.cpp): those of its slab of the bed, then its
 /// neighbours from the slabs beside, each with its index in the packing.
 struct SlabShare {
   std::vector<Particle> local;
   std::vector<long> ids;
+  std::vector<long> clumps;   ///< clump id of each of local (Packing::clumps); empty when the packing has none
   std::size_t owned = 0;      ///< local[0, owned) lie in this process's slab
   long total = 0;             ///< particles over all processes
   double volume_scale = 1.0;  ///< largest particle volume times total (the quantum of volume sums)
 };
 
 /// Moves the particles of `share` (indices first, first + 1, ...) to the processes of their slabs
-/// and of the slabs within reach. Collective.
-SlabShare gather_slab(std::span<const Particle> share, long first, const ProfileCommunicator& comm);
+/// and of the slabs within reach, with their clump ids when `clumps` (one per particle of the share)
+/// is given on any process. Collective.
+SlabShare gather_slab(std::span<const Particle> share, long first, const ProfileCommunicator& comm,
+                      std::span<const long> clumps = {});
 
 /// The overlap groups (particle_union.hpp) of the first `owned` particles: for each, the
 /// particles with a smaller id that overlap it, split into components by their lenses' boxes.

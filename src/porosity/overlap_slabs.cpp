@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 #include "overlap_search.hpp"
 #include "ssimarch/porosity/overlaps.hpp"
@@ -60,11 +62,12 @@ Slabs make_slabs(std::span<const Particle> share, long total, const ProfileCommu
   return s;
 }
 
-// A particle and its index in the packing as bytes: centre, diameter and index (40 bytes) when
-// every particle is a sphere, with the axis and length as well (72 bytes) when not.
+// A particle, its index in the packing and its clump id (0 when the packing has none) as bytes:
+// centre, diameter, index and clump (48 bytes) when every particle is a sphere, with the axis and
+// length as well (80 bytes) when not.
 struct Record {
   double x, y, z, diameter;
-  long id;
+  long id, clump;
 };
 struct RodRecord {
   Record r;
@@ -73,14 +76,14 @@ struct RodRecord {
 
 std::size_t record_size(bool rods) { return rods ? sizeof(RodRecord) : sizeof(Record); }
 
-void put(char* at, const Particle& p, long id, bool rods) {
-  const RodRecord rec{{p.centre.x(), p.centre.y(), p.centre.z(), p.diameter, id}, p.axis.x(), p.axis.y(), p.axis.z(),
-                      p.length};
+void put(char* at, const Particle& p, long id, long clump, bool rods) {
+  const RodRecord rec{
+      {p.centre.x(), p.centre.y(), p.centre.z(), p.diameter, id, clump}, p.axis.x(), p.axis.y(), p.axis.z(), p.length};
   std::memcpy(at, &rec, record_size(rods));
 }
 
-Particle particle_at(const char* at, bool rods, long& id) {
-  RodRecord rec{{0, 0, 0, 0, 0}, 0, 0, 1, 0};
+Particle particle_at(const char* at, bool rods, long& id, long& clump) {
+  RodRecord rec{{0, 0, 0, 0, 0, 0}, 0, 0, 1, 0};
   std::memcpy(&rec, at, record_size(rods));
   Particle p;
   p.centre = Vec3(rec.r.x, rec.r.y, rec.r.z);
@@ -88,13 +91,14 @@ Particle particle_at(const char* at, bool rods, long& id) {
   p.axis = Vec3(rec.ux, rec.uy, rec.uz);
   p.length = rec.length;
   id = rec.r.id;
+  clump = rec.r.clump;
   return p;
 }
 
 // The particles for each process, one message after the other: each particle to its slab's
 // process and to those within `margin` of it. Two passes: the counts, then the bytes.
-std::string route(std::span<const Particle> share, long first, const Slabs& s, double margin, int n, bool rods,
-                  std::vector<std::size_t>& counts) {
+std::string route(std::span<const Particle> share, std::span<const long> clumps, long first, const Slabs& s,
+                  double margin, int n, bool rods, std::vector<std::size_t>& counts) {
   auto each_destination = [&](std::size_t k, auto&& f) {
     const double z = share[k].centre.z();
     const int o = s.owner(z);
@@ -110,7 +114,8 @@ std::string route(std::span<const Particle> share, long first, const Slabs& s, d
   std::string bytes(at.back() + counts.back(), '\0');
   for (std::size_t k = 0; k < share.size(); ++k)
     each_destination(k, [&](int q) {
-      put(bytes.data() + at[static_cast<std::size_t>(q)], share[k], first + static_cast<long>(k), rods);
+      put(bytes.data() + at[static_cast<std::size_t>(q)], share[k], first + static_cast<long>(k),
+          clumps.empty() ? 0 : clumps[k], rods);
       at[static_cast<std::size_t>(q)] += record_size(rods);
     });
   return bytes;
@@ -120,7 +125,8 @@ std::string route(std::span<const Particle> share, long first, const Slabs& s, d
 
 namespace internal {
 
-SlabShare gather_slab(std::span<const Particle> share, long first, const ProfileCommunicator& comm) {
+SlabShare gather_slab(std::span<const Particle> share, long first, const ProfileCommunicator& comm,
+                      std::span<const long> clumps) {
   SlabShare out;
   out.total = static_cast<long>(share.size());
   comm.sum(std::span<long>(&out.total, 1));
@@ -137,8 +143,9 @@ SlabShare gather_slab(std::span<const Particle> share, long first, const Profile
   bool rods = false;
   for (const Particle& p : share) rods = rods || p.length != 0;
   rods = comm.any(rods);
+  const bool clumped = comm.any(!clumps.empty());
   std::vector<std::size_t> counts;
-  std::string bytes = route(share, first, slabs, margin, comm.size(), rods, counts);
+  std::string bytes = route(share, clumps, first, slabs, margin, comm.size(), rods, counts);
   bytes = comm.exchange(std::move(bytes), counts);
   // This slab's particles first, then the neighbours'.
   const std::size_t size = record_size(rods), n = bytes.size() / size;
@@ -146,11 +153,12 @@ SlabShare gather_slab(std::span<const Particle> share, long first, const Profile
   out.ids.reserve(n);
   for (int pass = 0; pass < 2; ++pass)
     for (std::size_t k = 0; k < n; ++k) {
-      long id = 0;
-      const Particle p = particle_at(bytes.data() + k * size, rods, id);
+      long id = 0, clump = 0;
+      const Particle p = particle_at(bytes.data() + k * size, rods, id, clump);
       if ((slabs.owner(p.centre.z()) == comm.rank()) != (pass == 0)) continue;
       out.local.push_back(p);
       out.ids.push_back(id);
+      if (clumped) out.clumps.push_back(clump);
     }
   while (out.owned < out.local.size() && slabs.owner(out.local[out.owned].centre.z()) == comm.rank()) ++out.owned;
   return out;
@@ -159,23 +167,33 @@ SlabShare gather_slab(std::span<const Particle> share, long first, const Profile
 }  // namespace internal
 
 ParticleOverlaps find_overlaps(std::span<const Particle> share, long first, const ProfileCommunicator& comm,
-                               double relative_tolerance, unsigned threads) {
+                               double relative_tolerance, unsigned threads, std::span<const long> clumps) {
   ParticleOverlaps out;
-  const internal::SlabShare slab = internal::gather_slab(share, first, comm);
+  if (!clumps.empty() && clumps.size() != share.size())
+    throw std::invalid_argument("find_overlaps: " + std::to_string(clumps.size()) + " clump ids for " +
+                                std::to_string(share.size()) + " particles");
+  const internal::SlabShare slab = internal::gather_slab(share, first, comm, clumps);
   if (slab.total < 2) return out;
   const double scale = slab.volume_scale;
   double unused = 0;
-  const internal::PairTally t =
-      internal::search_overlaps(slab.local, slab.ids, slab.owned, relative_tolerance, scale, threads);
-  // Totals: the count and the exact volume sum in one reduction; the deepest pair by its depth,
+  const internal::OverlapTallies both =
+      internal::search_overlaps(slab.local, slab.ids, slab.owned, relative_tolerance, scale, threads, slab.clumps);
+  const internal::PairTally& t = both.between;
+  // Totals: the counts and the exact volume sums in one reduction; the deepest pair by its depth,
   // then the smallest first index, then the smallest second.
   ProfileSums sums;
   sums.solid.push_back(t.volume);
+  sums.solid.push_back(both.within.volume);
+  sums.error.emplace_back(scale);
   sums.error.emplace_back(scale);
   sums.evaluations = t.pairs;
   comm.sum(sums);
+  long within = both.within.pairs;
+  comm.sum(std::span<long>(&within, 1));
   out.pairs = sums.evaluations;
   out.doubled_volume = sums.solid[0].value();
+  out.clump_pairs = within;
+  out.clump_doubled_volume = sums.solid[1].value();
   double depth = t.depth;
   comm.min_max(unused, depth);
   const long none = std::numeric_limits<long>::max();

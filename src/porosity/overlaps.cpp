@@ -8,6 +8,8 @@
 #include <map>
 #include <numbers>
 #include <optional>
+#include <stdexcept>
+#include <string>
 
 #include "cell_index.hpp"
 #include "overlap_search.hpp"
@@ -75,8 +77,9 @@ PairOverlap pair_overlap(const Particle& a, const Particle& b) {
   return {s - d, d};
 }
 
-PairTally search_overlaps(std::span<const Particle> ps, std::span<const long> ids, std::size_t owned,
-                          double relative_tolerance, double volume_scale, unsigned threads) {
+OverlapTallies search_overlaps(std::span<const Particle> ps, std::span<const long> ids, std::size_t owned,
+                               double relative_tolerance, double volume_scale, unsigned threads,
+                               std::span<const long> clumps) {
   auto id = [&](std::size_t k) { return ids.empty() ? static_cast<long>(k) : ids[k]; };
   std::vector<std::int16_t> level_of;
   const std::map<int, GridLevel> levels = grid_levels(ps, &level_of);
@@ -84,11 +87,13 @@ PairTally search_overlaps(std::span<const Particle> ps, std::span<const long> id
   auto before = [&](std::size_t a, std::size_t b) {
     return level_of[a] != level_of[b] ? level_of[a] < level_of[b] : id(a) < id(b);
   };
-  auto test = [&](std::size_t i, std::size_t j, PairTally& t) {
+  auto test = [&](std::size_t i, std::size_t j, OverlapTallies& t) {
     const Particle &a = ps[i], &b = ps[j];
     const PairOverlap o = pair_overlap(a, b);
-    if (o.depth > relative_tolerance * std::min(a.diameter, b.diameter))
-      t.add(id(i), id(j), o.depth, sphere_lens_volume(a.radius(), b.radius(), o.distance));
+    if (o.depth > relative_tolerance * std::min(a.diameter, b.diameter)) {
+      PairTally& to = !clumps.empty() && clumps[i] == clumps[j] ? t.within : t.between;
+      to.add(id(i), id(j), o.depth, sphere_lens_volume(a.radius(), b.radius(), o.distance));
+    }
   };
   // Queries in cell order, level after level: consecutive queries meet the same neighbours, which
   // stay in the cache whatever the order of the file. Chunks are ranges of that order.
@@ -100,11 +105,12 @@ PairTally search_overlaps(std::span<const Particle> ps, std::span<const long> id
   }
   const std::size_t nq = level_start.back();
   const int chunks = static_cast<int>(std::min<std::size_t>(kChunks, std::max<std::size_t>(nq, 1)));
-  std::vector<PairTally> tally(static_cast<std::size_t>(chunks), PairTally{0, FixedPointSum(volume_scale)});
+  const PairTally none{0, FixedPointSum(volume_scale)};
+  std::vector<OverlapTallies> tally(static_cast<std::size_t>(chunks), OverlapTallies{none, none});
   internal::parallel_chunks(
       chunks, threads,
       [&](int c) {
-        PairTally& t = tally[static_cast<std::size_t>(c)];
+        OverlapTallies& t = tally[static_cast<std::size_t>(c)];
         std::size_t lv = 0;
         for (std::size_t q = nq * static_cast<std::size_t>(c) / chunks; q < nq * static_cast<std::size_t>(c + 1) / chunks; ++q) {
           while (q >= level_start[lv + 1]) ++lv;
@@ -117,8 +123,11 @@ PairTally search_overlaps(std::span<const Particle> ps, std::span<const long> id
         }
       },
       nullptr);
-  PairTally out{0, FixedPointSum(volume_scale)};
-  for (const PairTally& t : tally) out.merge(t);
+  OverlapTallies out{none, none};
+  for (const OverlapTallies& t : tally) {
+    out.between.merge(t.between);
+    out.within.merge(t.within);
+  }
   return out;
 }
 
@@ -134,19 +143,25 @@ double sphere_lens_volume(double a, double b, double distance) {
   return pi * h * h * (distance * distance + 2 * distance * s - 3 * (a - b) * (a - b)) / (12 * distance);
 }
 
-ParticleOverlaps find_overlaps(std::span<const Particle> particles, double relative_tolerance, unsigned threads) {
+ParticleOverlaps find_overlaps(std::span<const Particle> particles, double relative_tolerance, unsigned threads,
+                               std::span<const long> clumps) {
   ParticleOverlaps out;
   if (particles.size() < 2) return out;
+  if (!clumps.empty() && clumps.size() != particles.size())
+    throw std::invalid_argument("find_overlaps: " + std::to_string(clumps.size()) + " clump ids for " +
+                                std::to_string(particles.size()) + " particles");
   double vmax = 0;
   for (const Particle& p : particles) vmax = std::max(vmax, p.volume());
   const double scale = vmax > 0 ? vmax * static_cast<double>(particles.size()) : 1.0;
-  const internal::PairTally t =
-      internal::search_overlaps(particles, {}, particles.size(), relative_tolerance, scale, threads);
-  out.pairs = t.pairs;
-  out.max_depth = t.depth;
-  out.worst_first = t.first;
-  out.worst_second = t.second;
-  out.doubled_volume = t.volume.value();
+  const internal::OverlapTallies t =
+      internal::search_overlaps(particles, {}, particles.size(), relative_tolerance, scale, threads, clumps);
+  out.pairs = t.between.pairs;
+  out.max_depth = t.between.depth;
+  out.worst_first = t.between.first;
+  out.worst_second = t.between.second;
+  out.doubled_volume = t.between.volume.value();
+  out.clump_pairs = t.within.pairs;
+  out.clump_doubled_volume = t.within.volume.value();
   return out;
 }
 

@@ -3,6 +3,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -172,6 +173,14 @@ Packing read_packing_csv(std::istream& in, const std::string& name, const InputL
                         std::to_string(k + 1) + ")");
     col[h] = k;
   }
+  std::string clump;  // the clump column's name, if any (Packing::clumps)
+  for (std::string_view c : internal::kCsvClumpColumns)
+    if (col.count(std::string(c))) {
+      if (!clump.empty())
+        err.fatal(ln, "the header names two clump columns ('" + clump + "' and '" + std::string(c) +
+                          "'): one particle id per row");
+      clump = c;
+    }
   for (const char* req : {"x", "y", "z", "d"})
     if (!col.count(req)) err.fatal(ln, std::string("header lacks column '") + req + "' (need x,y,z,d for spheres)");
   const bool sc = col.count("ux") || col.count("uy") || col.count("uz") || col.count("l");
@@ -209,10 +218,19 @@ Packing read_packing_csv(std::istream& in, const std::string& name, const InputL
     Particle p;
     bool ok = get("x", p.centre.x()) && get("y", p.centre.y()) && get("z", p.centre.z()) && get("d", p.diameter);
     if (ok && sc) ok = get("ux", p.axis.x()) && get("uy", p.axis.y()) && get("uz", p.axis.z()) && get("l", p.length);
+    double id = 0;
+    if (ok && !clump.empty()) ok = get(clump.c_str(), id);
     if (!ok) continue;
     if (const std::string w = internal::validate_particle(p, sc); !w.empty()) {
       err.add(ln, w);
       continue;
+    }
+    if (!clump.empty()) {
+      if (const std::string w = internal::validate_clump(id); !w.empty()) {
+        err.add(ln, field_column(line, ',', col.at(clump)), "column '" + clump + "': " + w);
+        continue;
+      }
+      out.clumps.push_back(static_cast<long>(id));
     }
     out.particles.push_back(p);
   }
@@ -228,7 +246,8 @@ struct AtomColumns {
   std::map<std::string, int> index;
   std::string axis[3];
   bool scaled = false;
-  std::string size;  // "radius" or "diameter"
+  std::string size;   // "radius" or "diameter"
+  std::string clump;  // the clump column (Packing::clumps), empty if none
   std::size_t count = 0;
 };
 
@@ -321,11 +340,13 @@ class DumpReader {
       c.size = "diameter";
     else
       err_.fatal(ln_, "ATOMS columns lack 'radius' (or 'diameter'): only sphere dumps are supported");
+    for (std::string_view name : internal::kDumpClumpColumns)
+      if (c.clump.empty() && c.index.count(std::string(name))) c.clump = name;
     return c;
   }
 
-  // One atom's line as a sphere, or nullopt after saying what is wrong with it.
-  std::optional<Particle> atom(const std::string& line, AtomColumns& c) {
+  // One atom's line as a sphere (and its clump id), or nullopt after saying what is wrong with it.
+  std::optional<Particle> atom(const std::string& line, AtomColumns& c, long& clump) {
     const auto f = split(trim(line), ' ');
     if (f.size() != c.count) {
       err_.add(ln_, "expected " + std::to_string(c.count) + " fields (the ATOMS columns), found " +
@@ -353,6 +374,15 @@ class DumpReader {
       err_.add(ln_, w);
       return std::nullopt;
     }
+    if (!c.clump.empty()) {
+      const auto id = number(c.clump);
+      if (!id) return std::nullopt;
+      if (const std::string w = internal::validate_clump(*id); !w.empty()) {
+        err_.add(ln_, field_column(line, ' ', c.index[c.clump]), "column '" + c.clump + "': " + w);
+        return std::nullopt;
+      }
+      clump = static_cast<long>(*id);
+    }
     return p;
   }
 
@@ -362,7 +392,11 @@ class DumpReader {
     for (long i = 0; i < natoms_; ++i) {
       if (!next(line))
         err_.fatal(ln_, "file ends after " + std::to_string(i) + " of " + std::to_string(natoms_) + " atoms");
-      if (const auto p = atom(line, c)) snap.particles.push_back(*p);
+      long clump = 0;
+      if (const auto p = atom(line, c, clump)) {
+        snap.particles.push_back(*p);
+        if (!c.clump.empty()) snap.clumps.push_back(clump);
+      }
     }
     return snap;
   }
@@ -424,6 +458,39 @@ Packing read_packing(const std::filesystem::path& path, const InputLimits& limit
   if (!in) throw InputError(path.string(), "cannot be read twice (a pipe?): give a regular file");
   if (trim(first).rfind("ITEM:", 0) == 0) return read_lammps_dump(in, path.string(), limits);
   return read_packing_csv(in, path.string(), limits);
+}
+
+long particle_count(const Packing& packing) {
+  return packing.clumps.empty() ? static_cast<long>(packing.particles.size()) : distinct_count(packing.clumps);
+}
+
+long distinct_count(std::span<const long> ids) {
+  std::vector<long> v(ids.begin(), ids.end());
+  std::sort(v.begin(), v.end());
+  return static_cast<long>(std::unique(v.begin(), v.end()) - v.begin());
+}
+
+long distinct_count(std::span<const long> ids, const ProfileCommunicator& comm) {
+  std::vector<long> v(ids.begin(), ids.end());
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+  // Process of an id: its value modulo the process count (equal ids meet on one process).
+  const auto n = static_cast<std::size_t>(comm.size());
+  auto owner = [n](long id) { return static_cast<std::size_t>(static_cast<unsigned long>(id) % n); };
+  std::vector<std::size_t> counts(n, 0), at(n, 0);
+  for (long id : v) counts[owner(id)] += sizeof(long);
+  for (std::size_t q = 1; q < n; ++q) at[q] = at[q - 1] + counts[q - 1];
+  std::string bytes(v.size() * sizeof(long), '\0');
+  for (long id : v) {
+    std::memcpy(bytes.data() + at[owner(id)], &id, sizeof(long));
+    at[owner(id)] += sizeof(long);
+  }
+  bytes = comm.exchange(std::move(bytes), counts);
+  std::vector<long> mine(bytes.size() / sizeof(long));
+  if (!mine.empty()) std::memcpy(mine.data(), bytes.data(), mine.size() * sizeof(long));
+  long total = distinct_count(mine);
+  comm.sum(std::span<long>(&total, 1));
+  return total;
 }
 
 void write_packing_csv(std::ostream& out, std::span<const Particle> ps) {

@@ -107,13 +107,20 @@ struct RowErrors {
   }
 };
 
+// The values a row may hold: x y z d ux uy uz l (d: radius or diameter) and the clump id.
+constexpr int kValues = 9, kClump = 8;
+// Rows whose wanted fields are all among the first kFastFields are read by fast_row.
+constexpr std::size_t kFastFields = 16;
+
 // Where the numbers of a row are: CSV columns or LAMMPS ATOMS columns, and how to read them.
 struct Layout {
   char sep = ',';
   bool lammps = false, sc = false, scaled = false, radius = false, box = false;
   std::size_t ncol = 0;
-  int col[8] = {-1, -1, -1, -1, -1, -1, -1, -1};  // x y z d ux uy uz l (d: radius or diameter)
-  std::string name[8];
+  int col[kValues] = {-1, -1, -1, -1, -1, -1, -1, -1, -1};  // field of each value, -1: none
+  std::string name[kValues];
+  // The values this layout reads: those of a sphere (4) or a spherocylinder (8), and the clump id.
+  int values(int k) const { return k < 4 || (k < 8 && sc) || (k == kClump && col[kClump] >= 0); }
   double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
   long natoms = -1;
   std::uint64_t data_begin = 0;  // first byte of the rows
@@ -125,11 +132,12 @@ struct Layout {
 // nothing else, exactly the rows parse_row accepts (fields as split() cuts them, numbers as
 // number() reads them). A bad row goes to parse_row, which says what is wrong.
 bool fast_row(std::string_view line, const Layout& L, double* v) {
-  const int nvalues = L.sc ? 8 : 4;
-  int want[8] = {-1, -1, -1, -1, -1, -1, -1, -1};  // value index of field f, -1 if not wanted
+  int want[kFastFields];  // value index of field f, -1 if not wanted
+  std::fill(std::begin(want), std::end(want), -1);
   std::size_t need = L.ncol;
-  for (int k = 0; k < nvalues; ++k) {
-    if (L.col[k] >= 8) return false;
+  for (int k = 0; k < kValues; ++k) {
+    if (!L.values(k)) continue;
+    if (L.col[k] >= static_cast<int>(kFastFields)) return false;
     want[L.col[k]] = k;
     need = std::max(need, static_cast<std::size_t>(L.col[k]) + 1);
   }
@@ -153,7 +161,7 @@ bool fast_row(std::string_view line, const Layout& L, double* v) {
       while (b < e && trimmed(*b)) ++b;
       while (e > b && trimmed(e[-1])) --e;
     }
-    if (f < 8 && want[f] >= 0) {
+    if (f < kFastFields && want[f] >= 0) {
       if (b < e && *b == '+') ++b;
       const auto r = std::from_chars(b, e, v[want[f]]);
       if (r.ec != std::errc() || r.ptr != e) return false;
@@ -180,8 +188,8 @@ bool slow_row(std::string_view line, const Layout& L, long ln, std::vector<std::
       err.add(ln, internal::more_fields_than_columns(L.ncol, f.size()));
       return false;
     }
-  const int nvalues = L.sc ? 8 : 4;
-  for (int k = 0; k < nvalues; ++k) {
+  for (int k = 0; k < kValues; ++k) {
+    if (!L.values(k)) continue;
     const auto x = number(f[static_cast<std::size_t>(L.col[k])]);
     if (!x) {
       err.add(ln, "column '" + L.name[k] + "': not a number: '" + std::string(f[static_cast<std::size_t>(L.col[k])]) + "'",
@@ -193,10 +201,10 @@ bool slow_row(std::string_view line, const Layout& L, long ln, std::vector<std::
   return true;
 }
 
-// Parses one data row; false (and an error recorded) when it is bad.
+// Parses one data row into p (and its clump id); false (and an error recorded) when it is bad.
 bool parse_row(std::string_view line, const Layout& L, long ln, std::vector<std::string_view>& f, RowErrors& err,
-               Particle& p) {
-  double v[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+               Particle& p, long& clump) {
+  double v[kValues] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
   if (!fast_row(line, L, v) && !slow_row(line, L, ln, f, err, v)) return false;
   for (int k = 0; k < 3; ++k) p.centre[k] = L.scaled ? L.lo[k] + v[k] * (L.hi[k] - L.lo[k]) : v[k];
   p.diameter = L.radius ? 2 * v[3] : v[3];
@@ -207,6 +215,14 @@ bool parse_row(std::string_view line, const Layout& L, long ln, std::vector<std:
   if (const std::string w = internal::validate_particle(p, L.sc); !w.empty()) {
     err.add(ln, w);
     return false;
+  }
+  if (L.values(kClump)) {
+    if (const std::string w = internal::validate_clump(v[kClump]); !w.empty()) {
+      err.add(ln, "column '" + L.name[kClump] + "': " + w,
+              column_of(line, L.sep, static_cast<std::size_t>(L.col[kClump])));
+      return false;
+    }
+    clump = static_cast<long>(v[kClump]);
   }
   return true;
 }
@@ -244,6 +260,14 @@ Layout csv_layout(const std::filesystem::path& path, const InputLimits& limits) 
                                                                 "' twice (fields " + std::to_string(L.col[j] + 1) +
                                                                 " and " + std::to_string(k + 1) + ")");
         L.col[j] = static_cast<int>(k);
+      }
+    for (std::string_view c : internal::kCsvClumpColumns)
+      if (h == c) {
+        if (L.col[kClump] >= 0)
+          throw InputError(name + ":" + std::to_string(ln), "the header names two clump columns ('" + L.name[kClump] +
+                                                                "' and '" + h + "'): one particle id per row");
+        L.col[kClump] = static_cast<int>(k);
+        L.name[kClump] = h;
       }
   }
   const std::string where = name + ":" + std::to_string(ln);
@@ -318,6 +342,8 @@ Layout lammps_layout(const std::filesystem::path& path, std::uint64_t at, long a
       L.col[3] = L.radius ? find("radius") : find("diameter");
       L.name[3] = L.radius ? "radius" : "diameter";
       if (L.col[3] < 0) fatal("ATOMS columns lack 'radius' (or 'diameter'): only sphere dumps are supported");
+      for (std::string_view c : internal::kDumpClumpColumns)
+        if (L.col[kClump] < 0 && (L.col[kClump] = find(std::string(c))) >= 0) L.name[kClump] = c;
       L.data_begin = lines.after_line();
       L.data_line = ln + 1;
       return L;
@@ -396,7 +422,7 @@ ShareScan share_scan(std::vector<Piece>& pieces) {
 
 // Parses the rows of a piece that lie after the header into `out`, from its first line on.
 void parse_piece(const std::filesystem::path& path, const Layout& L, const InputLimits& limits, Piece& piece,
-                 Particle* out) {
+                 Particle* out, long* clumps) {
   const std::uint64_t from = std::max(piece.b, L.data_begin);
   if (from >= piece.e && piece.b < piece.e) return;
   internal::FileLines lines(path, from, piece.e, limits.max_line_bytes);
@@ -410,7 +436,11 @@ void parse_piece(const std::filesystem::path& path, const Layout& L, const Input
       const std::string_view t = trim(line);
       if (t.empty() || (!L.lammps && t[0] == '#')) continue;
     }
-    if (parse_row(line, L, ln, f, piece.err, out[piece.rows])) ++piece.rows;
+    long clump = 0;
+    if (parse_row(line, L, ln, f, piece.err, out[piece.rows], clump)) {
+      if (clumps) clumps[piece.rows] = clump;
+      ++piece.rows;
+    }
   }
 }
 
@@ -424,19 +454,24 @@ void parse_share(const std::filesystem::path& path, const Layout& L, const Input
     lines += static_cast<std::size_t>(p.scan.lines);
   }
   out.particles.resize(lines);
+  const bool clumps = L.values(kClump);
+  out.clumps.resize(clumps ? lines : 0);
   internal::parallel_chunks(static_cast<int>(pieces.size()), threads, [&](int k) {
     Piece& p = pieces[static_cast<std::size_t>(k)];
-    parse_piece(path, L, limits, p, out.particles.data() + p.at);
+    parse_piece(path, L, limits, p, out.particles.data() + p.at, clumps ? out.clumps.data() + p.at : nullptr);
   }, nullptr);
   std::size_t n = 0;
   for (const Piece& p : pieces) {
-    std::copy(out.particles.begin() + static_cast<std::ptrdiff_t>(p.at),
-              out.particles.begin() + static_cast<std::ptrdiff_t>(p.at + p.rows),
+    const auto b = static_cast<std::ptrdiff_t>(p.at), e = static_cast<std::ptrdiff_t>(p.at + p.rows);
+    std::copy(out.particles.begin() + b, out.particles.begin() + e,
               out.particles.begin() + static_cast<std::ptrdiff_t>(n));
+    if (clumps)
+      std::copy(out.clumps.begin() + b, out.clumps.begin() + e, out.clumps.begin() + static_cast<std::ptrdiff_t>(n));
     n += p.rows;
     err.merge(p.err);
   }
   out.particles.resize(n);
+  out.clumps.resize(clumps ? n : 0);
 }
 
 bool starts_lammps(const std::filesystem::path& path, const InputLimits& limits) {

@@ -2,8 +2,10 @@
 // packing_share.cpp: the block reader of a rank's share), so both give the same messages.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <string>
+#include <string_view>
 
 #include "ssimarch/porosity/packing.hpp"
 
@@ -32,6 +34,20 @@ inline std::string validate_particle(Particle& p, bool sc) {
     if (!(n > 0)) return "axis (ux, uy, uz) must not be zero";
     p.axis /= n;
   }
+  return {};
+}
+
+/// The names of the clump column (Packing::clumps): a CSV header's (compared in lower case) and a
+/// LAMMPS dump's ATOMS columns (LAMMPS writes a molecule's id as `mol`, LIGGGHTS a multisphere
+/// body's as `id_multisphere`).
+inline constexpr std::array<std::string_view, 2> kCsvClumpColumns = {"particle", "clump"};
+inline constexpr std::array<std::string_view, 3> kDumpClumpColumns = {"mol", "clump", "id_multisphere"};
+
+/// Empty when `v`, read from the clump column, is a particle id (an integer of at most 2^53 in
+/// magnitude, exact in a double), else the reason.
+inline std::string validate_clump(double v) {
+  if (!(std::abs(v) <= 9007199254740992.0) || v != std::floor(v))
+    return "the clump id must be an integer of at most 2^53 in magnitude (got " + std::to_string(v) + ")";
   return {};
 }
 

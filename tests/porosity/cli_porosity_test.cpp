@@ -167,6 +167,39 @@ TEST_F(porosity_Cli, OverlappingParticlesAreReportedAndFailUnderStrict) {
   EXPECT_FALSE(fs::exists(p("s.csv")));
 }
 
+TEST_F(porosity_Cli, ClumpedParticlesAreTheirUnionAndStrictRejectsOnlyOverlapsBetweenThem) {
+  // Two particles of two overlapping spheres each (a clump column), apart from each other; the same
+  // spheres without the column.
+  const std::string rows = "0,0,1,1,7\n0.4,0,1,1,7\n1.5,0,1,1,9\n1.9,0,1,1,9\n";
+  std::ofstream(p("clumps.csv")) << "x,y,z,d,particle\n" << rows;
+  std::ofstream(p("spheres.csv")) << "x,y,z,d\n0,0,1,1\n0.4,0,1,1\n1.5,0,1,1\n1.9,0,1,1\n";
+  const std::string args = " --container-radius 3 --z-range 0.6,1.4 --radii 12 --strict -o ";
+  CliRun c = run("porosity " + p("clumps.csv") + args + p("c.csv") + " --summary " + p("c.json"));
+  ASSERT_EQ(c.status, 0) << c.out;
+  EXPECT_NE(c.out.find("4 spheres of 2 clumped particles"), std::string::npos) << c.out;
+  EXPECT_NE(c.out.find("note: 2 pairs of spheres overlap inside their clumped particles (2 particles of 4 spheres)"),
+            std::string::npos)
+      << c.out;
+  std::ifstream js(p("c.json"));
+  const nlohmann::json j = nlohmann::json::parse(js);
+  EXPECT_EQ(j["particles"], 4);
+  EXPECT_EQ(j["clumped_particles"], 2);
+  EXPECT_EQ(j["overlaps"]["pairs"], 0);
+  EXPECT_EQ(j["overlaps"]["within_clumps"]["pairs"], 2);
+  // A clumped bed's profile is its union's: the same file without the column, value for value.
+  CliRun s =
+      run("porosity " + p("spheres.csv") + " --container-radius 3 --z-range 0.6,1.4 --radii 12 -o " + p("s.csv"));
+  ASSERT_EQ(s.status, 0) << s.out;
+  EXPECT_EQ(lines(p("c.csv")), lines(p("s.csv")));
+  // Particles 7 and 9 moved together: one pair between particles, which --strict rejects.
+  std::ofstream(p("touching.csv")) << "x,y,z,d,particle\n0,0,1,1,7\n0.4,0,1,1,7\n1.3,0,1,1,9\n1.7,0,1,1,9\n";
+  CliRun t = run("porosity " + p("touching.csv") + args + p("t.csv"));
+  EXPECT_EQ(t.status, 1) << t.out;
+  EXPECT_NE(t.out.find("--strict: 1 pair of clumped particles overlap (worst: rows 2 and 3 by 0.1"), std::string::npos)
+      << t.out;
+  EXPECT_FALSE(fs::exists(p("t.csv")));
+}
+
 TEST_F(porosity_Cli, RangesAreValidatedWithTheReason) {
   std::ofstream(p("ok.csv")) << "x,y,z,d\n0,0,0.5,1\n";
   const std::vector<std::pair<std::string, std::string>> cases = {

@@ -107,18 +107,13 @@ std::vector<Particle> overlapping_column(int n, std::uint64_t seed) {
 
 // find_overlaps of the packing split into n equal blocks, one per in-process rank.
 std::vector<ParticleOverlaps> split_search(const std::vector<Particle>& ps, int n) {
-  testing::ThreadGroup group(n);
   std::vector<ParticleOverlaps> out(static_cast<std::size_t>(n));
-  std::vector<std::thread> ranks;
-  for (int k = 0; k < n; ++k)
-    ranks.emplace_back([&, k] {
-      testing::ThreadGroup::Member me(group, k);
-      const std::size_t b = ps.size() * static_cast<std::size_t>(k) / static_cast<std::size_t>(n);
-      const std::size_t e = ps.size() * static_cast<std::size_t>(k + 1) / static_cast<std::size_t>(n);
-      const std::span<const Particle> share(ps.data() + b, e - b);
-      out[static_cast<std::size_t>(k)] = find_overlaps(share, static_cast<long>(b), me, 1e-9, 2);
-    });
-  for (auto& t : ranks) t.join();
+  testing::run_on_ranks(n, [&](const testing::ThreadGroup::Member& me, int k) {
+    const std::size_t b = ps.size() * static_cast<std::size_t>(k) / static_cast<std::size_t>(n);
+    const std::size_t e = ps.size() * static_cast<std::size_t>(k + 1) / static_cast<std::size_t>(n);
+    const std::span<const Particle> share(ps.data() + b, e - b);
+    out[static_cast<std::size_t>(k)] = find_overlaps(share, static_cast<long>(b), me, 1e-9, 2);
+  });
   return out;
 }
 

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstring>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "ssimarch/porosity/profile_communicator.hpp"
@@ -133,5 +134,18 @@ class ThreadGroup {
   std::vector<std::string> slots_;
   std::barrier<> sync_;
 };
+
+/// Runs f(communicator, rank) on n in-process ranks, a thread each, and waits for all of them.
+template <class F>
+void run_on_ranks(int n, F&& f) {
+  ThreadGroup group(n);
+  std::vector<std::thread> ranks;
+  for (int k = 0; k < n; ++k)
+    ranks.emplace_back([&, k] {
+      ThreadGroup::Member me(group, k);
+      f(me, k);
+    });
+  for (auto& t : ranks) t.join();
+}
 
 }  // namespace ssimarch::testing

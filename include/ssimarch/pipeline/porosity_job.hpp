@@ -38,6 +38,9 @@ struct PorosityJob {
   /// The packing: read from `packing_file` (CSV or LAMMPS dump, read_packing) when `packing` is empty.
   std::filesystem::path packing_file;
   std::vector<Particle> packing;
+  /// With `packing`: empty, or the clump id of each of its particles (Packing::clumps). A packing
+  /// file brings its own.
+  std::vector<long> clumps;
   /// How much of the packing file is read before it is rejected as too large.
   InputLimits input_limits;
   double container_radius = 0.0;      ///< R > 0, packing units
@@ -63,7 +66,10 @@ struct PorosityTimings {
 };
 
 struct PorosityJobResult {
-  long particles = 0;             ///< particles in the packing
+  long particles = 0;  ///< rows of the packing (spheres or spherocylinders)
+  /// Particles those rows form when the packing has clump ids (Packing::clumps): the distinct ids;
+  /// 0 when it has none (each row is a particle).
+  long clumped_particles = 0;
   bool spherocylinders = false;   ///< the file had axis and length columns (particles given: any l > 0)
   Container container;            ///< with the height range actually used
   BulkPorosity bulk;
@@ -92,6 +98,9 @@ struct OverlapWording {
 /// many values left [0, 1] because of it. The CLI prints it on stderr, Python raises it as a
 /// RuntimeWarning, `ssimarch porosity --strict` fails with it.
 std::string describe_overlaps(const PorosityJobResult& r, OverlapRule rule, const OverlapWording& wording = {});
+/// The overlaps inside clumped particles (ParticleOverlaps::clump_pairs; empty when none): spheres of
+/// one particle overlap by design, so this is information, never a reason for --strict to fail.
+std::string describe_clump_overlaps(const PorosityJobResult& r, OverlapRule rule);
 
 /// Throws InputError, located by the job field's name (e.g. "container_radius"), for an impossible
 /// job: lengths outside [1e-100, 1e100] (volumes leave double precision), more than 1e7 points in

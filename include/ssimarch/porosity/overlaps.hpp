@@ -29,24 +29,34 @@ struct ParticleOverlaps {
   /// overlap counts each pair. Summed exactly (FixedPointSum, 96 bits below the packing's count
   /// times its largest particle volume): the same bits for any thread or process count.
   double doubled_volume = 0.0;
+  /// Overlaps inside clumped particles (Packing::clumps): pairs of spheres of one particle, which
+  /// overlap by design, and the volume they share. They are not in `pairs`, the worst pair or
+  /// `doubled_volume`, which are between particles; the union counts their common volume once all
+  /// the same.
+  long clump_pairs = 0;
+  double clump_doubled_volume = 0.0;
 };
 
 /// Every overlapping pair, found in O(n) expected time for particles of similar size by a
 /// hierarchical grid (one level per power of two of the particle extent, each pair tested from the
 /// level of its smaller particle), on `threads` workers (0: the library's thread count). A pair
 /// overlaps when its depth exceeds `relative_tolerance` times the smaller diameter (contacts are
-/// not overlaps).
+/// not overlaps). `clumps`: empty, or one clump id per particle (Packing::clumps), whose pairs
+/// within one clump go to clump_pairs; std::invalid_argument when its size is neither.
 ParticleOverlaps find_overlaps(std::span<const Particle> particles,
-                               double relative_tolerance = kOverlapRelativeTolerance, unsigned threads = 0);
+                               double relative_tolerance = kOverlapRelativeTolerance, unsigned threads = 0,
+                               std::span<const long> clumps = {});
 
 /// The same over a packing split among processes: this process holds `share`, the particles
 /// first, first + 1, ... of the packing (read_packing_share). The processes exchange their
 /// particles so that each holds a slab of the bed (cut at quantiles of the centres' heights) plus
 /// the particles within reach of the slab from the slabs beside it; each pair is counted by the
 /// process owning the particle it is tested from. Every process gets the whole result, equal to
-/// find_overlaps of the whole packing. Collective: every process of `comm` must call it.
+/// find_overlaps of the whole packing. Collective: every process of `comm` must call it. `clumps`:
+/// the clump ids of the share's particles (empty when the packing has none).
 ParticleOverlaps find_overlaps(std::span<const Particle> share, long first, const ProfileCommunicator& comm,
-                               double relative_tolerance = kOverlapRelativeTolerance, unsigned threads = 0);
+                               double relative_tolerance = kOverlapRelativeTolerance, unsigned threads = 0,
+                               std::span<const long> clumps = {});
 
 /// Volume of the lens common to two balls of radii a, b whose centres are `distance` apart:
 /// pi (a + b - D)^2 (D^2 + 2 D (a + b) - 3 (a - b)^2) / (12 D); the smaller ball's volume when

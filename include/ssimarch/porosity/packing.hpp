@@ -1,9 +1,10 @@
-// Packing files: CSV with a header (spheres: x,y,z,d; spherocylinders: x,y,z,ux,uy,uz,d,l; the axis
-// need not be unit length; units are the file's) and LAMMPS/LIGGGHTS text dumps of spheres
-// (ITEM: ATOMS with x y z (or xu yu zu, or scaled xs ys zs) and radius or diameter columns; the last
-// snapshot in the file is used). Invalid input throws ssimarch::InputError (core/error.hpp) whose location
-// is "file:line" (or "file:line:column" for a field that is not a number); bad rows are collected (up to
-// ten reported) and thrown together with the file as location.
+// Packing files: CSV with a header (spheres: x,y,z,d; spherocylinders: x,y,z,ux,uy,uz,d,l; the
+// axis need not be unit length; units are the file's; an optional clump column, Packing::clumps)
+// and LAMMPS/LIGGGHTS text dumps of spheres (ITEM: ATOMS with x y z (or xu yu zu, or scaled xs ys
+// zs) and radius or diameter columns; the last snapshot in the file is used). Invalid input throws
+// ssimarch::InputError (core/error.hpp) whose location is "file:line" (or "file:line:column" for a
+// field that is not a number); bad rows are collected (up to ten reported) and thrown together
+// with the file as location.
 #pragma once
 
 #include <filesystem>
@@ -22,7 +23,21 @@ namespace ssimarch {
 struct Packing {
   std::vector<Particle> particles;
   bool spherocylinders = false;  ///< the file had axis and length columns
+  /// The particle each row belongs to, from a clump column (CSV `particle` or `clump`; LAMMPS dumps
+  /// `mol`, `clump` or `id_multisphere`): rows with the same id are the spheres of one clumped
+  /// particle (a LIGGGHTS multisphere body, a rigid molecule). Integers, one per row of
+  /// `particles`; empty when the file has no such column (each row is a particle of its own).
+  std::vector<long> clumps;
 };
+
+/// How many particles the packing holds: the distinct clump ids, or its rows when it has none.
+long particle_count(const Packing& packing);
+/// The number of distinct values among `ids`.
+long distinct_count(std::span<const long> ids);
+/// The number of distinct values among the ids that the processes of `comm` hold together (each
+/// its own `ids`): each id is sent to one process chosen by its value, which counts the distinct
+/// ones it receives. Collective.
+long distinct_count(std::span<const long> ids, const ProfileCommunicator& comm);
 
 /// Reads a CSV or a LAMMPS dump (recognised by a first line starting with "ITEM:"). A UTF-8 byte
 /// order mark before the first line is skipped. A file larger than limits.max_packing_bytes or a
