@@ -68,13 +68,33 @@ std::vector<Particle> particles_of(const py::object& obj) {
   return out;
 }
 
+// Clump ids of array particles (Packing::clumps): a 1-D array of integers, one per row. Floats are
+// refused rather than truncated (2.5 is no particle id).
+std::vector<long> clumps_of(const py::object& obj) {
+  const py::array a = py::array::ensure(obj);
+  if (!a || a.ndim() != 1)
+    throw InputError("clumps", "expected a 1-D array of integer particle ids, one per row of `particles`");
+  const char kind = a.dtype().kind();
+  if (kind != 'i' && kind != 'u')
+    throw InputError("clumps",
+                     std::string("expected integer particle ids, got dtype ") + py::str(a.dtype()).cast<std::string>());
+  const auto ids = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(a);
+  return std::vector<long>(ids.data(), ids.data() + ids.size());
+}
+
 PorosityJob porosity_job(const py::object& particles, double radius, const py::object& height_range, double tolerance,
-                         unsigned threads, const std::string& overlaps) {
+                         unsigned threads, const std::string& overlaps, const py::object& clumps) {
   PorosityJob job;
-  if (py::isinstance<py::str>(particles) || py::hasattr(particles, "__fspath__"))
+  if (py::isinstance<py::str>(particles) || py::hasattr(particles, "__fspath__")) {
     job.packing_file = py::str(py::module_::import("os").attr("fspath")(particles)).cast<std::string>();
-  else
+    if (!clumps.is_none())
+      throw InputError("clumps",
+                       "a packing file brings its own clump column (docs/porosity.md); clumps= is for "
+                       "particles given as an array");
+  } else {
     job.packing = particles_of(particles);
+    if (!clumps.is_none()) job.clumps = clumps_of(clumps);
+  }
   job.container_radius = radius;
   if (!height_range.is_none()) {
     const auto h = height_range.cast<std::pair<double, double>>();
@@ -220,8 +240,8 @@ void bind_porosity(py::module_& m) {
   m.def(
       "radial",
       [](const py::object& particles, double radius, int points, const py::object& height, double tol, unsigned threads,
-         const std::string& overlaps) {
-        PorosityJob job = porosity_job(particles, radius, height, tol, threads, overlaps);
+         const std::string& overlaps, const py::object& clumps) {
+        PorosityJob job = porosity_job(particles, radius, height, tol, threads, overlaps, clumps);
         if (points == 0) throw InputError("radial_points", "needs at least one radius (got 0)");
         job.radial_points = points;
         const PorosityJobResult r = run_job(job);
@@ -229,13 +249,13 @@ void bind_porosity(py::module_& m) {
       },
       py::arg("particles"), py::arg("radius"), py::arg("points") = PorosityDefaults::kRadialPoints, py::kw_only(),
       py::arg("height_range") = py::none(), py::arg("tolerance") = PorosityDefaults::kTolerance,
-      py::arg("threads") = 0u, py::arg("overlaps") = "union",
+      py::arg("threads") = 0u, py::arg("overlaps") = "union", py::arg("clumps") = py::none(),
       "Radial porosity eps(r) at `points` radii evenly on (0, radius]: returns (r, eps) as numpy arrays.");
   m.def(
       "axial",
       [](const py::object& particles, double radius, int slices, const py::object& height, double tol, unsigned threads,
-         const std::string& overlaps) {
-        PorosityJob job = porosity_job(particles, radius, height, tol, threads, overlaps);
+         const std::string& overlaps, const py::object& clumps) {
+        PorosityJob job = porosity_job(particles, radius, height, tol, threads, overlaps, clumps);
         if (slices == 0) throw InputError("axial_slices", "needs at least one slice (got 0)");
         job.axial_slices = slices;
         const PorosityJobResult r = run_job(job);
@@ -243,22 +263,23 @@ void bind_porosity(py::module_& m) {
       },
       py::arg("particles"), py::arg("radius"), py::arg("slices") = PorosityDefaults::kAxialSlices, py::kw_only(),
       py::arg("height_range") = py::none(), py::arg("tolerance") = PorosityDefaults::kTolerance,
-      py::arg("threads") = 0u, py::arg("overlaps") = "union",
+      py::arg("threads") = 0u, py::arg("overlaps") = "union", py::arg("clumps") = py::none(),
       "Axial porosity eps(z) at the centres of `slices` equal slices of the height range: returns (z, eps).");
   m.def(
       "bulk",
       [](const py::object& particles, double radius, const py::object& height, double tol, unsigned threads,
-         const std::string& overlaps) {
-        return run_job(porosity_job(particles, radius, height, tol, threads, overlaps)).bulk.porosity;
+         const std::string& overlaps, const py::object& clumps) {
+        return run_job(porosity_job(particles, radius, height, tol, threads, overlaps, clumps)).bulk.porosity;
       },
       py::arg("particles"), py::arg("radius"), py::kw_only(), py::arg("height_range") = py::none(),
       py::arg("tolerance") = PorosityDefaults::kTolerance, py::arg("threads") = 0u, py::arg("overlaps") = "union",
+      py::arg("clumps") = py::none(),
       "Bulk porosity of the container (radius, height range; default: the packing's vertical extent).");
   m.def(
       "bins",
       [](const py::object& particles, double radius, int bins, const py::object& height, double tol, unsigned threads,
-         const std::string& overlaps) {
-        PorosityJob job = porosity_job(particles, radius, height, tol, threads, overlaps);
+         const std::string& overlaps, const py::object& clumps) {
+        PorosityJob job = porosity_job(particles, radius, height, tol, threads, overlaps, clumps);
         if (bins == 0) throw InputError("bins", "needs at least one bin (got 0)");
         job.bins = bins;
         const PorosityJobResult r = run_job(job);
@@ -266,14 +287,14 @@ void bind_porosity(py::module_& m) {
       },
       py::arg("particles"), py::arg("radius"), py::arg("bins") = 50, py::kw_only(),
       py::arg("height_range") = py::none(), py::arg("tolerance") = PorosityDefaults::kTolerance,
-      py::arg("threads") = 0u, py::arg("overlaps") = "union",
+      py::arg("threads") = 0u, py::arg("overlaps") = "union", py::arg("clumps") = py::none(),
       "Porosity averaged over `bins` equal annular bins of [0, radius] (the CLI's --bins): returns (r_inner, "
       "r_outer, eps).");
   m.def(
       "map",
       [](const py::object& particles, double radius, int radii, int heights, const py::object& height, double tol,
-         unsigned threads, const std::string& overlaps) {
-        PorosityJob job = porosity_job(particles, radius, height, tol, threads, overlaps);
+         unsigned threads, const std::string& overlaps, const py::object& clumps) {
+        PorosityJob job = porosity_job(particles, radius, height, tol, threads, overlaps, clumps);
         if (radii == 0 || heights == 0)
           throw InputError("map", "needs at least one radius and one height (got " + std::to_string(radii) + " x " +
                                       std::to_string(heights) + ")");
@@ -286,6 +307,7 @@ void bind_porosity(py::module_& m) {
       py::arg("particles"), py::arg("radius"), py::arg("radii") = PorosityDefaults::kMapCells,
       py::arg("heights") = PorosityDefaults::kMapCells, py::kw_only(), py::arg("height_range") = py::none(),
       py::arg("tolerance") = PorosityDefaults::kTolerance, py::arg("threads") = 0u, py::arg("overlaps") = "union",
+      py::arg("clumps") = py::none(),
       "Porosity map eps(r, z) at the centres of radii x heights cells (the CLI's --map): returns (r, z, eps) with "
       "eps of shape (heights, radii), eps[i, j] at z[i], r[j].");
   bind_packing(m);

@@ -1,5 +1,7 @@
 # Type stubs of ssimarch.porosity. `particles`: an N×4 array (x, y, z, d) of spheres, an N×8 array
 # (x, y, z, ux, uy, uz, d, l) of spherocylinders, or the path of a packing file (CSV, LAMMPS dump).
+# `clumps`: with an array, the integer particle id of each row (rows with one id are the spheres of
+# one clumped particle, docs/porosity.md); a packing file brings its own clump column.
 import os
 from typing import Any, Literal, Optional, Union
 
@@ -17,6 +19,7 @@ def radial(
     tolerance: float = ...,
     threads: int = ...,
     overlaps: str = ...,
+    clumps: npt.ArrayLike | None = ...,
 ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]: ...
 def axial(
     particles: _Particles,
@@ -27,6 +30,7 @@ def axial(
     tolerance: float = ...,
     threads: int = ...,
     overlaps: str = ...,
+    clumps: npt.ArrayLike | None = ...,
 ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]: ...
 def bulk(
     particles: _Particles,
@@ -36,6 +40,7 @@ def bulk(
     tolerance: float = ...,
     threads: int = ...,
     overlaps: str = ...,
+    clumps: npt.ArrayLike | None = ...,
 ) -> float: ...
 def bins(
     particles: _Particles,
@@ -46,6 +51,7 @@ def bins(
     tolerance: float = ...,
     threads: int = ...,
     overlaps: str = ...,
+    clumps: npt.ArrayLike | None = ...,
 ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], npt.NDArray[np.float64]]: ...
 def map(
     particles: _Particles,
@@ -57,6 +63,7 @@ def map(
     tolerance: float = ...,
     threads: int = ...,
     overlaps: str = ...,
+    clumps: npt.ArrayLike | None = ...,
 ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], npt.NDArray[np.float64]]: ...
 def pack(
     kind: Literal["spheres", "spherocylinders"],

@@ -196,6 +196,27 @@ def test_overlapping_particles_are_a_warning_and_strict_is_the_warning_filter():
         porosity.bulk(ONE, R)  # one sphere: no warning
 
 
+def test_clumped_particles_overlap_inside_without_a_warning():
+    # Issue 30: two particles of two overlapping spheres each; their own overlaps are by design.
+    import warnings
+    spheres = np.array([[0.0, 0, 0, 1], [0.4, 0, 0, 1], [1.5, 0, 0, 1], [1.9, 0, 0, 1]])
+    ids = np.array([7, 7, 9, 9])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)  # the CLI's --strict
+        r, clumped = porosity.radial(spheres, 3.0, 12, clumps=ids)
+    with pytest.warns(RuntimeWarning, match="2 pairs of particles overlap"):
+        _, plain = porosity.radial(spheres, 3.0, 12)
+    assert np.array_equal(clumped, plain)  # the profile is the union's either way
+    # Particle 9 moved onto particle 7: an overlap between particles is said.
+    touching = spheres - np.array([0.2, 0, 0, 0]) * np.array([[0], [0], [1], [1]])
+    with pytest.warns(RuntimeWarning, match="1 pair of clumped particles overlap"):
+        porosity.bulk(touching, 3.0, clumps=ids)
+    with pytest.raises(ssimarch.InputError, match="clumps.*integer particle ids, got dtype float64"):
+        porosity.bulk(spheres, 3.0, clumps=np.array([7.0, 7.0, 9.0, 9.5]))
+    with pytest.raises(ssimarch.InputError, match="clumps.*4 particles"):
+        porosity.bulk(spheres, 3.0, clumps=np.array([1, 2, 3]))
+
+
 def test_overlapping_particles_count_once_unless_asked_otherwise():
     # The union's solid volume: two unit-diameter balls 0.3 apart share the lens
     # pi (a + b - D)^2 (D^2 + 2 D (a + b)) / (12 D) with a = b = 1/2, D = 0.3.
