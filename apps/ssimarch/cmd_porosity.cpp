@@ -140,9 +140,11 @@ void report(const PorosityJobResult& r, bool quiet) {
   std::ostringstream msg;
   msg.precision(10);
   msg << "bulk porosity: " << r.bulk.porosity << " (R = " << c.radius << ", z in [" << c.slab.z_min << ", "
-      << c.slab.z_max << "], " << r.bulk.stats.particles_used << (r.clumped_particles > 0 ? " spheres" : " particles");
-  if (r.clumped_particles > 0) msg << " of " << r.clumped_particles << " clumped particles";
-  msg << ")\n";
+      << c.slab.z_max << "], " << r.bulk.stats.particles_used;
+  if (r.clumped_particles > 0)
+    msg << " spheres of " << r.clumped_particles << " clumped particles)\n";
+  else
+    msg << " particles)\n";
   if (!quiet) std::cerr << msg.str();
   if (r.unconverged > 0)
     std::cerr << "ssimarch: warning: " << r.unconverged

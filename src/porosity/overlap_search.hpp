@@ -31,6 +31,9 @@ struct PairTally {
   void merge(const PairTally& o);
 };
 
+/// Throws std::invalid_argument unless `clumps` is empty or has one id per particle (find_overlaps).
+void require_clump_per_particle(std::size_t clumps, std::size_t particles);
+
 /// Grid level of a particle: the power of two above its reach (centre to farthest point).
 int overlap_level(const Particle& p);
 

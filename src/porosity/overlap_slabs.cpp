@@ -8,8 +8,6 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
-#include <stdexcept>
-#include <string>
 
 #include "overlap_search.hpp"
 #include "ssimarch/porosity/overlaps.hpp"
@@ -169,9 +167,7 @@ SlabShare gather_slab(std::span<const Particle> share, long first, const Profile
 ParticleOverlaps find_overlaps(std::span<const Particle> share, long first, const ProfileCommunicator& comm,
                                double relative_tolerance, unsigned threads, std::span<const long> clumps) {
   ParticleOverlaps out;
-  if (!clumps.empty() && clumps.size() != share.size())
-    throw std::invalid_argument("find_overlaps: " + std::to_string(clumps.size()) + " clump ids for " +
-                                std::to_string(share.size()) + " particles");
+  internal::require_clump_per_particle(clumps.size(), share.size());
   const internal::SlabShare slab = internal::gather_slab(share, first, comm, clumps);
   if (slab.total < 2) return out;
   const double scale = slab.volume_scale;

@@ -50,6 +50,12 @@ void PairTally::merge(const PairTally& o) {
   }
 }
 
+void require_clump_per_particle(std::size_t clumps, std::size_t particles) {
+  if (clumps != 0 && clumps != particles)
+    throw std::invalid_argument("find_overlaps: " + std::to_string(clumps) + " clump ids for " +
+                                std::to_string(particles) + " particles");
+}
+
 int overlap_level(const Particle& p) { return std::ilogb(reach(p)) + 1; }
 
 std::map<int, GridLevel> grid_levels(std::span<const Particle> ps, std::vector<std::int16_t>* level_of) {
@@ -147,9 +153,7 @@ ParticleOverlaps find_overlaps(std::span<const Particle> particles, double relat
                                std::span<const long> clumps) {
   ParticleOverlaps out;
   if (particles.size() < 2) return out;
-  if (!clumps.empty() && clumps.size() != particles.size())
-    throw std::invalid_argument("find_overlaps: " + std::to_string(clumps.size()) + " clump ids for " +
-                                std::to_string(particles.size()) + " particles");
+  internal::require_clump_per_particle(clumps.size(), particles.size());
   double vmax = 0;
   for (const Particle& p : particles) vmax = std::max(vmax, p.volume());
   const double scale = vmax > 0 ? vmax * static_cast<double>(particles.size()) : 1.0;

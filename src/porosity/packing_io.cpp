@@ -464,16 +464,21 @@ long particle_count(const Packing& packing) {
   return packing.clumps.empty() ? static_cast<long>(packing.particles.size()) : distinct_count(packing.clumps);
 }
 
-long distinct_count(std::span<const long> ids) {
-  std::vector<long> v(ids.begin(), ids.end());
-  std::sort(v.begin(), v.end());
-  return static_cast<long>(std::unique(v.begin(), v.end()) - v.begin());
-}
+namespace {
 
-long distinct_count(std::span<const long> ids, const ProfileCommunicator& comm) {
+std::vector<long> sorted_unique(std::span<const long> ids) {
   std::vector<long> v(ids.begin(), ids.end());
   std::sort(v.begin(), v.end());
   v.erase(std::unique(v.begin(), v.end()), v.end());
+  return v;
+}
+
+}  // namespace
+
+long distinct_count(std::span<const long> ids) { return static_cast<long>(sorted_unique(ids).size()); }
+
+long distinct_count(std::span<const long> ids, const ProfileCommunicator& comm) {
+  const std::vector<long> v = sorted_unique(ids);
   // Process of an id: its value modulo the process count (equal ids meet on one process).
   const auto n = static_cast<std::size_t>(comm.size());
   auto owner = [n](long id) { return static_cast<std::size_t>(static_cast<unsigned long>(id) % n); };

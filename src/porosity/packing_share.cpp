@@ -119,8 +119,8 @@ struct Layout {
   std::size_t ncol = 0;
   int col[kValues] = {-1, -1, -1, -1, -1, -1, -1, -1, -1};  // field of each value, -1: none
   std::string name[kValues];
-  // The values this layout reads: those of a sphere (4) or a spherocylinder (8), and the clump id.
-  int values(int k) const { return k < 4 || (k < 8 && sc) || (k == kClump && col[kClump] >= 0); }
+  // Whether this layout reads value k: those of a sphere (4) or a spherocylinder (8), and the clump id.
+  bool reads(int k) const { return k < 4 || (k < 8 && sc) || (k == kClump && col[kClump] >= 0); }
   double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
   long natoms = -1;
   std::uint64_t data_begin = 0;  // first byte of the rows
@@ -136,7 +136,7 @@ bool fast_row(std::string_view line, const Layout& L, double* v) {
   std::fill(std::begin(want), std::end(want), -1);
   std::size_t need = L.ncol;
   for (int k = 0; k < kValues; ++k) {
-    if (!L.values(k)) continue;
+    if (!L.reads(k)) continue;
     if (L.col[k] >= static_cast<int>(kFastFields)) return false;
     want[L.col[k]] = k;
     need = std::max(need, static_cast<std::size_t>(L.col[k]) + 1);
@@ -189,7 +189,7 @@ bool slow_row(std::string_view line, const Layout& L, long ln, std::vector<std::
       return false;
     }
   for (int k = 0; k < kValues; ++k) {
-    if (!L.values(k)) continue;
+    if (!L.reads(k)) continue;
     const auto x = number(f[static_cast<std::size_t>(L.col[k])]);
     if (!x) {
       err.add(ln, "column '" + L.name[k] + "': not a number: '" + std::string(f[static_cast<std::size_t>(L.col[k])]) + "'",
@@ -216,7 +216,7 @@ bool parse_row(std::string_view line, const Layout& L, long ln, std::vector<std:
     err.add(ln, w);
     return false;
   }
-  if (L.values(kClump)) {
+  if (L.reads(kClump)) {
     if (const std::string w = internal::validate_clump(v[kClump]); !w.empty()) {
       err.add(ln, "column '" + L.name[kClump] + "': " + w,
               column_of(line, L.sep, static_cast<std::size_t>(L.col[kClump])));
@@ -454,7 +454,7 @@ void parse_share(const std::filesystem::path& path, const Layout& L, const Input
     lines += static_cast<std::size_t>(p.scan.lines);
   }
   out.particles.resize(lines);
-  const bool clumps = L.values(kClump);
+  const bool clumps = L.reads(kClump);
   out.clumps.resize(clumps ? lines : 0);
   internal::parallel_chunks(static_cast<int>(pieces.size()), threads, [&](int k) {
     Piece& p = pieces[static_cast<std::size_t>(k)];
