@@ -176,11 +176,22 @@ PyTrace trace_generated(const nlohmann::json& scene_json, const std::string& sou
   return PyTrace{std::move(job)};
 }
 
+// unit= of read_step, section and intersect: a unit's name, or None for the file's own.
+std::optional<StepLengthUnit> unit_argument(const py::object& unit) {
+  if (unit.is_none()) return std::nullopt;
+  if (!py::isinstance<py::str>(unit)) throw InputError("unit", "must be a unit's name such as 'mm' or 'in', or None");
+  return named_length_unit(unit.cast<std::string>(), "unit");
+}
+
+py::dict unit_dict(const StepLengthUnit& u) {
+  return py::dict(py::arg("name") = u.name, py::arg("metres") = u.metres, py::arg("several") = u.several);
+}
+
 // The model's length unit and its faces as `ssimarch faces` lists them, each with its placed box
 // (None, and the reason in "error", where its surface cannot be read).
-py::dict read_step(const std::string& path) {
-  const StepModel model = StepModel::read(path);
-  const StepLengthUnit unit = step_length_unit(model.file());
+py::dict read_step(const std::string& path, const py::object& unit_name) {
+  const StepModel model = StepModel::read(path, {}, unit_argument(unit_name));
+  const StepLengthUnit& unit = model.length_unit();
   py::list faces;
   for (const StepFace& f : model.faces()) {
     py::dict d;
@@ -200,8 +211,8 @@ py::dict read_step(const std::string& path) {
     faces.append(d);
   }
   py::dict out;
-  out["unit"] =
-      py::dict(py::arg("name") = unit.name, py::arg("metres") = unit.metres, py::arg("several") = unit.several);
+  out["unit"] = unit_dict(unit);
+  out["converted_from"] = model.converted_to() ? py::object(unit_dict(model.file_length_unit())) : py::none();
   out["faces"] = faces;
   return out;
 }
@@ -221,7 +232,7 @@ SectionPlane plane_of(const py::handle& p, const std::string& where) {
 }
 
 PyTrace section(const std::string& model_path, const py::object& planes, const std::string& faces,
-                const py::kwargs& overrides) {
+                const py::object& unit, const py::kwargs& overrides) {
   std::vector<SectionPlane> list;
   const py::sequence seq = planes.cast<py::sequence>();
   const bool one = seq.size() == 6 && !py::isinstance<py::sequence>(seq[0]);
@@ -229,7 +240,7 @@ PyTrace section(const std::string& model_path, const py::object& planes, const s
   for (std::size_t k = 0; !one && k < seq.size(); ++k)
     list.push_back(plane_of(seq[k], "planes[" + std::to_string(k) + "]"));
   if (list.empty()) throw InputError("planes", "at least one plane X, Y, Z, NX, NY, NZ is required");
-  const StepModel model = StepModel::read(model_path);
+  const StepModel model = StepModel::read(model_path, {}, unit_argument(unit));
   const SectionScene s =
       step_section_scene(std::filesystem::absolute(model_path), model, step_face_list(faces, model, "faces", 1), list);
   warn_not_read(s.not_read, "section");
@@ -237,12 +248,13 @@ PyTrace section(const std::string& model_path, const py::object& planes, const s
 }
 
 PyTrace intersect(const std::string& a_path, const py::object& b_path, const std::string& a_faces,
-                  const std::string& b_faces, const py::kwargs& overrides) {
+                  const std::string& b_faces, const py::object& unit_name, const py::kwargs& overrides) {
   const std::string b = b_path.is_none() ? a_path : b_path.cast<std::string>();
   std::error_code unreadable;  // a missing file is reported by its reader below
   const bool same = b == a_path || std::filesystem::equivalent(a_path, b, unreadable);
-  const StepModel ma = StepModel::read(a_path);
-  const std::unique_ptr<StepModel> mb = same ? nullptr : std::make_unique<StepModel>(StepModel::read(b));
+  const std::optional<StepLengthUnit> unit = unit_argument(unit_name);
+  const StepModel ma = StepModel::read(a_path, {}, unit);
+  const std::unique_ptr<StepModel> mb = same ? nullptr : std::make_unique<StepModel>(StepModel::read(b, {}, unit));
   const StepModel& b_model = same ? ma : *mb;
   const StepFaceSet sa{std::filesystem::absolute(a_path), &ma, step_face_list(a_faces, ma, "a_faces", 1)};
   const StepFaceSet sb{std::filesystem::absolute(b), &b_model, step_face_list(b_faces, b_model, "b_faces", 1)};
@@ -252,20 +264,25 @@ PyTrace intersect(const std::string& a_path, const py::object& b_path, const std
 }
 
 void bind_step(py::module_& m) {
-  m.def("read_step", &read_step, py::arg("path"),
-        "The length unit ({'name', 'metres', 'several'}: as the file declares it; coordinates are kept in it) and "
+  m.def("read_step", &read_step, py::arg("path"), py::kw_only(), py::arg("unit") = py::none(),
+        "The length unit ({'name', 'metres', 'several'}: as the file declares it, coordinates kept in it; or the "
+        "unit named by unit= ('mm', 'cm', 'm', 'um', 'nm', 'km', 'in', 'ft'), every length converted to it, the "
+        "file's own then in 'converted_from') and "
         "the faces of a STEP model as `ssimarch faces` numbers them (list of dicts face, entity, line, "
         "surface_type, instance (the part's path in the assembly), box ((x0, y0, z0), (x1, y1, z1)) placed, or "
         "None with the reason in error). Raises InputError naming file:line for a malformed file (docs/cad.md).");
   m.def("section", &section, py::arg("model"), py::arg("planes"), py::kw_only(), py::arg("faces") = "all",
+        py::arg("unit") = py::none(),
         "The curves where planes cut a STEP model, as `ssimarch section` (docs/cad.md, \"Sections\"): planes is "
-        "one (X, Y, Z, NX, NY, NZ) or a list of them; faces 'all', '3,7' or 'part:NAME'. One intersection "
+        "one (X, Y, Z, NX, NY, NZ) or a list of them; faces 'all', '3,7' or 'part:NAME'; unit converts the "
+        "model's lengths (as read_step; the planes and the curves are then in it). One intersection "
         "faceI-planeK per face whose box a plane reaches, each face trimmed to its loops. Keyword options as "
         "for trace. Unreadable faces are left out with a RuntimeWarning. Returns a Trace.");
   m.def("intersect", &intersect, py::arg("a"), py::arg("b") = py::none(), py::kw_only(), py::arg("a_faces") = "all",
-        py::arg("b_faces") = "all",
+        py::arg("b_faces") = "all", py::arg("unit") = py::none(),
         "The curves where the faces of one STEP part or model meet another's, as `ssimarch intersect` (docs/cad.md, "
-        "\"Part against part\"): b None is a's file; face sets 'all', '3,7' or 'part:NAME'; pairs whose boxes are "
+        "\"Part against part\"): b None is a's file; face sets 'all', '3,7' or 'part:NAME'; unit reads both "
+        "models converted to one length unit (as read_step); pairs whose boxes are "
         "apart are not traced. One intersection faceI-faceJ (one model) or aI-bJ (two) per pair. Keyword options "
         "as for trace. Unreadable faces are left out with a RuntimeWarning. Returns a Trace.");
 }

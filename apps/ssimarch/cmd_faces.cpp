@@ -11,6 +11,7 @@
 
 #include "commands.hpp"
 #include "run_budget.hpp"
+#include "trace_flags.hpp"
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/step/reader.hpp"
 #include "ssimarch/step/units.hpp"
@@ -21,8 +22,13 @@ namespace {
 
 struct FacesArgs {
   std::string file;
+  std::string unit;
   bool json = false;
 };
+
+nlohmann::json unit_json(const StepLengthUnit& u) {
+  return {{"name", u.name}, {"metres", u.metres}, {"several", u.several}};
+}
 
 nlohmann::json face_json(const StepModel& model, const StepFace& f) {
   nlohmann::json j{{"face", f.index},          {"entity", f.entity}, {"line", f.line},
@@ -53,7 +59,7 @@ nlohmann::json face_json(const StepModel& model, const StepFace& f) {
 }
 
 int run_faces(const FacesArgs& a) {
-  const StepModel model = StepModel::read(a.file, input_limits());
+  const StepModel model = StepModel::read(a.file, input_limits(), unit_flag(a.unit));
   nlohmann::json list = nlohmann::json::array();
   for (const StepFace& f : model.faces()) list.push_back(face_json(model, f));
   // Issue 29: a file without faces listed an empty table with exit status 0.
@@ -65,18 +71,25 @@ int run_faces(const FacesArgs& a) {
   if (unread > 0)
     std::cerr << fmt::format("ssimarch: {} of {} face(s) of {} could not be read (see each face's error)\n", unread,
                              list.size(), a.file);
-  // The unit the coordinates are in: kept as the file has it (no conversion), said here.
-  const StepLengthUnit unit = step_length_unit(model.file());
-  if (unit.several)
+  // The unit the coordinates are in: the file's (kept as written) or the one --unit converted to.
+  const StepLengthUnit& unit = model.length_unit();
+  const StepLengthUnit& file_unit = model.file_length_unit();
+  if (file_unit.several && !model.converted_to())
     std::cerr << fmt::format("ssimarch: {} declares more than one length unit; the first, {}, is listed\n", a.file,
                              unit.name);
   if (a.json) {
-    nlohmann::json u{{"name", unit.name}, {"metres", unit.metres}, {"several", unit.several}};
-    std::cout << nlohmann::json{{"file", a.file}, {"length_unit", u}, {"faces", list}}.dump(2) << "\n";
+    nlohmann::json out{{"file", a.file}, {"length_unit", unit_json(unit)}};
+    if (model.converted_to()) out["converted_from"] = unit_json(file_unit);
+    out["faces"] = list;
+    std::cout << out.dump(2) << "\n";
     return status;
   }
-  if (unit.metres > 0)
-    std::cout << fmt::format("length unit: {} ({:g} m); coordinates are kept in it\n", unit.name, unit.metres);
+  if (model.converted_to())
+    std::cout << fmt::format("length unit: {} ({:g} m), converted from the file's {} (x {:.17g})\n", unit.name,
+                             unit.metres, file_unit.name, model.length_scale());
+  else if (unit.metres > 0)
+    std::cout << fmt::format("length unit: {} ({:g} m); coordinates are kept in it (--unit converts)\n", unit.name,
+                             unit.metres);
   else
     std::cout << "length unit: none declared; coordinates are kept as written\n";
   std::cout << fmt::format("{:>5} {:>9} {:>7}  {:<28} {}\n", "face", "entity", "line", "STEP surface", "ssimarch surface, domain");
@@ -110,6 +123,7 @@ void add_faces_command(CLI::App& app, Commands& commands) {
       "\"entity\" is the face in its part's own coordinates.");
   cmd->add_option("file", args->file, "STEP file (ISO 10303-21)")->required();
   cmd->add_flag("--json", args->json, "print JSON instead of a table");
+  add_unit_option(cmd, &args->unit);
   add_budget_options(cmd);
   commands.add(cmd, [args] { return run_faces(*args); });
 }

@@ -1,6 +1,7 @@
 // ssimarch intersect A.step [B.step]: the curves where the faces of one part (or model, or face
 // set) meet those of another, each face trimmed to its loops (io/step_intersect.hpp; docs/cad.md,
 // "Part against part").
+#include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -20,6 +21,7 @@ namespace {
 struct IntersectArgs {
   std::string a, b;
   std::string a_faces = "all", b_faces = "all";
+  std::string unit;
   GeneratedSceneFlags out;
 };
 
@@ -40,12 +42,25 @@ void print_intersect_summary(const std::vector<IntersectionRun>& runs, const Int
   std::cerr << "\n" << s.pairs << " face pair(s) traced, " << s.culled << " left out: their boxes are apart\n";
 }
 
+// Two models whose coordinates mean different lengths are intersected number for number
+// unless converted: said, not refused (a file may declare a unit it was not written in).
+void warn_if_units_differ(const StepModel& a, const StepModel& b) {
+  const StepLengthUnit &ua = a.length_unit(), &ub = b.length_unit();
+  if (ua.metres > 0 && ub.metres > 0 && std::fabs(ua.metres - ub.metres) <= 1e-12 * ua.metres) return;
+  if (ua.metres == 0 && ub.metres == 0) return;
+  std::cerr << "intersect: warning: " << a.file().source << " is in " << ua.name << " and " << b.file().source << " in "
+            << ub.name << "; their numbers are compared as they are (--unit mm reads both in millimetres)\n";
+}
+
 int run_intersect(const IntersectArgs& args) {
   std::error_code unreadable;  // a missing file is reported by its reader below
   const bool same = args.b.empty() || std::filesystem::equivalent(args.a, args.b, unreadable);
-  const StepModel ma = StepModel::read(args.a, input_limits());
+  // Two files in different units meet only when both are read in one (--unit).
+  const std::optional<StepLengthUnit> unit = unit_flag(args.unit);
+  const StepModel ma = StepModel::read(args.a, input_limits(), unit);
   const std::unique_ptr<StepModel> mb =
-      same ? nullptr : std::make_unique<StepModel>(StepModel::read(args.b, input_limits()));
+      same ? nullptr : std::make_unique<StepModel>(StepModel::read(args.b, input_limits(), unit));
+  if (mb) warn_if_units_differ(ma, *mb);
   const StepModel& b_model = same ? ma : *mb;
   const StepFaceSet a{std::filesystem::absolute(args.a), &ma, step_face_list(args.a_faces, ma, "--a-faces", 1)};
   const StepFaceSet b{std::filesystem::absolute(same ? args.a : args.b), &b_model,
@@ -80,6 +95,7 @@ void add_intersect_command(CLI::App& app, Commands& commands) {
                   "Faces of A: numbers as `ssimarch faces` lists them (I[,J,...]), part:NAME (the faces placed as a "
                   "part whose instance path contains NAME) or all (default)");
   cmd->add_option("--b-faces", args->b_faces, "Faces of B, as --a-faces (default: all)");
+  add_unit_option(cmd, &args->unit);
   add_generated_scene_flags(cmd, &args->out, "face pairs");
   commands.add(cmd, [args] { return run_intersect(*args); });
 }

@@ -20,6 +20,7 @@ struct SectionArgs {
   std::string model;
   std::vector<std::string> planes;
   std::string faces = "all";
+  std::string unit;
   GeneratedSceneFlags out;
 };
 
@@ -52,7 +53,7 @@ int run_section(const SectionArgs& a) {
   if (a.planes.empty()) throw CliError("section: at least one --plane X,Y,Z,NX,NY,NZ is required (--help)");
   std::vector<SectionPlane> planes;
   for (const std::string& p : a.planes) planes.push_back(parse_section_plane(p, "--plane"));
-  const StepModel model = StepModel::read(a.model, input_limits());
+  const StepModel model = StepModel::read(a.model, input_limits(), unit_flag(a.unit));
   const std::vector<int> faces = step_face_list(a.faces, model, "--faces", 1);
   const SectionScene s = step_section_scene(std::filesystem::absolute(a.model), model, faces, planes);
   for (const std::string& w : s.not_read) std::cerr << "section: not read, left out: " << w << "\n";
@@ -77,11 +78,14 @@ void add_section_command(CLI::App& app, Commands& commands) {
       "incomplete (e.g. a face lying in the plane: coincident, reported without curves); 2 invalid input; 130 "
       "interrupted (Ctrl-C), nothing written.");
   cmd->add_option("model", args->model, "STEP model (.step, .stp; AP203/AP214/AP242)")->required();
-  cmd->add_option("--plane", args->planes,
-                  "A cutting plane X,Y,Z,NX,NY,NZ: a point and the normal, in the model's length unit (repeatable)")
+  cmd->add_option(
+         "--plane", args->planes,
+         "A cutting plane X,Y,Z,NX,NY,NZ: a point and the normal, in the model's length unit (--unit's when given; "
+         "repeatable)")
       ->required();
   cmd->add_option("--faces", args->faces,
                   "The faces to cut: numbers as `ssimarch faces MODEL.step` lists them (I[,J,...]) or all (default)");
+  add_unit_option(cmd, &args->unit);
   add_generated_scene_flags(cmd, &args->out, "faces");
   commands.add(cmd, [args] { return run_section(*args); });
 }

@@ -23,6 +23,7 @@ namespace {
 struct TraceArgs {
   std::string scene;
   std::string faces;  // with a STEP model instead of a scene
+  std::string unit;   // and its length unit
   std::string output = "-";
   std::string format;
   std::vector<std::string> only;
@@ -43,14 +44,18 @@ bool is_step_path(const std::string& path) {
 Scene load_trace_input(const TraceArgs& a) {
   if (!is_step_path(a.scene)) {
     if (!a.faces.empty()) throw CliError("trace: --faces selects faces of a STEP model (MODEL.step or .stp), not of a scene");
+    if (!a.unit.empty())
+      throw CliError(
+          "trace: --unit converts a STEP model (MODEL.step or .stp); in a scene, give a STEP surface "
+          "its \"unit\" key");
     return load_scene(a.scene, input_limits());
   }
   if (a.faces.empty())
     throw CliError("trace: a STEP model needs --faces I,J[,...] or --faces all (the numbers of `ssimarch faces " + a.scene + "`)");
-  const StepModel model = StepModel::read(a.scene, input_limits());
+  const StepModel model = StepModel::read(a.scene, input_limits(), unit_flag(a.unit));
   const std::vector<int> faces = step_face_list(a.faces, model, "--faces");
   const std::filesystem::path step = std::filesystem::absolute(a.scene);
-  return parse_scene(step_faces_scene_json(step, faces).dump(), a.scene, {}, input_limits());
+  return parse_scene(step_faces_scene_json(step, model, faces).dump(), a.scene, {}, input_limits());
 }
 
 int run_trace(const TraceArgs& a) {
@@ -95,6 +100,7 @@ void add_trace_command(CLI::App& app, Commands& commands) {
                   "With a STEP model: the faces to intersect, as `ssimarch faces MODEL.step` numbers them (I,J[,...]: "
                   "every pair of them, one intersection each named faceI-faceJ; all: every pair of the model's faces). "
                   "Each face is trimmed to its loops (docs/cad.md)");
+  add_unit_option(cmd, &args->unit);
   cmd->add_option("-o,--output", args->output, "Output file; '-' for standard output (default)");
   cmd->add_option("--format", args->format, "json | csv | obj | svg | step | vtp | vtp-ascii | html (default: from the output file's extension, .vtp/.vtm: vtp, .html: html; else json)");
   cmd->add_option("--intersection", args->only, "Trace only the intersection(s) with this name (repeatable)");

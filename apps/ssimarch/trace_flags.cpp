@@ -33,6 +33,18 @@ std::vector<OptionOverride> trace_overrides(const TraceOptionFlags& flags) {
   return out;
 }
 
+void add_unit_option(CLI::App* cmd, std::string* unit) {
+  cmd->add_option("--unit", *unit,
+                  "Convert the STEP model's lengths to this unit: mm, cm, m, um, nm, km, in, ft (default: keep the "
+                  "file's unit; planes and output are in the chosen unit)")
+      ->type_name("UNIT");
+}
+
+std::optional<StepLengthUnit> unit_flag(const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  return named_length_unit(text, "--unit");
+}
+
 void add_format_overrides(OutputFormat format, TraceRequest* request) {
   auto set = [&](const char* key) {
     const TraceOptionSpec* spec = find_trace_option(key);

@@ -5,11 +5,13 @@
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "ssimarch/pipeline/trace_job.hpp"
+#include "ssimarch/step/units.hpp"
 #include "trace_output.hpp"
 
 namespace ssimarch::cli {
@@ -29,6 +31,13 @@ std::vector<OptionOverride> trace_overrides(const TraceOptionFlags& flags);
 /// What the output format needs unless a flag sets it: STEP holds the certified B-splines
 /// (bspline on), VTP carries kappa and tau (geometry mixed).
 void add_format_overrides(OutputFormat format, TraceRequest* request);
+
+/// Adds `--unit NAME` (faces, trace, section, intersect): read STEP models converted to a length
+/// unit (docs/cad.md, "Length unit").
+void add_unit_option(CLI::App* cmd, std::string* unit);
+
+/// The unit `--unit` named; empty when it was not given. Throws InputError naming --unit.
+std::optional<StepLengthUnit> unit_flag(const std::string& text);
 
 /// What `section` and `intersect` share besides their inputs: the output, its format, the trace
 /// options, threads and quiet.

@@ -136,12 +136,13 @@ def trace(
     **kwargs: Union[bool, float, int, str],
 ) -> Trace: ...
 def trace_options() -> list[str]: ...
-def read_step(path: str) -> dict[str, Any]: ...
+def read_step(path: str, *, unit: Optional[str] = ...) -> dict[str, Any]: ...
 def section(
     model: str,
     planes: Sequence[float] | Sequence[Sequence[float]],
     *,
     faces: str = ...,
+    unit: Optional[str] = ...,
     **kwargs: Union[bool, float, int, str],
 ) -> Trace: ...
 def intersect(
@@ -150,6 +151,7 @@ def intersect(
     *,
     a_faces: str = ...,
     b_faces: str = ...,
+    unit: Optional[str] = ...,
     **kwargs: Union[bool, float, int, str],
 ) -> Trace: ...
 def curve_geometry(

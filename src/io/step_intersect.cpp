@@ -6,6 +6,7 @@
 #include <set>
 
 #include "ssimarch/core/error.hpp"
+#include "ssimarch/io/step_surface_json.hpp"
 #include "ssimarch/surface/box_pairs.hpp"
 
 namespace ssimarch {
@@ -61,8 +62,8 @@ IntersectScene step_intersect_scene(const StepFaceSet& a, const StepFaceSet& b, 
       if (!seen.emplace(p, q).second) continue;
     }
     const std::string sp = name(0, p), sq = name(same_model ? 0 : 1, q);
-    surfaces[sp] = {{"step", a.step.string()}, {"face", p}};
-    surfaces[sq] = {{"step", (same_model ? a.step : b.step).string()}, {"face", q}};
+    surfaces[sp] = step_face_json(a.step, p, *a.model);
+    surfaces[sq] = same_model ? step_face_json(a.step, q, *a.model) : step_face_json(b.step, q, *b.model);
     pairs.push_back({{"name", sp + "-" + sq}, {"surfaces", {sp, sq}}});
   }
   out.pairs = static_cast<int>(pairs.size());

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "ssimarch/core/error.hpp"
+#include "ssimarch/io/step_surface_json.hpp"
 
 namespace ssimarch {
 
@@ -85,7 +86,7 @@ SectionScene step_section_scene(const std::filesystem::path& step, const StepMod
       used = true;
       ++out.pairs;
     }
-    if (used) surfaces[face] = {{"step", step.string()}, {"face", i}};
+    if (used) surfaces[face] = step_face_json(step, i, model);
   }
   out.scene = {{"surfaces", surfaces}, {"intersections", pairs}};
   return out;

@@ -9,9 +9,10 @@
 
 namespace ssimarch {
 
-const StepModel& StepFileCache::get(const std::filesystem::path& path, const InputLimits& limits) {
-  auto& slot = models_[path];
-  if (!slot) slot = std::make_shared<const StepModel>(StepModel::read(path, limits));
+const StepModel& StepFileCache::get(const std::filesystem::path& path, const InputLimits& limits,
+                                    const std::optional<StepLengthUnit>& unit) {
+  auto& slot = models_[{path, unit ? unit->name : std::string()}];
+  if (!slot) slot = std::make_shared<const StepModel>(StepModel::read(path, limits, unit));
   return *slot;
 }
 
@@ -31,13 +32,16 @@ std::int64_t positive_integer(const nlohmann::json& j, const std::string& where)
 Surface step_surface_from_json(const nlohmann::json& spec, const std::filesystem::path& base_dir, StepFileCache* cache,
                                const InputLimits& limits, const std::string& where,
                                std::shared_ptr<const FaceRegion>* region, std::optional<SplineSurfaceData>* spline) {
-  JsonObject f(spec, where, {"step"}, {"face", "entity"});
+  JsonObject f(spec, where, {"step"}, {"face", "entity", "unit"});
   if (f.has("face") == f.has("entity"))
     throw InputError(where, "a STEP surface names exactly one of \"face\" (its number in `ssimarch faces FILE`) and "
                             "\"entity\" (an instance id #n)");
   const std::filesystem::path file = json_string(f.at("step"), f.path("step"), "a STEP file path");
   const std::filesystem::path resolved = file.is_absolute() || base_dir.empty() ? file : base_dir / file;
-  const StepModel& model = cache->get(resolved, limits);
+  std::optional<StepLengthUnit> unit;
+  if (f.has("unit"))
+    unit = named_length_unit(json_string(f.at("unit"), f.path("unit"), "a length unit"), f.path("unit"));
+  const StepModel& model = cache->get(resolved, limits, unit);
   std::int64_t id = 0;
   PartPlacement placement;  // a face of a placed part sits where the assembly puts it
   if (f.has("face")) {
@@ -92,10 +96,17 @@ std::vector<int> step_face_list(const std::string& text, const StepModel& model,
   return out;
 }
 
-nlohmann::json step_faces_scene_json(const std::filesystem::path& step, const std::vector<int>& faces) {
+nlohmann::json step_face_json(const std::filesystem::path& step, int face, const StepModel& model) {
+  nlohmann::json j{{"step", step.string()}, {"face", face}};
+  if (model.converted_to()) j["unit"] = model.converted_to()->name;
+  return j;
+}
+
+nlohmann::json step_faces_scene_json(const std::filesystem::path& step, const StepModel& model,
+                                     const std::vector<int>& faces) {
   nlohmann::json surfaces = nlohmann::json::object(), pairs = nlohmann::json::array();
   auto name = [](int k) { return "face" + std::to_string(k); };
-  for (int k : faces) surfaces[name(k)] = {{"step", step.string()}, {"face", k}};
+  for (int k : faces) surfaces[name(k)] = step_face_json(step, k, model);
   for (std::size_t i = 0; i < faces.size(); ++i)
     for (std::size_t j = i + 1; j < faces.size(); ++j)
       pairs.push_back({{"name", name(faces[i]) + "-" + name(faces[j])}, {"surfaces", {name(faces[i]), name(faces[j])}}});

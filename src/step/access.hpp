@@ -19,11 +19,16 @@
 namespace ssimarch::internal {
 
 // Every 3D point and direction read through it is moved by the placement of the part occurrence
-// being read (identity by default); 2D points and directions (parameter space) are not.
+// being read (identity by default); 2D points and directions (parameter space) are not. With a
+// unit conversion (`scale`: target units per file unit, docs/cad.md "Length unit") every length
+// is scaled first: 3D points, vector magnitudes and what the reader reads with length(). The
+// placements' translations are read through the same access, so p -> R (s p) + s t = s (R p + t).
 class StepAccess {
  public:
-  explicit StepAccess(const StepFile& file, const PartPlacement& placement = {}) : file_(file), placement_(placement) {}
+  explicit StepAccess(const StepFile& file, const PartPlacement& placement = {}, double scale = 1.0)
+      : file_(file), placement_(placement), scale_(scale) {}
   const PartPlacement& placement() const { return placement_; }
+  double scale() const { return scale_; }
   const StepFile& file() const { return file_; }
 
   [[noreturn]] void fail(const StepInstance& inst, const std::string& message) const {
@@ -46,6 +51,10 @@ class StepAccess {
     if (x->kind == StepValue::Kind::kTyped && x->items.size() == 1) x = &x->items[0];  // LENGTH_MEASURE(2.)
     if (!x->is_number()) fail(inst, cat(what, " must be a number"));
     return x->number;
+  }
+  /// A length (a radius, an offset, a trimming distance): number() in the target unit.
+  double length(const StepInstance& inst, const StepValue& v, const char* what) const {
+    return number(inst, v, what) * scale_;
   }
   int integer(const StepInstance& inst, const StepValue& v, const char* what, int lo, int hi) const {
     const double x = number(inst, v, what);
@@ -84,14 +93,14 @@ class StepAccess {
   Vec3 point(const StepInstance& from, const StepValue& v, const char* what) const {
     bool three_d = false;
     const Vec3 p = coordinates(ref(from, v, what), "CARTESIAN_POINT", &three_d);
-    return three_d ? placement_.apply(p) : p;
+    return three_d ? placement_.apply(p * scale_) : p;
   }
   /// A VECTOR instance: its orientation (a DIRECTION, placed) made unit times its magnitude; a
   /// zero vector fails naming it with `what` ("a line's direction").
   Vec3 vector(const StepInstance& vec, const char* what) const {
     const StepRecord& vr = record(vec, "VECTOR");
     const Vec3 d = direction(ref(vec, param(vec, vr, 1, "orientation"), "orientation")).normalized() *
-                   number(vec, param(vec, vr, 2, "magnitude"), "magnitude");
+                   length(vec, param(vec, vr, 2, "magnitude"), "magnitude");
     if (!(d.norm() > 0)) fail(vec, cat(what, " must not be zero"));
     return d;
   }
@@ -105,6 +114,7 @@ class StepAccess {
  private:
   const StepFile& file_;
   PartPlacement placement_;
+  double scale_ = 1.0;
 };
 
 /// An AXIS2_PLACEMENT_3D: location, axis (default z) and reference direction (default: none,

@@ -59,8 +59,8 @@ std::optional<Conic2> conic(const StepAccess& a, const StepInstance& curve) {
   const StepRecord& r = curve.records.front();
   if (r.type != "CIRCLE" && r.type != "ELLIPSE") return std::nullopt;
   const StepPlacement p = step_placement(a, a.ref(curve, a.param(curve, r, 1, "position"), "position"));
-  const double ra = a.number(curve, a.param(curve, r, 2, "radius"), "radius");
-  const double rb = r.type == "CIRCLE" ? ra : a.number(curve, a.param(curve, r, 3, "semi_axis_2"), "semi_axis_2");
+  const double ra = a.length(curve, a.param(curve, r, 2, "radius"), "radius");
+  const double rb = r.type == "CIRCLE" ? ra : a.length(curve, a.param(curve, r, 3, "semi_axis_2"), "semi_axis_2");
   if (!(ra > 0 && rb > 0)) a.fail(curve, "radii must be > 0");
   return Conic2{Frame::from_axis(p.origin, p.axis, p.reference, a.file().where(curve)), ra, rb};
 }

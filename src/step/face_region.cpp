@@ -156,8 +156,8 @@ EdgePiece edge_piece(const StepAccess& a, const StepInstance& edge, double direc
   }
   if (curve.records.size() == 1 && (cr.type == "CIRCLE" || cr.type == "ELLIPSE")) {
     const StepPlacement pl = step_placement(a, a.ref(curve, a.param(curve, cr, 1, "position"), "position"));
-    const double ra = a.number(curve, a.param(curve, cr, 2, "radius"), "radius");
-    const double rb = cr.type == "CIRCLE" ? ra : a.number(curve, a.param(curve, cr, 3, "semi_axis_2"), "semi_axis_2");
+    const double ra = a.length(curve, a.param(curve, cr, 2, "radius"), "radius");
+    const double rb = cr.type == "CIRCLE" ? ra : a.length(curve, a.param(curve, cr, 3, "semi_axis_2"), "semi_axis_2");
     if (!(ra > 0 && rb > 0)) a.fail(curve, "radii must be > 0");
     const Frame f = Frame::from_axis(pl.origin, pl.axis, pl.reference, a.file().where(curve));
     e.at = [f, ra, rb](double t) { return f.to_world(ra * std::cos(t), rb * std::sin(t), 0.0); };

@@ -41,11 +41,13 @@ struct Trim {
 };
 
 // The interval of the coordinate `axis` (0, 1, 2 of a frame's local coordinates) over the
-// boundary points, or the rectangle's side; fails for neither.
+// boundary points, or the rectangle's side (a length: a plane's u and v, a cylinder's or cone's v,
+// in the file's unit, hence scaled); fails for neither.
 Interval trimmed(const StepAccess& a, const StepInstance& s, const Trim& trim, const Frame& f, int axis, int side) {
   if (trim.rectangle) {
     const auto& r = *trim.rectangle;
-    return {std::min(r[2 * side], r[2 * side + 1]), std::max(r[2 * side], r[2 * side + 1])};
+    const double lo = std::min(r[2 * side], r[2 * side + 1]), hi = std::max(r[2 * side], r[2 * side + 1]);
+    return {lo * a.scale(), hi * a.scale()};
   }
   if (trim.boundary.empty())
     a.fail(s, "is unbounded: select a face whose boundary bounds it, or wrap it in a RECTANGULAR_TRIMMED_SURFACE");
@@ -71,7 +73,7 @@ Surface elementary(const StepAccess& a, const StepInstance& s, const Trim& trim,
   const StepRecord& r = s.records.front();
   const StepPlacement p = internal::step_placement(a, a.ref(s, a.param(s, r, 1, "position"), "position"));
   const Frame f = Frame::from_axis(p.origin, p.axis, p.reference, a.file().where(s));
-  auto length = [&](std::size_t k, const char* what) { return a.number(s, a.param(s, r, k, what), what); };
+  auto length = [&](std::size_t k, const char* what) { return a.length(s, a.param(s, r, k, what), what); };
   if (r.type == "PLANE") {
     const ParamDomain d{trimmed(a, s, trim, f, 0, 0), trimmed(a, s, trim, f, 1, 1)};
     return checked(a, s, [&] { return Plane(p.origin, p.axis, d, p.reference); });
@@ -83,7 +85,8 @@ Surface elementary(const StepAccess& a, const StepInstance& s, const Trim& trim,
   }
   if (r.type == "CONICAL_SURFACE") {
     // STEP: radius R at v = 0, v along the axis from the placement; ours: v from the apex.
-    const double radius = length(2, "radius"), alpha = length(3, "semi_angle") * angle_unit;
+    const double radius = length(2, "radius"),
+                 alpha = a.number(s, a.param(s, r, 3, "semi_angle"), "semi_angle") * angle_unit;
     if (!(alpha > 0 && alpha < std::numbers::pi / 2)) a.fail(s, "semi_angle must be in (0, 90) degrees");
     const double shift = radius / std::tan(alpha);
     const Vec3 apex = f.to_world(0.0, 0.0, -shift);
@@ -184,7 +187,7 @@ Surface any_surface(const StepAccess& a, const StepInstance& s, Trim trim, doubl
     const StepInstance& basis = a.ref(s, a.param(s, r, 1, "basis_surface"), "basis_surface");
     if (&basis == &s) a.fail(s, "offsets itself");
     if (basis.records.front().type == "OFFSET_SURFACE") a.fail(s, "offsets an offset surface");
-    const double d = a.number(s, a.param(s, r, 2, "distance"), "distance");
+    const double d = a.length(s, a.param(s, r, 2, "distance"), "distance");
     return internal::step_offset_surface(any_surface(a, basis, trim, angle_unit), d, a, s);
   }
   if (s.records.size() == 1 && t == "RECTANGULAR_TRIMMED_SURFACE") {
@@ -220,8 +223,14 @@ double plane_angle_unit(const StepAccess& a) {
 
 }  // namespace
 
-StepModel::StepModel(StepFile file) : file_(std::move(file)) {
-  const StepAccess a(file_);
+StepModel::StepModel(StepFile file, const std::optional<StepLengthUnit>& unit) : file_(std::move(file)) {
+  file_unit_ = unit_ = step_length_unit(file_);
+  if (unit) {
+    scale_ = length_conversion(file_unit_, *unit, file_.source);
+    unit_ = *unit;
+    converted_to_ = unit;
+  }
+  const StepAccess a(file_, {}, scale_);
   angle_unit_ = plane_angle_unit(a);
   for (const internal::PlacedFace& placed : internal::placed_faces(a)) {
     const StepInstance& f = *file_.find(placed.face);
@@ -232,8 +241,9 @@ StepModel::StepModel(StepFile file) : file_(std::move(file)) {
   }
 }
 
-StepModel StepModel::read(const std::filesystem::path& path, const InputLimits& limits) {
-  return StepModel(read_step_file(path, limits));
+StepModel StepModel::read(const std::filesystem::path& path, const InputLimits& limits,
+                          const std::optional<StepLengthUnit>& unit) {
+  return StepModel(read_step_file(path, limits), unit);
 }
 
 const StepFace& StepModel::face(int index, const std::string& where) const {
@@ -246,7 +256,7 @@ const StepFace& StepModel::face(int index, const std::string& where) const {
 Surface StepModel::surface(std::int64_t entity, const PartPlacement& placement) const {
   const StepInstance* inst = file_.find(entity);
   if (!inst) throw InputError(file_.source, cat("has no instance #", entity));
-  const StepAccess a(file_, placement);
+  const StepAccess a(file_, placement, scale_);
   if (!is_face(*inst)) return any_surface(a, *inst, {}, angle_unit_);
   const StepInstance& s = a.ref(*inst, inst->records.front().params.at(2), "face_geometry");
   return any_surface(a, s, Trim{internal::step_boundary_points(a, *inst), std::nullopt}, angle_unit_);
@@ -255,7 +265,7 @@ Surface StepModel::surface(std::int64_t entity, const PartPlacement& placement) 
 std::optional<SplineSurfaceData> StepModel::spline_data(std::int64_t entity, const PartPlacement& placement) const {
   const StepInstance* inst = file_.find(entity);
   if (!inst) throw InputError(file_.source, cat("has no instance #", entity));
-  const StepAccess a(file_, placement);
+  const StepAccess a(file_, placement, scale_);
   const StepInstance* s = is_face(*inst) ? &a.ref(*inst, inst->records.front().params.at(2), "face_geometry") : inst;
   std::optional<Interval> v_range;
   if (s->records.size() == 1 && s->records.front().type == "RECTANGULAR_TRIMMED_SURFACE") {
@@ -273,7 +283,7 @@ std::shared_ptr<const FaceRegion> StepModel::face_region(std::int64_t entity, co
   const StepInstance* inst = file_.find(entity);
   if (!inst) throw InputError(file_.source, cat("has no instance #", entity));
   if (!is_face(*inst)) return nullptr;
-  return internal::step_face_region(StepAccess(file_, placement), *inst,
+  return internal::step_face_region(StepAccess(file_, placement, scale_), *inst,
                                     cat("STEP face #", entity, " of ", file_.source));
 }
 
@@ -292,7 +302,9 @@ BSplineCurve StepModel::bspline_curve(std::int64_t entity) const {
         a.numbers(pt, a.param(pt, a.record(pt, "CARTESIAN_POINT"), 1, "coordinates"), "coordinates");
     if (!b.control_points.empty() && x.size() != static_cast<std::size_t>(b.control_points[0].size()))
       a.fail(pt, "has another dimension than the curve's first control point");
-    b.control_points.push_back(Eigen::Map<const VecX>(x.data(), static_cast<Eigen::Index>(x.size())));
+    // A 3D curve is in the model's unit; a 2D one lies in a surface's parameter space.
+    const double scale = x.size() == 3 ? scale_ : 1.0;
+    b.control_points.push_back(Eigen::Map<const VecX>(x.data(), static_cast<Eigen::Index>(x.size())) * scale);
   }
   if (b.control_points.size() < static_cast<std::size_t>(b.degree) + 1)
     a.fail(*c, "has fewer than degree + 1 control points");

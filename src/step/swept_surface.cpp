@@ -93,8 +93,8 @@ NurbsCurve3 swept_curve(const StepAccess& a, const StepInstance& c, LineRange li
   if (c.record("B_SPLINE_CURVE_WITH_KNOTS")) return step_bspline_curve(a, c);
   if (c.records.size() == 1 && (r.type == "CIRCLE" || r.type == "ELLIPSE")) {
     const StepPlacement p = step_placement(a, a.ref(c, a.param(c, r, 1, "position"), "position"));
-    const double ra = a.number(c, a.param(c, r, 2, "radius"), "radius");
-    const double rb = r.type == "CIRCLE" ? ra : a.number(c, a.param(c, r, 3, "semi_axis_2"), "semi_axis_2");
+    const double ra = a.length(c, a.param(c, r, 2, "radius"), "radius");
+    const double rb = r.type == "CIRCLE" ? ra : a.length(c, a.param(c, r, 3, "semi_axis_2"), "semi_axis_2");
     if (!(ra > 0 && rb > 0)) a.fail(c, "radii must be > 0");
     return full_conic(Frame::from_axis(p.origin, p.axis, p.reference, a.file().where(c)), ra, rb);
   }

@@ -137,4 +137,41 @@ StepLengthUnit step_length_unit(const StepFile& file) {
   return first;
 }
 
+namespace {
+
+struct NamedUnit {
+  const char* names[4];  // the symbol, then spellings ("" for none)
+  const char* reported;
+  double metres;
+};
+constexpr std::array<NamedUnit, 8> kNamedUnits{{{{"nm", "nanometre", "nanometer", ""}, "nanometre", 1e-9},
+                                                {{"um", "micrometre", "micrometer", "micron"}, "micrometre", 1e-6},
+                                                {{"mm", "millimetre", "millimeter", ""}, "millimetre", 1e-3},
+                                                {{"cm", "centimetre", "centimeter", ""}, "centimetre", 1e-2},
+                                                {{"m", "metre", "meter", ""}, "metre", 1.0},
+                                                {{"km", "kilometre", "kilometer", ""}, "kilometre", 1e3},
+                                                {{"in", "inch", "inches", ""}, "inch", 0.0254},
+                                                {{"ft", "foot", "feet", ""}, "foot", 0.3048}}};
+
+}  // namespace
+
+StepLengthUnit named_length_unit(const std::string& text, const std::string& where) {
+  const std::string key = lower(text);
+  for (const NamedUnit& u : kNamedUnits)
+    for (const char* name : u.names)
+      if (*name && key == name) return {u.reported, u.metres, false};
+  throw InputError(where, cat("unknown length unit \"", text, "\": expected one of nm, um, mm, cm, m, km, in, ft ",
+                              "(or their names: millimetre, metre, inch, foot, ...)"));
+}
+
+double length_conversion(const StepLengthUnit& from, const StepLengthUnit& to, const std::string& source) {
+  if (!(from.metres > 0))
+    throw InputError(source, cat("declares no length unit, so its lengths cannot be converted to ", to.name,
+                                 " (read it without a unit to keep its numbers as they are)"));
+  if (from.several)
+    throw InputError(source, cat("declares several different length units for its geometry (the first is ", from.name,
+                                 "), so one scale cannot convert it to ", to.name));
+  return from.metres / to.metres;
+}
+
 }  // namespace ssimarch

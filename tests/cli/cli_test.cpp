@@ -562,3 +562,55 @@ TEST(Cli, SectionOfAStepModelByPlanes) {
   EXPECT_EQ(run("section " + model + " --plane 0,0,0,1,0,0 --faces 3 -q").status, 2);
   EXPECT_THAT(run("section --help").out, HasSubstr("--plane"));
 }
+
+// Issue 28 item 1: --unit reads a model converted to another length unit; planes and curves are
+// in it. The test models declare no unit, so these copies declare the millimetre.
+TEST(Cli, TheUnitOptionConvertsAStepModel) {
+  auto in_mm = [](const std::string& name) {
+    std::ifstream in(std::string(SSIMARCH_SOURCE_DIR) + "/tests/step/data/" + name);
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string t = text.str();
+    t.insert(t.find("ENDSEC;", t.find("DATA;")), "#999999=(LENGTH_UNIT()NAMED_UNIT(*)SI_UNIT(.MILLI.,.METRE.));\n");
+    return write_file("mm_" + name, t);
+  };
+  auto total = [](const std::string& out) {
+    double sum = 0;
+    const nlohmann::json j = nlohmann::json::parse(out);
+    for (const auto& i : j["intersections"])
+      for (const auto& c : i["curves"]) sum += c["length"].get<double>();
+    return sum;
+  };
+  const std::string plate = in_mm("plate_with_hole.step"), rods = in_mm("rod_assembly.step");
+  // The plane x = 0 cuts the plate with a hole in 4 + pi mm (SectionOfAStepModelByPlanes).
+  CliRun metres = run("section " + plate + " --unit m --plane 0,0,0,1,0,0 -q");
+  ASSERT_EQ(metres.status, 0) << metres.err;
+  EXPECT_NEAR(total(metres.out), (4 + std::numbers::pi) * 1e-3, 1e-12);
+  // 2.9 mm is 0.29 cm: the same cut as --plane 2.9,0,0,1,0,0 in the file's unit (6 mm).
+  CliRun cm = run("section " + plate + " --unit cm --plane 0.29,0,0,1,0,0 -q");
+  ASSERT_EQ(cm.status, 0) << cm.err;
+  EXPECT_NEAR(total(cm.out), 0.6, 1e-10);
+  CliRun parts = run("intersect " + rods + " --unit in -q");
+  ASSERT_EQ(parts.status, 0) << parts.err;
+  EXPECT_NEAR(total(parts.out), (4 * std::numbers::pi + 20) / 25.4, 1e-9);
+  CliRun traced = run("trace " + rods + " --faces 1,4 --unit um -q");
+  ASSERT_EQ(traced.status, 0) << traced.err;
+  EXPECT_NEAR(total(traced.out), 2 * std::numbers::pi * 1000, 1e-6);
+  CliRun faces = run("faces " + plate + " --unit in --json");
+  ASSERT_EQ(faces.status, 0) << faces.err;
+  const auto j = nlohmann::json::parse(faces.out);
+  EXPECT_EQ(j["length_unit"]["name"], "inch");
+  EXPECT_EQ(j["converted_from"]["name"], "millimetre");
+  EXPECT_THAT(run("faces " + plate + " --unit in").out,
+              HasSubstr("length unit: inch (0.0254 m), converted from the file's millimetre"));
+  // What cannot be converted: an unknown unit, a file without a unit, a scene.
+  CliRun unknown = run("section " + plate + " --unit furlong --plane 0,0,0,1,0,0 -q");
+  EXPECT_EQ(unknown.status, 2);
+  EXPECT_THAT(unknown.err, HasSubstr("--unit: unknown length unit \"furlong\""));
+  CliRun none = run("faces " + std::string(SSIMARCH_SOURCE_DIR) + "/tests/step/data/plate_with_hole.step --unit mm");
+  EXPECT_EQ(none.status, 2);
+  EXPECT_THAT(none.err, HasSubstr("plate_with_hole.step: declares no length unit"));
+  CliRun scene = run("trace " + kExamples + "viviani.json --unit mm -q");
+  EXPECT_EQ(scene.status, 2);
+  EXPECT_THAT(scene.err, HasSubstr("\"unit\" key"));
+}

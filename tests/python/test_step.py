@@ -3,6 +3,7 @@ against the CLI's JSON of the same command."""
 import json
 import math
 import subprocess
+from pathlib import Path
 
 import pytest
 
@@ -55,3 +56,28 @@ def test_intersect_parts_by_name(source_dir):
         ssimarch.intersect(model, a_faces="part:nothing")
     with pytest.raises(ssimarch.InputError, match="tolerence"):
         ssimarch.intersect(model, tolerence=1e-9)
+
+
+def _in_millimetres(source: Path, name: str, tmp_path: Path) -> str:
+    """A copy of a test model that declares the millimetre (the test models declare no unit)."""
+    text = (source / "tests/step/data" / name).read_text()
+    at = text.index("ENDSEC;", text.index("DATA;"))
+    path = tmp_path / ("mm_" + name)
+    path.write_text(text[:at] + "#999999=(LENGTH_UNIT()NAMED_UNIT(*)SI_UNIT(.MILLI.,.METRE.));\n" + text[at:])
+    return str(path)
+
+
+def test_unit_converts_the_model_as_the_cli_does(source_dir, tmp_path):
+    plate = _in_millimetres(source_dir, "plate_with_hole.step", tmp_path)
+    rods = _in_millimetres(source_dir, "rod_assembly.step", tmp_path)
+    m = ssimarch.read_step(rods, unit="in")
+    assert m["unit"]["name"] == "inch" and m["converted_from"]["name"] == "millimetre"
+    lo, hi = m["faces"][0]["box"]
+    assert lo[0] == pytest.approx(3.5 / 25.4) and hi[0] == pytest.approx(6.5 / 25.4)
+    assert ssimarch.read_step(rods)["converted_from"] is None
+    assert total(ssimarch.section(plate, (0, 0, 0, 1, 0, 0), unit="m")) == pytest.approx((4 + math.pi) * 1e-3, abs=1e-12)
+    assert total(ssimarch.intersect(rods, unit="cm")) == pytest.approx((4 * math.pi + 20) / 10, abs=1e-9)
+    with pytest.raises(ssimarch.InputError, match='unit: unknown length unit "furlong"'):
+        ssimarch.section(plate, (0, 0, 0, 1, 0, 0), unit="furlong")
+    with pytest.raises(ssimarch.InputError, match="declares no length unit"):
+        ssimarch.read_step(str(source_dir / "tests/step/data/plate_with_hole.step"), unit="mm")

@@ -1,7 +1,9 @@
 // Scene surfaces taken from STEP files (docs/scene-format.md, "Surfaces from STEP files"):
 //   {"step": "part.step", "face": 3}      the third face of the file (`ssimarch faces part.step`)
 //   {"step": "part.step", "entity": 57}   instance #57: a face, or a surface
-// A relative path is relative to the scene file's folder. Each file is parsed once per scene.
+//   "unit": "mm"                          (either form) the model converted to a length unit
+// A relative path is relative to the scene file's folder. Each file is parsed once per scene
+// and unit.
 #pragma once
 
 #include <filesystem>
@@ -17,13 +19,14 @@
 
 namespace ssimarch {
 
-/// The STEP files a scene has read, by resolved path.
+/// The STEP files a scene has read, by resolved path and the unit they were converted to.
 class StepFileCache {
  public:
-  const StepModel& get(const std::filesystem::path& path, const InputLimits& limits);
+  const StepModel& get(const std::filesystem::path& path, const InputLimits& limits,
+                       const std::optional<StepLengthUnit>& unit = std::nullopt);
 
  private:
-  std::map<std::filesystem::path, std::shared_ptr<const StepModel>> models_;
+  std::map<std::pair<std::filesystem::path, std::string>, std::shared_ptr<const StepModel>> models_;
 };
 
 /// True when a surface's JSON is the STEP form (has the key "step").
@@ -46,9 +49,14 @@ Surface step_surface_from_json(const nlohmann::json& spec, const std::filesystem
 std::vector<int> step_face_list(const std::string& text, const StepModel& model, const std::string& where,
                                 std::size_t min_count = 2);
 
-/// A scene of faces of a STEP model ({"step": path, "face": i} named "face<i>", trimmed to
-/// their loops) with one intersection per pair of them, named "face<i>-face<j>", i < j in the
-/// list's order, default options (io/scene.hpp parses it).
-nlohmann::json step_faces_scene_json(const std::filesystem::path& step, const std::vector<int>& faces);
+/// A scene's surface for face `face` of `model` read from `step`: {"step": path, "face": i}, with
+/// "unit" when the model was read converted, so that the scene reads it the same way.
+nlohmann::json step_face_json(const std::filesystem::path& step, int face, const StepModel& model);
+
+/// A scene of faces of a STEP model (step_face_json named "face<i>", trimmed to their loops) with
+/// one intersection per pair of them, named "face<i>-face<j>", i < j in the list's order, default
+/// options (io/scene.hpp parses it).
+nlohmann::json step_faces_scene_json(const std::filesystem::path& step, const StepModel& model,
+                                     const std::vector<int>& faces);
 
 }  // namespace ssimarch

@@ -16,7 +16,8 @@
 // ITEM_DEFINED_TRANSFORMATION, or a MAPPED_ITEM) has its faces listed once per placement, in the
 // root product's coordinates: the transformations composed down the product structure.
 // Plane angles are converted to radians by the file's plane-angle unit (a CONVERSION_BASED_UNIT
-// such as degrees); lengths stay in the file's unit.
+// such as degrees); lengths stay in the file's unit unless the model is read converted to another
+// (StepModel's `unit`: every point, radius and trimming length scaled once as it is read).
 // Every error is an InputError naming "file:line: #id" of the instance at fault.
 #pragma once
 
@@ -31,6 +32,7 @@
 
 #include "ssimarch/geometry/bspline_curve.hpp"
 #include "ssimarch/step/part21.hpp"
+#include "ssimarch/step/units.hpp"
 #include "ssimarch/pipeline/face_region.hpp"
 #include "ssimarch/pipeline/spline_surface_data.hpp"
 #include "ssimarch/surface/surface.hpp"
@@ -68,8 +70,12 @@ struct StepFace {
 
 class StepModel {
  public:
-  explicit StepModel(StepFile file);
-  static StepModel read(const std::filesystem::path& path, const InputLimits& limits = {});
+  /// The model in the file's length unit, or converted to `unit` (docs/cad.md "Length unit").
+  /// Converting throws InputError naming the file when it declares no length unit, or several
+  /// that differ (one scale cannot convert them).
+  explicit StepModel(StepFile file, const std::optional<StepLengthUnit>& unit = std::nullopt);
+  static StepModel read(const std::filesystem::path& path, const InputLimits& limits = {},
+                        const std::optional<StepLengthUnit>& unit = std::nullopt);
 
   const StepFile& file() const { return file_; }
   const std::vector<StepFace>& faces() const { return faces_; }
@@ -86,15 +92,27 @@ class StepModel {
   /// edge's exact curve: LINE, CIRCLE, ELLIPSE, B-spline; docs/cad.md "Trimming loops"), moved by
   /// `placement`; null for a surface instance and for a face bounded only by seams and vertices.
   std::shared_ptr<const FaceRegion> face_region(std::int64_t entity, const PartPlacement& placement = {}) const;
-  /// A B_SPLINE_CURVE_WITH_KNOTS (2D or 3D, not rational) as a B-spline curve.
+  /// A B_SPLINE_CURVE_WITH_KNOTS (2D or 3D, not rational) as a B-spline curve, a 3D one in the
+  /// model's unit (not placed: a curve instance belongs to no occurrence).
   BSplineCurve bspline_curve(std::int64_t entity) const;
   /// Radians per plane-angle unit of the file (1 unless it declares another unit).
   double angle_unit() const { return angle_unit_; }
+  /// The unit of the model's coordinates: the file's, or the one it was converted to.
+  const StepLengthUnit& length_unit() const { return unit_; }
+  /// The length unit the file declares (step_length_unit).
+  const StepLengthUnit& file_length_unit() const { return file_unit_; }
+  /// Model units per file unit: 1 unless converted.
+  double length_scale() const { return scale_; }
+  /// The unit the model was converted to when read; empty when it keeps the file's.
+  const std::optional<StepLengthUnit>& converted_to() const { return converted_to_; }
 
  private:
   StepFile file_;
   std::vector<StepFace> faces_;
   double angle_unit_ = 1;
+  StepLengthUnit file_unit_, unit_;
+  std::optional<StepLengthUnit> converted_to_;
+  double scale_ = 1;
 };
 
 }  // namespace ssimarch
