@@ -39,7 +39,21 @@ void print_intersect_summary(const std::vector<IntersectionRun>& runs, const Int
             << std::setprecision(6);
   if (coincident > 0) std::cerr << "; " << coincident << " pair(s) share a region (coincident, no curve)";
   if (warnings > 0) std::cerr << "; " << warnings << " warning(s) in the output";
-  std::cerr << "\n" << s.pairs << " face pair(s) traced, " << s.culled << " left out: their boxes are apart\n";
+  std::cerr << "\n"
+            << s.pairs << " face pair(s) traced, " << s.culled - s.culled_by_solid
+            << " left out: their boxes are apart";
+  if (s.culled_by_solid > 0)
+    std::cerr << "; " << s.culled_by_solid << " more: faces of one solid that share no edge or vertex";
+  std::cerr << "\n";
+}
+
+// Whether --solid-topology (the option table's `solid_topology`) leaves faces of one solid to
+// their shared edges, as it does by default.
+bool solid_topology(const TraceOptionFlags& flags) {
+  TraceJobOptions options;
+  for (const OptionOverride& o : trace_overrides(flags))
+    if (o.option->key == "solid_topology") apply_trace_option(*o.option, o.value, Constants{}, o.where, &options);
+  return options.solid_topology;
 }
 
 // Two models whose coordinates mean different lengths are intersected number for number
@@ -65,7 +79,7 @@ int run_intersect(const IntersectArgs& args) {
   const StepFaceSet a{std::filesystem::absolute(args.a), &ma, step_face_list(args.a_faces, ma, "--a-faces", 1)};
   const StepFaceSet b{std::filesystem::absolute(same ? args.a : args.b), &b_model,
                       step_face_list(args.b_faces, b_model, "--b-faces", 1)};
-  const IntersectScene s = step_intersect_scene(a, b, same);
+  const IntersectScene s = step_intersect_scene(a, b, same, solid_topology(args.out.options));
   for (const std::string& w : s.not_read) std::cerr << "intersect: not read, left out: " << w << "\n";
   const TraceJobResult job = trace_generated_scene(s.scene, args.a, args.out);
   if (!args.out.quiet) print_intersect_summary(job.runs, s);

@@ -13,10 +13,37 @@ namespace ssimarch {
 
 namespace {
 
-// The faces of one set that could be read, with their placed boxes.
+// Where a face sits in its model's topology: the solid it bounds (FaceRegion::solid, empty for
+// none) and the ids of its edges and vertices, sorted.
+struct FaceTopology {
+  std::string solid;
+  std::vector<std::int64_t> parts;
+};
+
+FaceTopology topology_of(const StepModel& model, const StepFace& f) {
+  FaceTopology t;
+  const auto region = model.face_region(f.entity, f.placement);
+  if (!region) return t;
+  t.solid = region->solid();
+  for (int i = 0; i < region->boundary_curves(); ++i) t.parts.push_back(region->boundary_edge(i));
+  for (const auto& [id, p] : region->boundary_vertices()) t.parts.push_back(id);
+  std::sort(t.parts.begin(), t.parts.end());
+  return t;
+}
+
+// Faces of one solid that share no edge and no vertex do not meet (pipeline/shared_boundary.hpp).
+bool apart_in_one_solid(const FaceTopology& a, const FaceTopology& b) {
+  if (a.solid.empty() || a.solid != b.solid) return false;
+  std::vector<std::int64_t> common;
+  std::set_intersection(a.parts.begin(), a.parts.end(), b.parts.begin(), b.parts.end(), std::back_inserter(common));
+  return common.empty();
+}
+
+// The faces of one set that could be read, with their placed boxes and topology.
 struct ReadFaces {
   std::vector<int> faces;
   std::vector<Box> boxes;
+  std::vector<FaceTopology> topology;
 };
 
 ReadFaces read_boxes(const StepFaceSet& set, const char* which, std::vector<std::string>* not_read) {
@@ -25,8 +52,10 @@ ReadFaces read_boxes(const StepFaceSet& set, const char* which, std::vector<std:
     const StepFace& f = set.model->face(i, which);
     try {
       out.boxes.push_back(set.model->surface(f.entity, f.placement).box());
+      out.topology.push_back(topology_of(*set.model, f));
       out.faces.push_back(i);
     } catch (const InputError& e) {
+      if (out.boxes.size() > out.faces.size()) out.boxes.pop_back();
       not_read->push_back(std::string(which) + " face " + std::to_string(i) + " (#" + std::to_string(f.entity) + ", " +
                           f.surface_type + "): " + e.what());
     }
@@ -42,7 +71,7 @@ double diagonal(const std::vector<Box>& boxes) {
 
 }  // namespace
 
-IntersectScene step_intersect_scene(const StepFaceSet& a, const StepFaceSet& b, bool same_model) {
+IntersectScene step_intersect_scene(const StepFaceSet& a, const StepFaceSet& b, bool same_model, bool solid_topology) {
   IntersectScene out;
   const ReadFaces ra = read_boxes(a, "A", &out.not_read), rb = read_boxes(b, "B", &out.not_read);
   const double slack = kIntersectBoxSlack * std::max(diagonal(ra.boxes), diagonal(rb.boxes));
@@ -60,6 +89,11 @@ IntersectScene step_intersect_scene(const StepFaceSet& a, const StepFaceSet& b, 
       if (p == q) continue;
       if (p > q) std::swap(p, q);
       if (!seen.emplace(p, q).second) continue;
+    }
+    if (solid_topology &&
+        apart_in_one_solid(ra.topology[static_cast<std::size_t>(i)], rb.topology[static_cast<std::size_t>(j)])) {
+      ++out.culled_by_solid;
+      continue;
     }
     const std::string sp = name(0, p), sq = name(same_model ? 0 : 1, q);
     surfaces[sp] = step_face_json(a.step, p, *a.model);

@@ -170,6 +170,12 @@ std::vector<Row> make_rows() {
                                        "meets, hunted where the start-point search left uncertain regions (docs/singular.md)",
                                        "yes/no"),
                               &TraceJobOptions::hunt_isolated_points));
+  rows.push_back(job_flag_row(describe("solid_topology", "", "true",
+                                       "answer two faces of one solid of a STEP model by the edges and vertices they "
+                                       "share, which is all a valid solid's faces have in common (docs/cad.md, \"Faces "
+                                       "of one solid\"); false: trace them",
+                                       "yes/no"),
+                              &TraceJobOptions::solid_topology));
   rows.push_back(geometry_row());
   rows.push_back(bspline_row());
   rows.push_back(bspline_tolerance_row());

@@ -14,6 +14,7 @@
 #include "ssimarch/march/model_size.hpp"
 #include "ssimarch/pipeline/branch_geometry.hpp"
 #include "ssimarch/pipeline/face_clip.hpp"
+#include "ssimarch/pipeline/shared_boundary.hpp"
 #include "ssimarch/singular/locate.hpp"
 #include "ssimarch/trace/trace_all.hpp"
 
@@ -167,14 +168,22 @@ IntersectionRun run_intersection(const Scene& scene, const IntersectionSpec& spe
   IntersectionRun run{spec, scene.problem(spec), {}, {}, {}, {}, {}, {}, {}};
   run.used = resolved_options(scene, spec, run.problem);
   check_spline_tolerance(scene, spec, run.problem);
-  find_curves(spec, &run);
-  // CAD faces: the curves cut to their trimming loops (docs/cad.md).
+  // CAD faces: two faces of one solid meet where they share edges and vertices; others have their
+  // curves cut to their trimming loops (docs/cad.md).
   auto region = [&](std::size_t k) {
     const auto it = scene.regions.find(spec.surfaces[spec.swapped ? 1 - k : k]);
     return it == scene.regions.end() ? nullptr : it->second.get();
   };
-  clip_to_regions({region(0), region(1)}, &run);
-  report_coincidence(spec, &run);
+  std::optional<TraceResult> shared;
+  if (spec.options.solid_topology && spec.starts.empty())
+    shared = shared_boundary(run.problem, region(0), region(1), run.used);
+  if (shared) {
+    run.result = std::move(*shared);
+  } else {
+    find_curves(spec, &run);
+    clip_to_regions({region(0), region(1)}, &run);
+    report_coincidence(spec, &run);
+  }
   run.network = build_curve_network(run.problem, run.result);
   for (const NetworkFailure& f : run.network.failures)
     run.result.warnings.push_back("curve " + std::to_string(f.curve) + " " + f.end + " stops away from the domain boundary (" +

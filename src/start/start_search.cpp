@@ -10,6 +10,7 @@ std::string_view to_string(StartSearchMethod m) {
     case StartSearchMethod::kClosedForm: return "closed-form";
     case StartSearchMethod::kDisjointBoxes: return "box";
     case StartSearchMethod::kCoincident: return "coincident";
+    case StartSearchMethod::kSharedBoundary: return "shared-boundary";
   }
   return "sampling";
 }

@@ -2,6 +2,7 @@
 // each accessor throws InputError naming "file:line: #id", the entity and the attribute.
 #pragma once
 
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -166,8 +167,13 @@ std::optional<SplineSurfaceData> step_swept_surface(const StepAccess& a, const S
 Surface step_offset_surface(const Surface& basis, double d, const StepAccess& a, const StepInstance& s);
 
 /// The region inside a face's trimming loops (step/face_region.cpp); null when no edge of
-/// the face bounds an area (only seams and vertex loops). `name` is for messages.
+/// the face bounds an area (only seams and vertex loops). `name` is for messages, `solid` the
+/// key of the solid occurrence the face bounds (FaceRegion::solid; empty: none).
 std::shared_ptr<const FaceRegion> step_face_region(const StepAccess& a, const StepInstance& face,
-                                                   const std::string& name);
+                                                   const std::string& name, const std::string& solid = {});
+
+/// The solid each face bounds: face instance id -> the MANIFOLD_SOLID_BREP or BREP_WITH_VOIDS
+/// whose shells (CLOSED_SHELL, ORIENTED_CLOSED_SHELL) list it (ISO 10303-42 §5.4.x).
+std::map<std::int64_t, std::int64_t> solids_of_faces(const StepAccess& a);
 
 }  // namespace ssimarch::internal

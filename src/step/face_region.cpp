@@ -6,6 +6,7 @@
 // across an edge at c is n_face(c) x T(c). Seam edges (one EDGE_CURVE used twice by the face,
 // once each way, where a closed surface's parameter wraps) bound nothing and are left out.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -26,7 +27,10 @@ struct EdgePiece {
   double lo = 0, hi = 0;
   double sign = 1;
   double step = 1e-6;  // finite-difference step of the derivatives (B-splines; relative error ~ step^2)
-  std::function<Vec3(double)> derivative;  // exact where known, else central differences
+  std::function<Vec3(double)> derivative;                   // exact where known, else central differences
+  std::vector<double> breaks;                               // a B-spline's distinct knots inside (lo, hi)
+  std::int64_t edge = 0;                                    // the EDGE_CURVE instance
+  std::array<std::pair<std::int64_t, Vec3>, 2> vertices{};  // its VERTEX_POINTs: id, point
 };
 
 Vec3 derivative_of(const EdgePiece& e, double s) {
@@ -64,8 +68,11 @@ double nearest_parameter(const EdgePiece& e, const Vec3& p) {
 
 class StepFaceRegion final : public FaceRegion {
  public:
-  StepFaceRegion(std::vector<EdgePiece> edges, bool same_sense, std::string name)
-      : edges_(std::move(edges)), face_sign_(same_sense ? 1.0 : -1.0), name_(std::move(name)) {}
+  StepFaceRegion(std::vector<EdgePiece> edges, bool same_sense, std::string name, std::string solid)
+      : edges_(std::move(edges)),
+        face_sign_(same_sense ? 1.0 : -1.0),
+        name_(std::move(name)),
+        solid_(std::move(solid)) {}
 
   Side side(const Vec3& p, const Vec3& surface_normal) const override {
     Side out{std::numeric_limits<double>::infinity(), p};
@@ -87,17 +94,34 @@ class StepFaceRegion final : public FaceRegion {
     return {e.lo, e.hi};
   }
   Vec3 boundary_point(int i, double s) const override { return edges_[static_cast<std::size_t>(i)].at(s); }
+  std::vector<double> boundary_breaks(int i) const override { return edges_[static_cast<std::size_t>(i)].breaks; }
+  Vec3 boundary_derivative(int i, double s) const override {
+    return derivative_of(edges_[static_cast<std::size_t>(i)], s);
+  }
   std::string name() const override { return name_; }
+  std::string solid() const override { return solid_; }
+  std::int64_t boundary_edge(int i) const override { return edges_[static_cast<std::size_t>(i)].edge; }
+  std::array<std::int64_t, 2> boundary_edge_vertices(int i) const override {
+    const EdgePiece& e = edges_[static_cast<std::size_t>(i)];
+    return {e.vertices[0].first, e.vertices[1].first};
+  }
+  std::vector<std::pair<std::int64_t, Vec3>> boundary_vertices() const override {
+    std::map<std::int64_t, Vec3> unique;
+    for (const EdgePiece& e : edges_)
+      for (const auto& [id, p] : e.vertices) unique.emplace(id, p);
+    return {unique.begin(), unique.end()};
+  }
 
  private:
   std::vector<EdgePiece> edges_;
   double face_sign_;
-  std::string name_;
+  std::string name_, solid_;
 };
 
-Vec3 vertex_point(const StepAccess& a, const StepInstance& edge, const StepRecord& r, std::size_t k, const char* what) {
+std::pair<std::int64_t, Vec3> vertex_of(const StepAccess& a, const StepInstance& edge, const StepRecord& r,
+                                        std::size_t k, const char* what) {
   const StepInstance& v = a.ref(edge, a.param(edge, r, k, what), what);
-  return a.point(v, a.param(v, a.record(v, "VERTEX_POINT"), 1, "vertex_geometry"), "vertex_geometry");
+  return {v.id, a.point(v, a.param(v, a.record(v, "VERTEX_POINT"), 1, "vertex_geometry"), "vertex_geometry")};
 }
 
 const StepInstance& curve_3d(const StepAccess& a, const StepInstance& curve) {
@@ -108,9 +132,25 @@ const StepInstance& curve_3d(const StepAccess& a, const StepInstance& curve) {
   return curve;
 }
 
+// The derivative of a B-spline curve: the degree p - 1 curve of p (P_{i+1} - P_i) / (t_{i+p+1} -
+// t_{i+1}) on the knots without their ends (The NURBS Book §3.3, eq. 3.4); zero for degree 0.
+BSplineCurve derivative_curve(const BSplineCurve& h) {
+  BSplineCurve d;
+  d.degree = std::max(0, h.degree - 1);
+  d.knots.assign(h.knots.begin() + 1, h.knots.end() - 1);
+  const double p = h.degree;
+  for (std::size_t i = 0; i + 1 < h.control_points.size(); ++i) {
+    const double span = h.knots[i + static_cast<std::size_t>(h.degree) + 1] - h.knots[i + 1];
+    d.control_points.push_back(span > 0 ? VecX((h.control_points[i + 1] - h.control_points[i]) * (p / span))
+                                        : VecX(VecX::Zero(h.control_points[i].size())));
+  }
+  return d;
+}
+
 // A B-spline edge curve (step/swept_surface.cpp reads it) evaluated in homogeneous
-// coordinates (w x, w y, w z, w) by de Boor.
-std::function<Vec3(double)> spline_curve(const StepAccess& a, const StepInstance& c, double* lo, double* hi) {
+// coordinates (w x, w y, w z, w) by de Boor; its derivative, (A' - w' C) / w, in *derivative.
+std::function<Vec3(double)> spline_curve(const StepAccess& a, const StepInstance& c, double* lo, double* hi,
+                                         std::function<Vec3(double)>* derivative, std::vector<double>* knots) {
   const NurbsCurve3 n = step_bspline_curve(a, c);
   BSplineCurve h;
   h.degree = n.degree;
@@ -122,6 +162,15 @@ std::function<Vec3(double)> spline_curve(const StepAccess& a, const StepInstance
   }
   *lo = h.start();
   *hi = h.end();
+  *knots = h.knots;
+  if (h.degree >= 1) {
+    const BSplineCurve dh = derivative_curve(h);
+    *derivative = [h, dh](double t) {
+      const VecX x = h.at(t), dx = dh.at(t);
+      const Vec3 point(x[0] / x[3], x[1] / x[3], x[2] / x[3]);
+      return Vec3((Vec3(dx[0], dx[1], dx[2]) - dx[3] * point) / x[3]);
+    };
+  }
   return [h](double t) {
     const VecX x = h.at(t);
     return Vec3(x[0] / x[3], x[1] / x[3], x[2] / x[3]);
@@ -131,11 +180,14 @@ std::function<Vec3(double)> spline_curve(const StepAccess& a, const StepInstance
 // The piece of an oriented edge's curve between its vertices, in the loop's direction.
 EdgePiece edge_piece(const StepAccess& a, const StepInstance& edge, double direction) {
   const StepRecord& r = a.record(edge, "EDGE_CURVE");
-  const Vec3 start = vertex_point(a, edge, r, 1, "edge_start"), end = vertex_point(a, edge, r, 2, "edge_end");
+  const auto start_vertex = vertex_of(a, edge, r, 1, "edge_start"), end_vertex = vertex_of(a, edge, r, 2, "edge_end");
+  const Vec3 &start = start_vertex.second, &end = end_vertex.second;
   const bool same_sense = a.boolean(edge, a.param(edge, r, 4, "same_sense"), "same_sense");
   const StepInstance& curve = curve_3d(a, a.ref(edge, a.param(edge, r, 3, "edge_geometry"), "edge_geometry"));
   const StepRecord& cr = curve.records.front();
   EdgePiece e;
+  e.edge = edge.id;
+  e.vertices = {start_vertex, end_vertex};
   e.sign = direction * (same_sense ? 1.0 : -1.0);
   // From -> to in the curve's increasing parameter.
   const Vec3& from = same_sense ? start : end;
@@ -172,7 +224,8 @@ EdgePiece edge_piece(const StepAccess& a, const StepInstance& edge, double direc
   }
   if (curve.record("B_SPLINE_CURVE_WITH_KNOTS")) {
     double lo = 0, hi = 0;
-    e.at = spline_curve(a, curve, &lo, &hi);
+    std::vector<double> knots;
+    e.at = spline_curve(a, curve, &lo, &hi, &e.derivative, &knots);
     e.step = 1e-6 * (hi - lo);
     e.lo = lo;
     e.hi = hi;
@@ -184,6 +237,8 @@ EdgePiece edge_piece(const StepAccess& a, const StepInstance& edge, double direc
       std::swap(e.lo, e.hi);
       e.sign = -e.sign;
     }
+    for (double k : knots)
+      if (k > e.lo && k < e.hi && (e.breaks.empty() || k > e.breaks.back())) e.breaks.push_back(k);
     return e;
   }
   a.fail(curve,
@@ -194,7 +249,7 @@ EdgePiece edge_piece(const StepAccess& a, const StepInstance& edge, double direc
 }  // namespace
 
 std::shared_ptr<const FaceRegion> step_face_region(const StepAccess& a, const StepInstance& face,
-                                                   const std::string& name) {
+                                                   const std::string& name, const std::string& solid) {
   const StepRecord& fr = face.records.front();
   struct Use {
     const StepInstance* edge;
@@ -222,8 +277,8 @@ std::shared_ptr<const FaceRegion> step_face_region(const StepAccess& a, const St
   for (const Use& u : uses)
     if (count[u.edge] == 1) edges.push_back(edge_piece(a, *u.edge, u.direction));
   if (edges.empty()) return nullptr;  // bounded only by seams and vertices: the whole surface
-  return std::make_shared<StepFaceRegion>(std::move(edges),
-                                          a.boolean(face, a.param(face, fr, 3, "same_sense"), "same_sense"), name);
+  return std::make_shared<StepFaceRegion>(
+      std::move(edges), a.boolean(face, a.param(face, fr, 3, "same_sense"), "same_sense"), name, solid);
 }
 
 }  // namespace ssimarch::internal

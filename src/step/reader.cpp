@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <sstream>
 
 #include "ssimarch/core/text_file.hpp"
 #include "ssimarch/surface/frame.hpp"
@@ -232,6 +233,7 @@ StepModel::StepModel(StepFile file, const std::optional<StepLengthUnit>& unit) :
   }
   const StepAccess a(file_, {}, scale_);
   angle_unit_ = plane_angle_unit(a);
+  solids_ = internal::solids_of_faces(a);
   for (const internal::PlacedFace& placed : internal::placed_faces(a)) {
     const StepInstance& f = *file_.find(placed.face);
     const StepRecord& r = f.records.front();
@@ -283,8 +285,18 @@ std::shared_ptr<const FaceRegion> StepModel::face_region(std::int64_t entity, co
   const StepInstance* inst = file_.find(entity);
   if (!inst) throw InputError(file_.source, cat("has no instance #", entity));
   if (!is_face(*inst)) return nullptr;
+  // The solid's key names the occurrence: the same solid placed twice is two solids, and the
+  // same file read in two units two models.
+  std::string solid;
+  if (const auto it = solids_.find(entity); it != solids_.end()) {
+    std::ostringstream key;
+    key << std::hexfloat << file_.source << " #" << it->second << " x" << scale_ << " @";
+    for (int i = 0; i < 9; ++i) key << ' ' << placement.rotation(i / 3, i % 3);
+    for (int i = 0; i < 3; ++i) key << ' ' << placement.translation[i];
+    solid = key.str();
+  }
   return internal::step_face_region(StepAccess(file_, placement, scale_), *inst,
-                                    cat("STEP face #", entity, " of ", file_.source));
+                                    cat("STEP face #", entity, " of ", file_.source), solid);
 }
 
 BSplineCurve StepModel::bspline_curve(std::int64_t entity) const {

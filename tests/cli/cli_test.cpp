@@ -563,6 +563,26 @@ TEST(Cli, SectionOfAStepModelByPlanes) {
   EXPECT_THAT(run("section --help").out, HasSubstr("--plane"));
 }
 
+// Faces of one solid meet at their shared edges and vertices (docs/cad.md, "Faces of one solid"):
+// solids.step's octahedron (12 edges of length sqrt 2, 4 pairs of opposite faces left out) and
+// puck (two lines of length 1 where its half cylinders touch, four half circles).
+TEST(Cli, IntersectFacesOfOneSolidByTheirSharedEdges) {
+  const std::string model = std::string(SSIMARCH_SOURCE_DIR) + "/tests/step/data/solids.step";
+  CliRun r = run("intersect " + model);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("29 face pair(s) traced, 33 left out: their boxes are apart; 4 more: faces of one "
+                               "solid that share no edge or vertex"));
+  const auto j = nlohmann::json::parse(r.out);
+  double length = 0;
+  for (const auto& i : j["intersections"]) {
+    EXPECT_EQ(i["start_points"]["method"], "shared-boundary") << i["name"];
+    for (const auto& c : i["curves"]) length += c["length"].get<double>();
+  }
+  EXPECT_NEAR(length, 12 * std::sqrt(2.0) + 2 + 4 * std::numbers::pi, 1e-12);
+  CliRun traced = run("intersect " + model + " --solid-topology false -q");
+  EXPECT_EQ(nlohmann::json::parse(traced.out)["intersections"].size(), 33u);
+}
+
 // Issue 28 item 1: --unit reads a model converted to another length unit; planes and curves are
 // in it. The test models declare no unit, so these copies declare the millimetre.
 TEST(Cli, TheUnitOptionConvertsAStepModel) {

@@ -76,6 +76,8 @@ const BadValue kBadValues[] = {
     {"start_box_budget", "0", "must be an integer in [1, 1e+09], got 0"},
     {"hunt_isolated_points", "1", "expected a yes/no name (true or false), got a number"},
     {"hunt_isolated_points", "\"sometimes\"", "sometimes"},
+    {"solid_topology", "0", "expected a yes/no name (true or false), got a number"},
+    {"solid_topology", "\"often\"", "often"},
     {"geometry", "\"guesswork\"",
      "unknown geometry method \"guesswork\" (known: exact, ye-maekawa, willmore, stoyanov, estimate, barnhill-kersey, "
      "mixed)"},

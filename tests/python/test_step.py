@@ -81,3 +81,11 @@ def test_unit_converts_the_model_as_the_cli_does(source_dir, tmp_path):
         ssimarch.section(plate, (0, 0, 0, 1, 0, 0), unit="furlong")
     with pytest.raises(ssimarch.InputError, match="declares no length unit"):
         ssimarch.read_step(str(source_dir / "tests/step/data/plate_with_hole.step"), unit="mm")
+
+
+def test_faces_of_one_solid_meet_at_their_shared_edges(source_dir):
+    model = str(source_dir / "tests/step/data/solids.step")
+    t = ssimarch.intersect(model)
+    assert len(t.intersections) == 29  # the octahedron's 4 pairs of opposite faces left out
+    assert total(t) == pytest.approx(12 * math.sqrt(2) + 2 + 4 * math.pi, abs=1e-12)
+    assert len(ssimarch.intersect(model, solid_topology=False).intersections) == 33

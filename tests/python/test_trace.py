@@ -113,8 +113,8 @@ NON_DEFAULT_OPTION_VALUES = {
     "min_step_length": 1e-4, "deviation": 1e-3, "turn_angle": 0.2, "min_step": 1e-8, "taylor_order": 3,
     "tolerance": 1e-11, "max_corrector_iterations": 20, "max_turn_angle": 0.5, "max_correction_ratio": 0.6,
     "max_points": 100000, "max_length": 100.0, "start_samples": 12, "certified_start_points": False,
-    "start_box_budget": 20000, "closed_form": False, "hunt_isolated_points": False, "geometry": "estimate",
-    "bspline": True, "bspline_tolerance": 1e-8,
+    "start_box_budget": 20000, "closed_form": False, "hunt_isolated_points": False, "solid_topology": False,
+    "geometry": "estimate", "bspline": True, "bspline_tolerance": 1e-8,
 }
 
 

@@ -26,14 +26,18 @@ struct StepFaceSet {
 struct IntersectScene {
   nlohmann::json scene;               // surfaces and one intersection per pair whose boxes meet
   int pairs = 0;                      // intersections in it
-  int culled = 0;                     // pairs of the two sets whose boxes are apart
+  int culled = 0;                     // pairs of the two sets left out: boxes apart, or of one solid sharing nothing
+  int culled_by_solid = 0;            // of them, faces of one solid that share no edge and no vertex
   std::vector<std::string> not_read;  // "A face 12 (#345, SURFACE_OF_REVOLUTION): why", one per face
 };
 
 /// The intersections of the faces of `a` with those of `b`. With `same_model` (both sets from one
 /// file) the surfaces are named face<i> and a pair of faces in both sets is one intersection
 /// face<i>-face<j> (i < j), a face never with itself; else a<i> and b<j>, named a<i>-b<j>. A face
-/// whose surface cannot be read is listed in not_read, not traced.
-IntersectScene step_intersect_scene(const StepFaceSet& a, const StepFaceSet& b, bool same_model);
+/// whose surface cannot be read is listed in not_read, not traced. With `solid_topology` (the
+/// option of that name: pipeline/shared_boundary.hpp) two faces of one solid that share no edge and
+/// no vertex are left out too: they do not meet.
+IntersectScene step_intersect_scene(const StepFaceSet& a, const StepFaceSet& b, bool same_model,
+                                    bool solid_topology = true);
 
 }  // namespace ssimarch

@@ -6,7 +6,10 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "ssimarch/core/vec3.hpp"
 
@@ -35,8 +38,42 @@ class FaceRegion {
   virtual int boundary_curves() const = 0;
   virtual std::array<double, 2> boundary_range(int i) const = 0;
   virtual Vec3 boundary_point(int i, double s) const = 0;
+  /// Parameters inside boundary_range(i) where curve i is less smooth than elsewhere (a
+  /// B-spline's knots), for quadratures that must not straddle them; none by default.
+  virtual std::vector<double> boundary_breaks(int i) const {
+    (void)i;
+    return {};
+  }
+  /// d boundary_point / ds. By default central differences of 1e-6 of the range (one-sided at
+  /// the ends), which lose ~1e-10 of the speed to rounding; regions that know their curves
+  /// override it exactly.
+  virtual Vec3 boundary_derivative(int i, double s) const {
+    const auto [lo, hi] = boundary_range(i);
+    const double h = 1e-6 * (hi - lo);
+    const double a = s - h < lo ? lo : s - h, b = s + h > hi ? hi : s + h;
+    return (boundary_point(i, b) - boundary_point(i, a)) / (b - a);
+  }
   /// For messages, e.g. "STEP face #20 of part.step".
   virtual std::string name() const = 0;
+
+  // The model's topology, where the region comes from one (pipeline/shared_boundary.hpp).
+  /// The solid the face bounds, as a key equal to another region's exactly when both faces bound
+  /// the same occurrence of the same solid (a STEP MANIFOLD_SOLID_BREP placed once); empty when the
+  /// face bounds no solid or its model has no topology.
+  virtual std::string solid() const { return {}; }
+  /// The model's id of boundary curve i's edge (a STEP EDGE_CURVE instance): two faces of one
+  /// solid that list the same id share that edge, the same curve over the same range. 0: unknown.
+  virtual std::int64_t boundary_edge(int i) const {
+    (void)i;
+    return 0;
+  }
+  /// The model's ids of boundary curve i's two vertices (its ends), 0 where unknown.
+  virtual std::array<std::int64_t, 2> boundary_edge_vertices(int i) const {
+    (void)i;
+    return {0, 0};
+  }
+  /// The vertices of the boundary's edges: the model's id and the point.
+  virtual std::vector<std::pair<std::int64_t, Vec3>> boundary_vertices() const { return {}; }
 };
 
 }  // namespace ssimarch

@@ -24,6 +24,7 @@ struct TraceJobOptions {
   CurveSplineOptions spline;               // its tolerance
   bool closed_form = true;  // answer primitive pairs with a closed form exactly (analytic/closed_form.hpp)
   bool hunt_isolated_points = true;  // TraceAllOptions::hunt_isolated_points (trace/trace_all.hpp)
+  bool solid_topology = true;        // faces of one solid answered by their shared edges (pipeline/shared_boundary.hpp)
 };
 
 /// A value as the user wrote it: a JSON number, or text (a name such as "taylor", or a number

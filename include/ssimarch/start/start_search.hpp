@@ -12,12 +12,14 @@ namespace ssimarch {
 
 /// How the start points were found; JSON `start_points.method` is to_string of it.
 enum class StartSearchMethod {
-  kSampling,       // "sampling": samples of the domain corrected onto the curve (start/start_points.hpp)
-  kCertified,      // "certified": the interval search (start/certified_start_points.hpp)
-  kGiven,          // "given": the scene's or the caller's start points
-  kClosedForm,     // "closed-form": no search; the curves are exact (analytic/closed_form.hpp)
-  kDisjointBoxes,  // "box": no search; the surfaces' boxes do not overlap (Problem::disjoint)
-  kCoincident,     // "coincident": no search; the surfaces share a region (pipeline/coincidence.hpp)
+  kSampling,        // "sampling": samples of the domain corrected onto the curve (start/start_points.hpp)
+  kCertified,       // "certified": the interval search (start/certified_start_points.hpp)
+  kGiven,           // "given": the scene's or the caller's start points
+  kClosedForm,      // "closed-form": no search; the curves are exact (analytic/closed_form.hpp)
+  kDisjointBoxes,   // "box": no search; the surfaces' boxes do not overlap (Problem::disjoint)
+  kCoincident,      // "coincident": no search; the surfaces share a region (pipeline/coincidence.hpp)
+  kSharedBoundary,  // "shared-boundary": no search; faces of one solid, which meet only along their shared
+                    // edges and at their shared vertices (pipeline/shared_boundary.hpp)
 };
 std::string_view to_string(StartSearchMethod m);
 

@@ -23,6 +23,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -91,6 +92,8 @@ class StepModel {
   /// The region a face instance keeps inside its trimming loops (outer and inner bounds, each
   /// edge's exact curve: LINE, CIRCLE, ELLIPSE, B-spline; docs/cad.md "Trimming loops"), moved by
   /// `placement`; null for a surface instance and for a face bounded only by seams and vertices.
+  /// A face of a solid (MANIFOLD_SOLID_BREP, BREP_WITH_VOIDS) has its solid's key (file, solid,
+  /// unit and placement: FaceRegion::solid) and its edges' and vertices' instance ids.
   std::shared_ptr<const FaceRegion> face_region(std::int64_t entity, const PartPlacement& placement = {}) const;
   /// A B_SPLINE_CURVE_WITH_KNOTS (2D or 3D, not rational) as a B-spline curve, a 3D one in the
   /// model's unit (not placed: a curve instance belongs to no occurrence).
@@ -113,6 +116,7 @@ class StepModel {
   StepLengthUnit file_unit_, unit_;
   std::optional<StepLengthUnit> converted_to_;
   double scale_ = 1;
+  std::map<std::int64_t, std::int64_t> solids_;  // face instance -> the solid it bounds
 };
 
 }  // namespace ssimarch

@@ -163,3 +163,48 @@ loop=w.loop([(bottom,True),(side1,True),(top,False),(side0,False)])
 torus=w.add(f"TOROIDAL_SURFACE('',#{w.place([0,0,0],[0,0,1],[1,0,0])},{R!r},{r!r})")
 w.face('torus_patch',[loop],torus)
 open('torus_patch.step','w').write(w.text("A quarter of the outer half of the torus R = 2, r = 0.5 about z: 0 <= u <= pi/2, -pi/2 <= v <= pi/2 (face 1)."))
+
+# 8. two solids (MANIFOLD_SOLID_BREP, CLOSED_SHELL) for the faces of one solid (docs/cad.md, "Faces
+# of one solid"): faces 1-8 the octahedron |x - 5| + |y| + |z| <= 1, each face the triangle of one
+# octant (signs of x - 5, y, z in binary order -, +), its normal outward; faces 9-12 the puck
+# x^2 + y^2 <= 1, 0 <= z <= 1: the half cylinders y >= 0 (face 9) and y <= 0 (face 10), which share
+# the lines x = +-1, y = 0, the bottom z = 0 (face 11) and the top z = 1 (face 12).
+w=W()
+c=[5.0,0,0]
+ov={}
+for k in range(3):
+    for sg in (1,-1):
+        p=list(c); p[k]+=sg; ov[(k,sg)]=(w.vertex(p),p)
+oedges={}
+def oedge(a,b):
+    key=tuple(sorted([a,b]))
+    if key not in oedges:
+        (va,pa),(vb,pb)=ov[key[0]],ov[key[1]]
+        oedges[key]=w.line_edge(va,vb,pa,pb)
+    return oedges[key],(a,b)==key
+octa=[]
+for sx in (-1,1):
+    for sy in (-1,1):
+        for sz in (-1,1):
+            tri=[(0,sx),(1,sy),(2,sz)]
+            if sx*sy*sz<0: tri=[tri[0],tri[2],tri[1]]  # counter-clockwise seen from outside
+            loop=w.loop([oedge(tri[i],tri[(i+1)%3]) for i in range(3)])
+            n=[sx/math.sqrt(3),sy/math.sqrt(3),sz/math.sqrt(3)]
+            p0=ov[tri[0]][1]; e=[ov[tri[1]][1][k]-p0[k] for k in range(3)]; L=math.sqrt(sum(x*x for x in e))
+            plane=w.add(f"PLANE('',#{w.place(p0,n,[x/L for x in e])})")
+            octa.append(w.face('octant',[loop],plane))
+w.add("MANIFOLD_SOLID_BREP('octahedron',#%d)"%w.add("CLOSED_SHELL('',(%s))"%",".join(f"#{f}" for f in octa)))
+pa,pb,pc,pd=[1,0,0],[-1,0,0],[1,0,1],[-1,0,1]
+va,vb,vc,vd=[w.vertex(p) for p in (pa,pb,pc,pd)]
+arc1=w.circle_edge(va,vb,[0,0,0],[0,0,1],[1,0,0],1.0)
+arc2=w.circle_edge(vb,va,[0,0,0],[0,0,1],[1,0,0],1.0)
+arc3=w.circle_edge(vc,vd,[0,0,1],[0,0,1],[1,0,0],1.0)
+arc4=w.circle_edge(vd,vc,[0,0,1],[0,0,1],[1,0,0],1.0)
+l1=w.line_edge(va,vc,pa,pc); l2=w.line_edge(vb,vd,pb,pd)
+def cylinder(): return w.add(f"CYLINDRICAL_SURFACE('',#{w.place([0,0,0],[0,0,1],[1,0,0])},1.0)")
+puck=[w.face('half_y_pos',[w.loop([(arc1,True),(l2,True),(arc3,False),(l1,False)])],cylinder()),
+      w.face('half_y_neg',[w.loop([(arc2,True),(l1,True),(arc4,False),(l2,False)])],cylinder()),
+      w.face('bottom',[w.loop([(arc2,False),(arc1,False)])],w.add(f"PLANE('',#{w.place([0,0,0],[0,0,-1],[1,0,0])})")),
+      w.face('top',[w.loop([(arc3,True),(arc4,True)])],w.add(f"PLANE('',#{w.place([0,0,1],[0,0,1],[1,0,0])})"))]
+w.add("MANIFOLD_SOLID_BREP('puck',#%d)"%w.add("CLOSED_SHELL('',(%s))"%",".join(f"#{f}" for f in puck)))
+open('solids.step','w').write(w.text("Two solids: the octahedron |x - 5| + |y| + |z| <= 1 (faces 1-8, one per octant) and the puck x^2 + y^2 <= 1, 0 <= z <= 1 (faces 9, 10 the half cylinders y >= 0 and y <= 0, 11 the bottom, 12 the top)."))
