@@ -191,6 +191,7 @@ py::dict unit_dict(const StepLengthUnit& u) {
 // (None, and the reason in "error", where its surface cannot be read).
 py::dict read_step(const std::string& path, const py::object& unit_name) {
   const StepModel model = StepModel::read(path, {}, unit_argument(unit_name));
+  if (!model.converted_to()) step_length_unit(model.file());  // a malformed unit named, as `ssimarch faces` does
   const StepLengthUnit& unit = model.length_unit();
   py::list faces;
   for (const StepFace& f : model.faces()) {

@@ -72,6 +72,8 @@ int run_faces(const FacesArgs& a) {
     std::cerr << fmt::format("ssimarch: {} of {} face(s) of {} could not be read (see each face's error)\n", unread,
                              list.size(), a.file);
   // The unit the coordinates are in: the file's (kept as written) or the one --unit converted to.
+  // A malformed unit is an error here, where the unit is listed (step_length_unit names it).
+  if (!model.converted_to()) step_length_unit(model.file());
   const StepLengthUnit& unit = model.length_unit();
   const StepLengthUnit& file_unit = model.file_length_unit();
   if (file_unit.several && !model.converted_to())

@@ -225,11 +225,19 @@ double plane_angle_unit(const StepAccess& a) {
 }  // namespace
 
 StepModel::StepModel(StepFile file, const std::optional<StepLengthUnit>& unit) : file_(std::move(file)) {
-  file_unit_ = unit_ = step_length_unit(file_);
+  // A malformed unit stops a conversion, not a reading in the file's own numbers (`faces`
+  // reports it: step_length_unit).
   if (unit) {
+    file_unit_ = step_length_unit(file_);
     scale_ = length_conversion(file_unit_, *unit, file_.source);
     unit_ = *unit;
     converted_to_ = unit;
+  } else {
+    try {
+      file_unit_ = unit_ = step_length_unit(file_);
+    } catch (const InputError&) {
+      file_unit_ = unit_ = StepLengthUnit{};
+    }
   }
   const StepAccess a(file_, {}, scale_);
   angle_unit_ = plane_angle_unit(a);

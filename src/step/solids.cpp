@@ -32,10 +32,18 @@ std::map<std::int64_t, std::int64_t> solids_of_faces(const StepAccess& a) {
     const StepInstance& s = *a.file().find(id);
     const StepRecord& r = s.records.front();
     if (s.records.size() != 1 || (r.type != "MANIFOLD_SOLID_BREP" && r.type != "BREP_WITH_VOIDS")) continue;
-    shell_faces(a, a.ref(s, a.param(s, r, 1, "outer"), "outer"), id, &out);
-    if (r.type == "BREP_WITH_VOIDS")
-      for (const StepValue& v : a.list(s, a.param(s, r, 2, "voids"), "voids"))
-        shell_faces(a, a.ref(s, v, "voids"), id, &out);
+    // A solid whose shells cannot be read gives its faces no solid: they are traced as any
+    // others, and each face reports what is wrong with it when it is read.
+    std::map<std::int64_t, std::int64_t> faces;
+    try {
+      shell_faces(a, a.ref(s, a.param(s, r, 1, "outer"), "outer"), id, &faces);
+      if (r.type == "BREP_WITH_VOIDS")
+        for (const StepValue& v : a.list(s, a.param(s, r, 2, "voids"), "voids"))
+          shell_faces(a, a.ref(s, v, "voids"), id, &faces);
+    } catch (const InputError&) {
+      continue;
+    }
+    out.insert(faces.begin(), faces.end());
   }
   return out;
 }

@@ -8,7 +8,9 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <numbers>
+#include <sstream>
 #include <string>
 
 #include "ssimarch/io/scene.hpp"
@@ -138,6 +140,21 @@ TEST(SharedBoundary, OnlyFacesOfOneSolidOccurrenceAndOnlyWhenAsked) {
   EXPECT_EQ(rods.face_region(rod1.entity, rod1.placement)->solid(),
             rods.face_region(rod1.entity, rod1.placement)->solid());
   EXPECT_TRUE(rods.face_region(plate.entity, plate.placement)->solid().empty());  // an open shell bounds no solid
+}
+
+// A solid whose shell cannot be read bounds nothing: its faces are read and traced as any others.
+TEST(SharedBoundary, AnUnreadableShellGivesItsFacesNoSolid) {
+  std::ifstream in(kModel);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string t = text.str();
+  const std::size_t at = t.find("CLOSED_SHELL('',(");
+  ASSERT_NE(at, std::string::npos);
+  t.replace(at, 17, "CLOSED_SHELL('',#1,(");  // cfs_faces is no list now
+  const StepModel m(parse_step(t, "solids.step"));
+  ASSERT_EQ(m.faces().size(), 12u);
+  EXPECT_TRUE(m.face_region(m.face(1, "t").entity)->solid().empty());   // the octahedron's shell
+  EXPECT_FALSE(m.face_region(m.face(9, "t").entity)->solid().empty());  // the puck's
 }
 
 // The exact derivative of a rational B-spline edge (the half circles of half_cylinder_nurbs.step,

@@ -82,6 +82,23 @@ TEST(StepUnitConversion, AConversionNeedsOneDeclaredUnit) {
   EXPECT_FALSE(plain.converted_to());
 }
 
+// A malformed unit stops a conversion, naming its instance, but not a reading in the file's numbers.
+TEST(StepUnitConversion, AMalformedUnitStopsOnlyAConversion) {
+  std::string text = file_text(kData / "rod_assembly.step");
+  text.insert(text.find("ENDSEC;", text.find("DATA;")),
+              "#999999=(LENGTH_UNIT()NAMED_UNIT(*)SI_UNIT(.MILLI.,.GRAM.));\n");
+  const StepModel plain(parse_step(text, "gram.step"));
+  EXPECT_EQ(plain.length_unit().metres, 0.0);
+  EXPECT_EQ(plain.faces().size(), 4u);
+  try {
+    StepModel(parse_step(text, "gram.step"), named_length_unit("mm", "unit"));
+    FAIL() << "a malformed unit was converted";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("#999999"));
+    EXPECT_THAT(e.what(), HasSubstr("METRE"));
+  }
+}
+
 void expect_scaled(const Box& a, const Box& b, double s, const std::string& what) {
   const double tol = 1e-13 * s * std::max({1.0, a.x.width(), a.y.width(), a.z.width()});
   EXPECT_NEAR(b.x.lo, s * a.x.lo, tol) << what;
@@ -170,7 +187,8 @@ TEST(StepUnitConversion, EverySurfaceKindIsScaled) {
   const double s = 1 / 25.4;
   for (std::int64_t id : {11, 21, 31, 40, 50, 67, 75, 84, 90, 91, 92}) {
     const Surface a = mm.surface(id), b = in.surface(id);
-    const std::string what = "#" + std::to_string(id);
+    std::string what = "#";
+    what += std::to_string(id);  // appended, not "#" + ...: g++ 12 warns (-Wstringop-overflow) on the sum
     expect_scaled(a.box(), b.box(), s, what);
     // The same fractions of the parameter domain are the same points, scaled.
     const ParamDomain &da = a.domain(), &db = b.domain();
