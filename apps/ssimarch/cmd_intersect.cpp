@@ -95,7 +95,9 @@ void add_intersect_command(CLI::App& app, Commands& commands) {
   cmd->footer(
       "Every face of set A is intersected with every face of set B whose box its box meets (sweep and prune: "
       "pairs whose boxes are apart are never traced); each face is trimmed to its loops (docs/cad.md, \"Part "
-      "against part\"). A and B are two STEP files, or one file (B left out, or the same file) with two face sets: "
+      "against part\"). Two faces of one solid meet along the edges and at the vertices they share: answered "
+      "from the model's topology, and left out when they share none (--solid-topology false traces them). A and B are "
+      "two STEP files, or one file (B left out, or the same file) with two face sets: "
       "then a pair of faces in both sets is traced once, a face never with itself. One intersection per pair, named "
       "faceI-faceJ (one model) or aI-bJ (two), faces numbered as `ssimarch faces` lists them, placed in their "
       "assemblies. Output as for `ssimarch trace` (JSON by default, docs/output-format.md; --format csv, obj, svg, "
