@@ -14,8 +14,6 @@ namespace ssimarch {
 
 namespace {
 
-Vec3 edge_derivative(const FaceRegion& r, int i, double s) { return r.boundary_derivative(i, s); }
-
 // Arc length over [a, b]: 8-point Gauss-Legendre on the speed, exact to rounding on a piece no
 // longer than the chord bound that crosses no break of the edge (pieces end at the breaks).
 double edge_length(const FaceRegion& r, int i, double a, double b) {
@@ -27,7 +25,7 @@ double edge_length(const FaceRegion& r, int i, double a, double b) {
   double sum = 0;
   for (std::size_t k = 0; k < kNodes.size(); ++k)
     sum += kWeights[k] *
-           (edge_derivative(r, i, m - h * kNodes[k]).norm() + edge_derivative(r, i, m + h * kNodes[k]).norm());
+           (r.boundary_derivative(i, m - h * kNodes[k]).norm() + r.boundary_derivative(i, m + h * kNodes[k]).norm());
   return sum * h;
 }
 
@@ -109,7 +107,7 @@ std::optional<TracedCurve> edge_curve(const Problem& problem, const FaceRegion& 
     const Vec3 X = face.boundary_point(i, params[k]);
     const auto x = unknowns_at(problem, X, c.points.empty() ? nullptr : &c.points.back().x);
     if (!x) return std::nullopt;
-    c.points.push_back({*x, X, edge_derivative(face, i, params[k]).normalized()});
+    c.points.push_back({*x, X, face.boundary_derivative(i, params[k]).normalized()});
     if (k > 0) c.segment_lengths.push_back(edge_length(face, i, params[k - 1], params[k]));
     tangent = tangent && normals_sine(problem, *x) <= kSharedEdgeTangentSine;
   }
