@@ -259,13 +259,8 @@ PyTrace intersect(const std::string& a_path, const py::object& b_path, const std
   const StepModel& b_model = same ? ma : *mb;
   const StepFaceSet sa{std::filesystem::absolute(a_path), &ma, step_face_list(a_faces, ma, "a_faces", 1)};
   const StepFaceSet sb{std::filesystem::absolute(b), &b_model, step_face_list(b_faces, b_model, "b_faces", 1)};
-  // solid_topology=False traces faces of one solid; they are otherwise culled here when apart.
-  bool topology = true;
-  if (overrides.contains("solid_topology")) {
-    const py::object v = overrides["solid_topology"];
-    topology =
-        py::isinstance<py::str>(v) ? v.cast<std::string>() != "false" : !py::isinstance<py::bool_>(v) || v.cast<bool>();
-  }
+  // solid_topology=False traces faces of one solid; they are otherwise left out here when apart.
+  const bool topology = requested_options(request_of(py::none(), overrides).overrides).solid_topology;
   const IntersectScene s = step_intersect_scene(sa, sb, same, topology);
   warn_not_read(s.not_read, "intersect");
   return trace_generated(s.scene, a_path, overrides);

@@ -47,15 +47,6 @@ void print_intersect_summary(const std::vector<IntersectionRun>& runs, const Int
   std::cerr << "\n";
 }
 
-// Whether --solid-topology (the option table's `solid_topology`) leaves faces of one solid to
-// their shared edges, as it does by default.
-bool solid_topology(const TraceOptionFlags& flags) {
-  TraceJobOptions options;
-  for (const OptionOverride& o : trace_overrides(flags))
-    if (o.option->key == "solid_topology") apply_trace_option(*o.option, o.value, Constants{}, o.where, &options);
-  return options.solid_topology;
-}
-
 // Two models whose coordinates mean different lengths are intersected number for number
 // unless converted: said, not refused (a file may declare a unit it was not written in).
 void warn_if_units_differ(const StepModel& a, const StepModel& b) {
@@ -79,7 +70,8 @@ int run_intersect(const IntersectArgs& args) {
   const StepFaceSet a{std::filesystem::absolute(args.a), &ma, step_face_list(args.a_faces, ma, "--a-faces", 1)};
   const StepFaceSet b{std::filesystem::absolute(same ? args.a : args.b), &b_model,
                       step_face_list(args.b_faces, b_model, "--b-faces", 1)};
-  const IntersectScene s = step_intersect_scene(a, b, same, solid_topology(args.out.options));
+  const IntersectScene s =
+      step_intersect_scene(a, b, same, requested_options(trace_overrides(args.out.options)).solid_topology);
   for (const std::string& w : s.not_read) std::cerr << "intersect: not read, left out: " << w << "\n";
   const TraceJobResult job = trace_generated_scene(s.scene, args.a, args.out);
   if (!args.out.quiet) print_intersect_summary(job.runs, s);

@@ -49,6 +49,12 @@ std::vector<IntersectionSpec> select_intersections(const Scene& scene, const Tra
   return selected;
 }
 
+TraceJobOptions requested_options(const std::vector<OptionOverride>& overrides) {
+  TraceJobOptions options;
+  for (const OptionOverride& o : overrides) apply_trace_option(*o.option, o.value, Constants{}, o.where, &options);
+  return options;
+}
+
 namespace {
 
 // The options checked and resolved against the model once, before any work (march/

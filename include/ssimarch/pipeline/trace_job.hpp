@@ -75,6 +75,12 @@ bool run_complete(const IntersectionRun& run);
 /// (where = its `where`), or a scene with nothing to trace.
 std::vector<IntersectionSpec> select_intersections(const Scene& scene, const TraceRequest& request);
 
+/// The options of an intersection that has none of its own (a generated scene's pair, with no
+/// constants) once the overrides are applied: what a caller that builds such a scene must know
+/// before building it (intersect leaves out faces of one solid only under `solid_topology`).
+/// Throws InputError (where = the override's `where`) for a bad value.
+TraceJobOptions requested_options(const std::vector<OptionOverride>& overrides);
+
 /// Traces one intersection and computes its decorations.
 IntersectionRun run_intersection(const Scene& scene, const IntersectionSpec& spec);
 
