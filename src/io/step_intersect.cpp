@@ -51,11 +51,11 @@ ReadFaces read_boxes(const StepFaceSet& set, const char* which, std::vector<std:
   for (int i : set.faces) {
     const StepFace& f = set.model->face(i, which);
     try {
-      out.boxes.push_back(set.model->surface(f.entity, f.placement).box());
+      const Box box = set.model->surface(f.entity, f.placement).box();
       out.topology.push_back(topology_of(*set.model, f));
+      out.boxes.push_back(box);
       out.faces.push_back(i);
     } catch (const InputError& e) {
-      if (out.boxes.size() > out.faces.size()) out.boxes.pop_back();
       not_read->push_back(std::string(which) + " face " + std::to_string(i) + " (#" + std::to_string(f.entity) + ", " +
                           f.surface_type + "): " + e.what());
     }

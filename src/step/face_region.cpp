@@ -26,17 +26,11 @@ struct EdgePiece {
   std::function<Vec3(double)> at;
   double lo = 0, hi = 0;
   double sign = 1;
-  double step = 1e-6;  // finite-difference step of the derivatives (B-splines; relative error ~ step^2)
-  std::function<Vec3(double)> derivative;                   // exact where known, else central differences
+  std::function<Vec3(double)> derivative;                   // d at / ds, exact
   std::vector<double> breaks;                               // a B-spline's distinct knots inside (lo, hi)
   std::int64_t edge = 0;                                    // the EDGE_CURVE instance
   std::array<std::pair<std::int64_t, Vec3>, 2> vertices{};  // its VERTEX_POINTs: id, point
 };
-
-Vec3 derivative_of(const EdgePiece& e, double s) {
-  if (e.derivative) return e.derivative(s);
-  return (e.at(s + e.step) - e.at(s - e.step)) / (2 * e.step);
-}
 
 // The parameter of the nearest point of the piece to p: the nearest of 64 samples, then Newton
 // on f(s) = (c(s) - p) . c'(s) (f' from central differences of f), clamped to the piece.
@@ -52,10 +46,10 @@ double nearest_parameter(const EdgePiece& e, const Vec3& p) {
     }
   }
   const double h = 1e-7 * std::max(1.0, e.hi - e.lo);
-  auto f = [&](double t) { return (e.at(t) - p).dot(derivative_of(e, t)); };
+  auto f = [&](double t) { return (e.at(t) - p).dot(e.derivative(t)); };
   for (int it = 0; it < 60; ++it) {
     const double df = (f(s + h) - f(s - h)) / (2 * h);
-    const Vec3 d = derivative_of(e, s);
+    const Vec3 d = e.derivative(s);
     const double slope = df > 0 ? df : d.squaredNorm();  // Gauss-Newton where Newton's slope is not positive
     if (!(slope > 0)) break;
     const double next = std::clamp(s - f(s) / slope, e.lo, e.hi);
@@ -83,7 +77,7 @@ class StepFaceRegion final : public FaceRegion {
       const double d = (p - c).norm();
       if (d >= nearest) continue;
       nearest = d;
-      const Vec3 inward = (face_sign_ * surface_normal).cross(e.sign * derivative_of(e, s));
+      const Vec3 inward = (face_sign_ * surface_normal).cross(e.sign * e.derivative(s));
       out = {inward.norm() > 0 ? (p - c).dot(inward.normalized()) : d, c};
     }
     return out;
@@ -95,9 +89,7 @@ class StepFaceRegion final : public FaceRegion {
   }
   Vec3 boundary_point(int i, double s) const override { return edges_[static_cast<std::size_t>(i)].at(s); }
   std::vector<double> boundary_breaks(int i) const override { return edges_[static_cast<std::size_t>(i)].breaks; }
-  Vec3 boundary_derivative(int i, double s) const override {
-    return derivative_of(edges_[static_cast<std::size_t>(i)], s);
-  }
+  Vec3 boundary_derivative(int i, double s) const override { return edges_[static_cast<std::size_t>(i)].derivative(s); }
   std::string name() const override { return name_; }
   std::string solid() const override { return solid_; }
   std::int64_t boundary_edge(int i) const override { return edges_[static_cast<std::size_t>(i)].edge; }
@@ -147,10 +139,10 @@ BSplineCurve derivative_curve(const BSplineCurve& h) {
   return d;
 }
 
-// A B-spline edge curve (step/swept_surface.cpp reads it) evaluated in homogeneous
-// coordinates (w x, w y, w z, w) by de Boor; its derivative, (A' - w' C) / w, in *derivative.
-std::function<Vec3(double)> spline_curve(const StepAccess& a, const StepInstance& c, double* lo, double* hi,
-                                         std::function<Vec3(double)>* derivative, std::vector<double>* knots) {
+// A B-spline edge curve (step/swept_surface.cpp reads it) over its whole range, evaluated in
+// homogeneous coordinates (w x, w y, w z, w) by de Boor, its derivative (A' - w' C) / w, and its
+// distinct interior knots as the breaks.
+void spline_edge(const StepAccess& a, const StepInstance& c, EdgePiece* e) {
   const NurbsCurve3 n = step_bspline_curve(a, c);
   BSplineCurve h;
   h.degree = n.degree;
@@ -160,18 +152,17 @@ std::function<Vec3(double)> spline_curve(const StepAccess& a, const StepInstance
     x << n.weights[i] * n.points[i].x(), n.weights[i] * n.points[i].y(), n.weights[i] * n.points[i].z(), n.weights[i];
     h.control_points.push_back(x);
   }
-  *lo = h.start();
-  *hi = h.end();
-  *knots = h.knots;
-  if (h.degree >= 1) {
-    const BSplineCurve dh = derivative_curve(h);
-    *derivative = [h, dh](double t) {
-      const VecX x = h.at(t), dx = dh.at(t);
-      const Vec3 point(x[0] / x[3], x[1] / x[3], x[2] / x[3]);
-      return Vec3((Vec3(dx[0], dx[1], dx[2]) - dx[3] * point) / x[3]);
-    };
-  }
-  return [h](double t) {
+  e->lo = h.start();
+  e->hi = h.end();
+  for (double k : h.knots)
+    if (k > e->lo && k < e->hi && (e->breaks.empty() || k > e->breaks.back())) e->breaks.push_back(k);
+  const BSplineCurve dh = derivative_curve(h);  // the reader's degrees are >= 1
+  e->derivative = [h, dh](double t) {
+    const VecX x = h.at(t), dx = dh.at(t);
+    const Vec3 point(x[0] / x[3], x[1] / x[3], x[2] / x[3]);
+    return Vec3((Vec3(dx[0], dx[1], dx[2]) - dx[3] * point) / x[3]);
+  };
+  e->at = [h](double t) {
     const VecX x = h.at(t);
     return Vec3(x[0] / x[3], x[1] / x[3], x[2] / x[3]);
   };
@@ -223,12 +214,7 @@ EdgePiece edge_piece(const StepAccess& a, const StepInstance& edge, double direc
     return e;
   }
   if (curve.record("B_SPLINE_CURVE_WITH_KNOTS")) {
-    double lo = 0, hi = 0;
-    std::vector<double> knots;
-    e.at = spline_curve(a, curve, &lo, &hi, &e.derivative, &knots);
-    e.step = 1e-6 * (hi - lo);
-    e.lo = lo;
-    e.hi = hi;
+    spline_edge(a, curve, &e);
     if (!closed) {
       e.lo = nearest_parameter(e, from);
       e.hi = nearest_parameter(e, to);
@@ -237,8 +223,7 @@ EdgePiece edge_piece(const StepAccess& a, const StepInstance& edge, double direc
       std::swap(e.lo, e.hi);
       e.sign = -e.sign;
     }
-    for (double k : knots)
-      if (k > e.lo && k < e.hi && (e.breaks.empty() || k > e.breaks.back())) e.breaks.push_back(k);
+    std::erase_if(e.breaks, [&](double k) { return !(k > e.lo && k < e.hi); });
     return e;
   }
   a.fail(curve,
