@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "chord_sampling.hpp"
+#include "ssimarch/core/gauss_legendre.hpp"
 
 namespace ssimarch {
 
@@ -112,8 +113,8 @@ std::vector<Conic> clip_to_slabs(const Conic& c, const std::vector<Slab>& slabs)
 
 double conic_length(const Conic& c) {
   // 8-point Gauss-Legendre on each of n equal sub-intervals, n doubled until two agree.
-  static constexpr double x[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
-  static constexpr double w[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
+  const auto& x = kGaussLegendre8Nodes;
+  const auto& w = kGaussLegendre8Weights;
   auto rule = [&](int n) {
     const double h = (c.range.hi - c.range.lo) / n;
     double sum = 0;

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "ssimarch/core/gauss_legendre.hpp"
+
 namespace ssimarch {
 
 namespace {
@@ -62,8 +64,8 @@ QuinticPiece quintic_hermite(const HermiteEnd& a, const HermiteEnd& b, double h)
 }
 
 double piece_length_3d(const QuinticPiece& piece) {
-  static constexpr double x[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
-  static constexpr double w[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
+  const auto& x = kGaussLegendre8Nodes;
+  const auto& w = kGaussLegendre8Weights;
   double sum = 0;
   for (int i = 0; i < 4; ++i)
     for (double sign : {-1.0, 1.0}) sum += w[i] * piece.derivative(0.5 + 0.5 * sign * x[i]).head<3>().norm();

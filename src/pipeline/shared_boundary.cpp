@@ -8,6 +8,7 @@
 #include <set>
 #include <string>
 
+#include "ssimarch/core/gauss_legendre.hpp"
 #include "ssimarch/problem/closest_point.hpp"
 
 namespace ssimarch {
@@ -17,10 +18,8 @@ namespace {
 // Arc length over [a, b]: 8-point Gauss-Legendre on the speed, exact to rounding on a piece no
 // longer than the chord bound that crosses no break of the edge (pieces end at the breaks).
 double edge_length(const FaceRegion& r, int i, double a, double b) {
-  static constexpr std::array<double, 4> kNodes{0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
-                                                0.9602898564975363};
-  static constexpr std::array<double, 4> kWeights{0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
-                                                  0.1012285362903763};
+  const auto& kNodes = kGaussLegendre8Nodes;
+  const auto& kWeights = kGaussLegendre8Weights;
   const double m = 0.5 * (a + b), h = 0.5 * (b - a);
   double sum = 0;
   for (std::size_t k = 0; k < kNodes.size(); ++k)
