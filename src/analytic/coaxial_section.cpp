@@ -13,8 +13,6 @@ namespace ssimarch {
 
 namespace {
 
-constexpr double kEps = kClosedFormDegeneracy;
-
 double distance_from_axis(const Vec3& p, const RevolutionForm& f) {
   const Vec3 d = p - f.origin;
   return (d - d.dot(f.axis) * f.axis).norm();
@@ -24,16 +22,17 @@ double distance_from_axis(const Vec3& p, const RevolutionForm& f) {
 bool common_axis(RevolutionForm* a, RevolutionForm* b, double scale) {
   if (a->any_axis && b->any_axis) {
     const Vec3 d = b->origin - a->origin;
-    if (d.norm() <= kEps * scale) return false;  // concentric spheres: equal (coincident) or disjoint
+    if (d.norm() <= kClosedFormDegeneracy * scale) return false;  // concentric spheres: equal (coincident) or disjoint
     a->axis = b->axis = d.normalized();
     return true;
   }
   if (a->any_axis) std::swap(a, b);  // b is the sphere (if any)
   if (b->any_axis) {
     b->axis = a->axis;
-    return distance_from_axis(b->origin, *a) <= kEps * scale;
+    return distance_from_axis(b->origin, *a) <= kClosedFormDegeneracy * scale;
   }
-  return a->axis.cross(b->axis).norm() <= kEps && distance_from_axis(b->origin, *a) <= kEps * scale;
+  return a->axis.cross(b->axis).norm() <= kClosedFormDegeneracy &&
+         distance_from_axis(b->origin, *a) <= kClosedFormDegeneracy * scale;
 }
 
 // A meridian r^2 = g(h) = c0 + c1 h + c2 h^2 on the common axis (h in model units from a.origin).
@@ -58,8 +57,8 @@ struct AxialRoot {
 // |grad (r^2 - g_a)|, is within the gap tolerance.
 std::vector<AxialRoot> axial_roots(double q0, double q1, double q2, double scale, const Meridian& a, const Meridian& b,
                                    double gap_tolerance) {
-  if (std::fabs(q2) <= kEps) {
-    if (std::fabs(q1) <= kEps) return {};
+  if (std::fabs(q2) <= kClosedFormDegeneracy) {
+    if (std::fabs(q1) <= kClosedFormDegeneracy) return {};
     return {{-q0 / q1 * scale, false}};
   }
   const double hstar = -q1 / (2 * q2) * scale, f = a.at(hstar) - b.at(hstar);
@@ -87,7 +86,8 @@ std::optional<std::vector<Conic>> coaxial_section(RevolutionForm a, RevolutionFo
   // g_a(h) - g_b(h) = q0 + q1 h + q2 h^2, written in eta = h / scale and normalised.
   double q0 = ma.c0 - mb.c0, q1 = (ma.c1 - mb.c1) * scale, q2 = (ma.c2 - mb.c2) * scale * scale;
   const double m = std::max({std::fabs(q0), std::fabs(q1), std::fabs(q2)});
-  if (m <= kEps * std::max({std::fabs(a.c0), std::fabs(a.c1) * scale, std::fabs(a.c2) * scale * scale, 1e-300}))
+  if (m <= kClosedFormDegeneracy *
+               std::max({std::fabs(a.c0), std::fabs(a.c1) * scale, std::fabs(a.c2) * scale * scale, 1e-300}))
     return std::nullopt;  // the same surface
   q0 /= m;
   q1 /= m;

@@ -13,8 +13,6 @@ namespace ssimarch {
 
 namespace {
 
-constexpr double kTwoPi = 2 * std::numbers::pi;
-
 // Real roots of q2 t^2 + q1 t + q0 (q2 may be 0).
 std::vector<double> roots2(double q2, double q1, double q0) {
   if (q2 == 0) return q1 == 0 ? std::vector<double>{} : std::vector<double>{-q0 / q1};
@@ -76,7 +74,9 @@ std::vector<Interval> merged(std::vector<Interval> in) {
 
 }  // namespace
 
-bool is_whole(const Conic& piece) { return piece.periodic() && piece.range.hi - piece.range.lo >= kTwoPi; }
+bool is_whole(const Conic& piece) {
+  return piece.periodic() && piece.range.hi - piece.range.lo >= (2 * std::numbers::pi);
+}
 
 std::vector<Slab> box_slabs(const std::array<Interval, 3>& box) {
   return {{Vec3::UnitX(), box[0]}, {Vec3::UnitY(), box[1]}, {Vec3::UnitZ(), box[2]}};
@@ -90,20 +90,23 @@ std::vector<Conic> clip_to_slabs(const Conic& c, const std::vector<Slab>& slabs)
   std::vector<double> t;
   for (const Slab& slab : slabs)
     for (double level : {slab.range.lo, slab.range.hi})
-      for (double s : crossings(c, slab.normal, level)) t.push_back(c.periodic() ? s - kTwoPi * std::floor(s / kTwoPi) : s);
+      for (double s : crossings(c, slab.normal, level))
+        t.push_back(c.periodic() ? s - (2 * std::numbers::pi) * std::floor(s / (2 * std::numbers::pi)) : s);
   std::sort(t.begin(), t.end());
   t.erase(std::unique(t.begin(), t.end()), t.end());
   if (c.periodic()) {
-    if (t.empty()) return inside(c.point(0), slabs, slack) ? std::vector<Conic>{with_range(c, 0, kTwoPi)} : std::vector<Conic>{};
-    t.push_back(t.front() + kTwoPi);
+    if (t.empty())
+      return inside(c.point(0), slabs, slack) ? std::vector<Conic>{with_range(c, 0, (2 * std::numbers::pi))}
+                                              : std::vector<Conic>{};
+    t.push_back(t.front() + (2 * std::numbers::pi));
   }
   std::vector<Interval> keep;
   for (std::size_t k = 0; k + 1 < t.size(); ++k)
     if (t[k + 1] > t[k] && inside(c.point(0.5 * (t[k] + t[k + 1])), slabs, slack)) keep.push_back({t[k], t[k + 1]});
   keep = merged(keep);
   // Around a periodic conic the last piece may continue into the first.
-  if (c.periodic() && keep.size() > 1 && keep.back().hi == keep.front().lo + kTwoPi) {
-    keep.front().lo = keep.back().lo - kTwoPi;
+  if (c.periodic() && keep.size() > 1 && keep.back().hi == keep.front().lo + (2 * std::numbers::pi)) {
+    keep.front().lo = keep.back().lo - (2 * std::numbers::pi);
     keep.pop_back();
   }
   std::vector<Conic> out;

@@ -12,8 +12,6 @@ namespace ssimarch {
 
 namespace {
 
-constexpr double kEps = kClosedFormDegeneracy;
-
 // The plane's data in scaled coordinates (s, t) = (world offset along e0, e1) / scale, and how b
 // and c change when the plane moves by h (model units) along its normal: b + h b1, c + 2 h c1 +
 // h^2 c2 (A does not change).
@@ -80,7 +78,7 @@ std::vector<Conic> central(const PlaneConic& pc, const Eigen::Vector2d& lam, con
     if (!cuts) return {};
     // |lam0| >= |lam1|: the semi-axis along w1 is the major one.
     const double major = pc.scale * std::sqrt(-k / lam[1]), minor = pc.scale * std::sqrt(-k / lam[0]);
-    const bool circle = std::fabs(major - minor) <= kEps * major;
+    const bool circle = std::fabs(major - minor) <= kClosedFormDegeneracy * major;
     return {make(circle ? ConicType::kCircle : ConicType::kEllipse, c, w1, w0, major, circle ? major : minor,
                  Contact::kTransversal)};
   }
@@ -102,7 +100,7 @@ std::vector<Conic> parabolic(const PlaneConic& pc, double lam, const Eigen::Matr
   const Eigen::Vector2d beta = R.transpose() * pc.b;  // lam X^2 + 2 b0 X + 2 b1 Y + c = 0
   const double X0 = -beta[0] / lam, k = pc.c - beta[0] * beta[0] / lam;
   const Vec3 w0 = pc.direction(R.col(0)), w1 = pc.direction(R.col(1));
-  if (std::fabs(beta[1]) > kEps) {
+  if (std::fabs(beta[1]) > kClosedFormDegeneracy) {
     const double Y0 = -k / (2 * beta[1]);
     const double opens = (lam * beta[1] > 0) ? -1.0 : 1.0;  // Y - Y0 = -(lam / (2 b1)) (X - X0)^2
     const double focal = pc.scale * std::fabs(beta[1] / (2 * lam));
@@ -146,8 +144,8 @@ std::optional<std::vector<Conic>> plane_section(const Frame& plane, const Eigen:
     std::swap(lam[0], lam[1]);
     R.col(0).swap(R.col(1));
   }
-  if (std::fabs(lam[0]) <= kEps) return std::nullopt;
-  if (std::fabs(lam[1]) > kEps) return central(pc, lam, R);
+  if (std::fabs(lam[0]) <= kClosedFormDegeneracy) return std::nullopt;
+  if (std::fabs(lam[1]) > kClosedFormDegeneracy) return central(pc, lam, R);
   return parabolic(pc, lam[0], R);
 }
 

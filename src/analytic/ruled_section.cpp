@@ -2,6 +2,7 @@
 // loops they bound.
 #include "ssimarch/analytic/ruled_section.hpp"
 
+#include <numbers>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -13,7 +14,6 @@ namespace ssimarch {
 
 namespace {
 
-constexpr double kTwoPi = 2 * M_PI;
 constexpr int kGrid = 96;  // samples per turn for the scales of Delta and a (degree 2: smooth on this grid)
 // |theta - tau| (radians) within which a point is at the crossing tau: the crossing's own sample
 // (ruled_pieces.cpp, add_crossings) maps to tau up to rounding.
@@ -47,7 +47,7 @@ struct DiscriminantJet {
   double value, first, second;
 };
 
-double wrap_angle(double theta) { return theta - kTwoPi * std::floor(theta / kTwoPi); }
+double wrap_angle(double theta) { return theta - (2 * std::numbers::pi) * std::floor(theta / (2 * std::numbers::pi)); }
 
 // A check of the root finding: Delta is >= 0 (to `zero`) along every loop, so every point is
 // real. False (the caller traces instead) if a critical point of Delta was missed.
@@ -85,7 +85,7 @@ std::optional<Rulings> rulings_of(const Surface& surface) {
   return std::nullopt;
 }
 
-double RuledLoop::period() const { return arc ? kTwoPi : kTwoPi * turns; }
+double RuledLoop::period() const { return arc ? (2 * std::numbers::pi) : (2 * std::numbers::pi) * turns; }
 
 Vec3 RuledCurves::double_root_point(double theta) const {
   const auto [a, b, c] = quadratic(theta);
@@ -114,7 +114,7 @@ std::optional<Vec3> crossing_derivative(const RuledCurves& rc, const RuledLoop& 
   const Taylor<1> theta = loop.arc ? 0.5 * (loop.lo + loop.hi) - 0.5 * (loop.hi - loop.lo) * cos(Taylor<1>::variable(0, phi))
                                    : loop.lo + Taylor<1>::variable(0, phi);
   for (double tau : loop.switches) {
-    if (!(std::fabs(std::remainder(theta[0] - tau, kTwoPi)) <= kCrossingParameter)) continue;
+    if (!(std::fabs(std::remainder(theta[0] - tau, (2 * std::numbers::pi))) <= kCrossingParameter)) continue;
     const auto [a2, b2, c2] = rc.quadratic(Taylor<2>::variable(0, tau));
     const double second = 2 * (b2 * b2 - 4.0 * a2 * c2)[2];  // Delta''(tau)
     if (!(second > 0) || theta[1] == 0) return std::nullopt;
@@ -181,13 +181,13 @@ void add_loops(RuledSection* out, std::vector<double> simple, const TrigPolynomi
     return;
   }
   for (std::size_t i = 0; i < simple.size(); ++i) {
-    const double lo = simple[i], hi = i + 1 < simple.size() ? simple[i + 1] : simple[0] + kTwoPi;
+    const double lo = simple[i], hi = i + 1 < simple.size() ? simple[i + 1] : simple[0] + (2 * std::numbers::pi);
     if (!(delta(0.5 * (lo + hi)) > 0)) continue;
     RuledLoop loop;
     loop.lo = lo;
     loop.hi = hi;
     for (double t : switching) {
-      const double u = t < lo ? t + kTwoPi : t;
+      const double u = t < lo ? t + (2 * std::numbers::pi) : t;
       if (u > lo && u < hi) loop.switches.push_back(u);
     }
     out->loops.push_back(loop);
@@ -212,7 +212,7 @@ std::optional<RuledSection> RuledCurves::section() const {
   // Scales: of Delta's terms, and of a (for "a ruling meets Q once": a = 0 somewhere).
   double scale = 0, a_min = std::numeric_limits<double>::infinity(), a_max = 0, c_max = 0;
   for (int k = 0; k < kGrid; ++k) {
-    const double th = kTwoPi * k / kGrid;
+    const double th = (2 * std::numbers::pi) * k / kGrid;
     const double a = qa(th), b = qb(th), c = qc(th);
     scale = std::max(scale, b * b + 4 * std::fabs(a * c));
     a_min = std::min(a_min, std::fabs(a));
@@ -233,7 +233,8 @@ std::optional<RuledSection> RuledCurves::section() const {
   // Critical points of Delta: the sign changes of Delta' (trig_polynomial.hpp).
   std::vector<double> crit = trig_sign_changes(delta1);
   crit.erase(std::unique(crit.begin(), crit.end(), [](double x, double y) { return y - x < 1e-13; }), crit.end());
-  if (crit.size() > 1 && crit.back() - crit.front() > kTwoPi - 1e-13) crit.pop_back();  // one point, both ends
+  if (crit.size() > 1 && crit.back() - crit.front() > (2 * std::numbers::pi) - 1e-13)
+    crit.pop_back();  // one point, both ends
 
   RuledSection out;
   out.scale = scale;
@@ -249,7 +250,7 @@ std::optional<RuledSection> RuledCurves::section() const {
       else out.crossings.push_back(crit[i]);                       // a root of multiplicity >= 4 (tacnode)
     }
     // A simple root between this critical point and the next (Delta is monotone there).
-    const double a = crit[i], b = i + 1 < crit.size() ? crit[i + 1] : crit[0] + kTwoPi;
+    const double a = crit[i], b = i + 1 < crit.size() ? crit[i + 1] : crit[0] + (2 * std::numbers::pi);
     const double da = j.value, db = disc(b);
     // The ends of a loop are where the points' own Delta (b^2 - 4ac of quadratic(), which
     // point() evaluates) vanishes: bisected on it, not on the coefficient form, whose rounding

@@ -2,6 +2,7 @@
 // docs/math/closed_form_quadrics.md, "Along the rulings".
 #include "ssimarch/analytic/trig_polynomial.hpp"
 
+#include <numbers>
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -17,7 +18,6 @@ namespace ssimarch {
 
 namespace {
 
-constexpr double kTwoPi = 2 * M_PI;
 constexpr int kMaxRoots = 2 * TrigPolynomial::kMaxDegree;
 // A root is refined until Newton's step or the bracket is within a few units in the last place.
 constexpr double kRootResolution = 4 * std::numeric_limits<double>::epsilon();
@@ -36,7 +36,7 @@ std::array<Complex, kMaxRoots + 1> exponential_coefficients(const TrigPolynomial
   return F;
 }
 
-double wrap(double theta) { return theta - kTwoPi * std::floor(theta / kTwoPi); }
+double wrap(double theta) { return theta - (2 * std::numbers::pi) * std::floor(theta / (2 * std::numbers::pi)); }
 
 }  // namespace
 
@@ -191,14 +191,14 @@ std::vector<double> trig_sign_changes(const TrigPolynomial& f) {
   std::vector<double> tests;
   const std::size_t m = angles.size();
   for (std::size_t i = 0; i < m; ++i) {
-    const double next = i + 1 < m ? angles[i + 1] : angles[0] + kTwoPi;
+    const double next = i + 1 < m ? angles[i + 1] : angles[0] + (2 * std::numbers::pi);
     if (next - angles[i] > kTrigRootCluster) tests.push_back(0.5 * (angles[i] + next));
   }
   if (tests.size() < 2) return {};  // one cluster: an even number of sign changes in it, or none
   std::sort(tests.begin(), tests.end());
   std::vector<double> roots;
   for (std::size_t i = 0; i < tests.size(); ++i) {
-    const double lo = tests[i], hi = i + 1 < tests.size() ? tests[i + 1] : tests[0] + kTwoPi;
+    const double lo = tests[i], hi = i + 1 < tests.size() ? tests[i + 1] : tests[0] + (2 * std::numbers::pi);
     if ((f(lo) < 0) != (f(hi) < 0)) roots.push_back(wrap(trig_root_in(f, lo, hi)));
   }
   std::sort(roots.begin(), roots.end());

@@ -11,7 +11,7 @@ namespace {
 // points.
 constexpr double kParallelSine = 1e-13;
 
-struct Frame {
+struct SampleFrame {
   bool exists = false;    // the samples for this frame are there
   bool straight = false;  // they are, but tangents parallel / points collinear
   double kappa = kNaN;
@@ -27,8 +27,8 @@ bool finite(const CurveSample& s) { return s.point.allFinite() && s.tangent.allF
 
 // A sample without a tangent (no direction at a tangential point) cannot carry a frame: the
 // frame then counts as missing, and the estimate reports kInsufficientSamples.
-Frame frame_at(std::span<const CurveSample> s, std::size_t k, EstimateCircle kind) {
-  Frame f;
+SampleFrame frame_at(std::span<const CurveSample> s, std::size_t k, EstimateCircle kind) {
+  SampleFrame f;
   const std::size_t lo = kind == EstimateCircle::kThreePoint && k > 0 ? k - 1 : k;
   for (std::size_t i = lo; i <= k + 1 && i < s.size(); ++i)
     if (!finite(s[i])) return f;
@@ -121,9 +121,9 @@ CurveGeometry estimate_from_samples(std::span<const CurveSample> samples, std::s
     g.status = GeometryStatus::kNonFinite;
     return g;
   }
-  Frame now = frame_at(samples, index, circle);
-  Frame before = index >= 1 ? frame_at(samples, index - 1, circle) : Frame{};
-  const Frame& main = now.exists ? now : before;
+  SampleFrame now = frame_at(samples, index, circle);
+  SampleFrame before = index >= 1 ? frame_at(samples, index - 1, circle) : SampleFrame{};
+  const SampleFrame& main = now.exists ? now : before;
   if (!main.exists) {
     g.status = GeometryStatus::kInsufficientSamples;
     return g;

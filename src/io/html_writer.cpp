@@ -150,13 +150,13 @@ void write_viewer_page(std::ostream& out, const nlohmann::json& data, std::strin
   SSIMARCH_EXPECTS(!script.empty(), "write_viewer_page: no viewer script");
   SSIMARCH_EXPECTS(script.find("</script") == std::string_view::npos,
                    "write_viewer_page: the viewer script holds \"</script\" and cannot be inlined");
-  const std::string json = data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  const std::string dumped = data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   // "<\/" is the same JSON string as "</" and cannot close the data's script element.
   std::string text;
-  text.reserve(json.size());
-  for (std::size_t i = 0; i < json.size(); ++i) {
-    text += json[i];
-    if (json[i] == '<' && i + 1 < json.size() && json[i + 1] == '/') text += '\\';
+  text.reserve(dumped.size());
+  for (std::size_t i = 0; i < dumped.size(); ++i) {
+    text += dumped[i];
+    if (dumped[i] == '<' && i + 1 < dumped.size() && dumped[i + 1] == '/') text += '\\';
   }
   const std::string title = data.value("title", std::string("ssimarch"));
   std::string safe_title;

@@ -9,6 +9,7 @@
 
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/core/input_files.hpp"
+#include "ssimarch/core/text_cat.hpp"
 
 namespace ssimarch {
 
@@ -132,11 +133,7 @@ std::string json_kind(const json& j) {
   }
 }
 
-std::string join_names(const std::vector<std::string>& names) {
-  std::string s;
-  for (const auto& x : names) s += (s.empty() ? "" : ", ") + x;
-  return s;
-}
+std::string join_names(const std::vector<std::string>& names) { return internal::join_names(names); }
 
 std::string index_path(const std::string& where, std::size_t i) { return where + "[" + std::to_string(i) + "]"; }
 std::string key_path(const std::string& where, std::string_view key) {

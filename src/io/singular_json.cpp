@@ -1,14 +1,8 @@
 #include "ssimarch/io/singular_json.hpp"
 
-namespace ssimarch {
+#include "ssimarch/io/json_vectors.hpp"
 
-namespace {
-nlohmann::json array_of(const VecX& v) {
-  nlohmann::json a = nlohmann::json::array();
-  for (int i = 0; i < v.size(); ++i) a.push_back(v[i]);
-  return a;
-}
-}  // namespace
+namespace ssimarch {
 
 nlohmann::json singular_points_to_json(const std::vector<SingularPointReport>& points) {
   using nlohmann::json;
@@ -19,14 +13,16 @@ nlohmann::json singular_points_to_json(const std::vector<SingularPointReport>& p
       json terms = json::array();
       for (const auto& t : b.expansion) terms.push_back(json{{"exponent", t.exponent}, {"coefficient", t.coefficient}});
       branches.push_back(json{{"tangent", json::array({b.tangent.x(), b.tangent.y(), b.tangent.z()})},
-                              {"param_tangent", array_of(b.param_tangent)},
-                              {"expansion", {{"coefficient", b.coefficient}, {"exponent", b.exponent},
-                                             {"normal", json::array({b.normal.x(), b.normal.y(), b.normal.z()})},
-                                             {"terms", std::move(terms)}}},
+                              {"param_tangent", vector_json(b.param_tangent)},
+                              {"expansion",
+                               {{"coefficient", b.coefficient},
+                                {"exponent", b.exponent},
+                                {"normal", json::array({b.normal.x(), b.normal.y(), b.normal.z()})},
+                                {"terms", std::move(terms)}}},
                               {"continuation", b.continuation}});
     }
     out.push_back(json{{"xyz", json::array({s.p.x(), s.p.y(), s.p.z()})},
-                       {"params", array_of(s.x)},
+                       {"params", vector_json(s.x)},
                        {"type", to_string(s.type)},
                        {"ak", s.ak},
                        {"multiplicity", s.multiplicity},
@@ -45,22 +41,23 @@ nlohmann::json singular_analysis_to_json(const SingularAnalysis& point) {
     json terms = json::array();
     for (const PuiseuxTerm& t : b.expansion.terms)
       terms.push_back({{"exponent", t.exponent}, {"coefficient", t.coefficient}});
-    branches.push_back({{"tangent", array_of(b.tangent_3d)},
-                        {"param_tangent", array_of(b.param_tangent)},
+    branches.push_back({{"tangent", vector_json(b.tangent_3d)},
+                        {"param_tangent", vector_json(b.param_tangent)},
                         {"expansion",
                          {{"coefficient", b.leading_coefficient},
                           {"exponent", b.leading_exponent},
-                          {"normal", array_of(b.normal_3d)},
+                          {"normal", vector_json(b.normal_3d)},
                           {"terms", terms}}},
                         {"branch", b.branch},
                         {"continuation", b.continuation},
-                        {"exit", b.exit_ok ? array_of(b.exit_point) : json(nullptr)}});
+                        {"exit", b.exit_ok ? vector_json(b.exit_point) : json(nullptr)}});
   }
   json cone = json::array();
   for (const auto& l : kind.tangent_cone)
-    cone.push_back({{"direction", array_of(point.curve.direction_3d(l.direction))}, {"multiplicity", l.multiplicity}});
-  return {{"xyz", array_of(point.location.point)},
-          {"params", array_of(point.location.x)},
+    cone.push_back(
+        {{"direction", vector_json(point.curve.direction_3d(l.direction))}, {"multiplicity", l.multiplicity}});
+  return {{"xyz", vector_json(point.location.point)},
+          {"params", vector_json(point.location.x)},
           {"type", std::string(to_string(kind.type))},
           {"ak", kind.ak},
           {"multiplicity", kind.multiplicity},

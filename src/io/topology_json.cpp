@@ -1,14 +1,11 @@
 #include "ssimarch/io/topology_json.hpp"
 
+#include "ssimarch/io/json_vectors.hpp"
+
 namespace ssimarch {
 
 namespace {
 using nlohmann::json;
-json array_of(const VecX& v) {
-  json a = json::array();
-  for (int i = 0; i < v.size(); ++i) a.push_back(v[i]);
-  return a;
-}
 json id_or_null(int id) { return id >= 0 ? json(id) : json(nullptr); }
 }  // namespace
 
@@ -17,8 +14,11 @@ nlohmann::json curve_network_to_json(const CurveNetwork& net) {
        failures = json::array();
   for (std::size_t i = 0; i < net.vertices.size(); ++i) {
     const NetworkVertex& v = net.vertices[i];
-    vertices.push_back(json{{"id", i}, {"kind", std::string(to_string(v.kind))}, {"type", v.type},
-                            {"xyz", json::array({v.p.x(), v.p.y(), v.p.z()})}, {"params", array_of(v.x)}});
+    vertices.push_back(json{{"id", i},
+                            {"kind", std::string(to_string(v.kind))},
+                            {"type", v.type},
+                            {"xyz", json::array({v.p.x(), v.p.y(), v.p.z()})},
+                            {"params", vector_json(v.x)}});
   }
   for (std::size_t i = 0; i < net.edges.size(); ++i) {
     const NetworkEdge& e = net.edges[i];

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iomanip>
 
+#include "ssimarch/io/json_vectors.hpp"
 #include "ssimarch/io/singular_json.hpp"
 #include "ssimarch/io/topology_json.hpp"
 #include "ssimarch/march/tracer.hpp"
@@ -12,15 +13,10 @@ namespace ssimarch {
 using nlohmann::json;
 
 namespace {
-json vec(const Vec3& v) { return json::array({v.x(), v.y(), v.z()}); }
 template <class Vector>
-json entries(const Vector& v) {
-  json a = json::array();
-  for (Eigen::Index i = 0; i < v.size(); ++i) a.push_back(v[i]);
-  return a;
+json vec(const Vector& v) {
+  return vector_json(v);
 }
-json vec(const VecX& v) { return entries(v); }
-json vec(const UnknownVec& v) { return entries(v); }
 json end_json(Termination t, const std::string& message) {
   return json{{"reason", std::string(to_string(t))}, {"message", message}};
 }

@@ -68,8 +68,7 @@ OtherSide other_side(const Problem& P, const Pole& pole, const UnknownVec& x, co
   }
   const int first = 2 * (1 - pole.surface);
   o.params = refine_closest_parameters(g, p, Vec2(x[first], x[first + 1]));
-  using J2 = Jet<2, 1>;
-  Vec3T<J2> f = g.point(J2::variable(0, o.params[0]), J2::variable(1, o.params[1]));
+  Vec3T<Jet<2, 1>> f = g.point(Jet<2, 1>::variable(0, o.params[0]), Jet<2, 1>::variable(1, o.params[1]));
   const Vec3 q(f.x.value(), f.y.value(), f.z.value());
   const Vec3 n = Vec3(f.x.d(0), f.y.d(0), f.z.d(0)).cross(Vec3(f.x.d(1), f.y.d(1), f.z.d(1)));
   o.normal = n.norm() > 0 ? Vec3(n.normalized()) : Vec3::Zero();

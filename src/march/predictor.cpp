@@ -38,9 +38,9 @@ Prediction predict(const AnyPredictor& p, const Problem& problem, const MarchSta
 }
 
 std::array<long, 2> jet_evaluation_cost(const Problem& problem, int order) {
-  // curve_jet_n: raw_jacobians (residual and point from one call of each surface), then per
+  // curve_jet_start: J, D and the point from one call of each surface (raw_jacobians), then per
   // order k = 2..K one Taylor residual and point; a parametric-implicit pair also linearises
-  // for the rank ratio (problem/curve_jet.hpp, raw_rank_ratio).
+  // for the rank ratio (src/problem/curve_jet_start.cpp, raw_rank_ratio).
   const long K = std::max(order, 1);
   if (problem.kind() == PairKind::kParametricImplicit) return {K + 1, K + 1};
   return {K, K};

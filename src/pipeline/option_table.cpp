@@ -7,17 +7,12 @@
 
 #include "ssimarch/core/contract.hpp"
 #include "ssimarch/core/error.hpp"
+#include "ssimarch/core/text_cat.hpp"
 #include "ssimarch/march/option_ranges.hpp"
 
 namespace ssimarch {
 
 namespace {
-
-std::string join(const std::vector<std::string>& names) {
-  std::string s;
-  for (const auto& x : names) s += (s.empty() ? "" : ", ") + x;
-  return s;
-}
 
 TraceOptionSpec describe(std::string_view key, std::string_view unit, std::string_view default_text, std::string_view help,
                          std::string_view noun = {}) {
@@ -60,7 +55,7 @@ template <class E>
 Row choice_row(TraceOptionSpec spec, std::initializer_list<E> values, E TraceOptions::*field) {
   spec.type = TraceOptionSpec::Type::kChoice;
   for (E v : values) spec.choices.emplace_back(to_string(v));
-  spec.rule = "one of " + join(spec.choices);
+  spec.rule = "one of " + internal::join_names(spec.choices);
   return Row{std::move(spec), {}, {},
              [field](TraceJobOptions* o, std::string_view s) { return parse(s, &(o->trace.*field)); },
              [field](const TraceJobOptions& o) { return std::string(to_string(o.trace.*field)); }, {}};
@@ -102,7 +97,7 @@ Row geometry_row() {
                  GeometryMethod::kStoyanov, GeometryMethod::kEstimate,
                  GeometryMethod::kBarnhillKersey, GeometryMethod::kMixed})
     spec.choices.emplace_back(to_string(m));
-  spec.rule = "one of " + join(spec.choices);
+  spec.rule = "one of " + internal::join_names(spec.choices);
   return Row{std::move(spec), {}, {},
              [](TraceJobOptions* o, std::string_view s) {
                GeometryMethod m;
@@ -238,7 +233,7 @@ const TraceOptionSpec* find_trace_option(std::string_view key) {
 std::string trace_option_keys() {
   std::vector<std::string> keys;
   for (const TraceOptionSpec& s : trace_option_table()) keys.emplace_back(s.key);
-  return join(keys);
+  return internal::join_names(keys);
 }
 
 void apply_trace_option(const TraceOptionSpec& spec, const OptionValue& value, const Constants& constants,
@@ -253,7 +248,8 @@ void apply_trace_option(const TraceOptionSpec& spec, const OptionValue& value, c
   const std::string* name = std::get_if<std::string>(&value);
   if (!name) throw InputError(where, "expected a " + std::string(spec.noun) + " name (" + spec.rule + "), got a number");
   if (!row.set_choice(options, *name))
-    throw InputError(where, "unknown " + std::string(spec.noun) + " \"" + *name + "\" (known: " + join(spec.choices) + ")");
+    throw InputError(where, "unknown " + std::string(spec.noun) + " \"" + *name +
+                                "\" (known: " + internal::join_names(spec.choices) + ")");
 }
 
 void check_trace_options(const TraceJobOptions& options, const std::string& where) {

@@ -1,21 +1,15 @@
 #include "ssimarch/pipeline/scene.hpp"
 
 #include "ssimarch/core/error.hpp"
+#include "ssimarch/core/text_cat.hpp"
 
 namespace ssimarch {
-
-namespace {
-std::string join(const std::vector<std::string>& v) {
-  std::string s;
-  for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
-  return s;
-}
-}  // namespace
 
 const Surface& Scene::surface(const std::string& name) const {
   auto it = surfaces.find(name);
   if (it == surfaces.end())
-    throw InputError(source, "unknown surface \"" + name + "\" (the scene defines: " + join(surface_names) + ")");
+    throw InputError(
+        source, "unknown surface \"" + name + "\" (the scene defines: " + internal::join_names(surface_names) + ")");
   return it->second;
 }
 
@@ -28,7 +22,7 @@ const IntersectionSpec* Scene::intersection(const std::string& name) const {
 std::string Scene::intersection_names() const {
   std::vector<std::string> names;
   for (const auto& s : intersections) names.push_back(s.name);
-  return join(names);
+  return internal::join_names(names);
 }
 
 Problem Scene::problem(const IntersectionSpec& spec) const {

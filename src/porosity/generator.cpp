@@ -8,12 +8,12 @@
 #include <cmath>
 #include <numbers>
 #include <random>
-#include <sstream>
 #include <string>
 
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/core/interrupt.hpp"
 #include "ssimarch/core/progress.hpp"
+#include "ssimarch/core/text_cat.hpp"
 
 #include "spatial_grid.hpp"
 
@@ -50,7 +50,6 @@ double segment_distance(const Vec3& p0, const Vec3& p1, const Vec3& q0,
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 // Roll step lengths, in particle diameters: the first trial step, and the step below which a sphere
 // that still has a descent direction is taken as resting (a thousandth of the contact tolerance's
 // default scale would be invisible in any profile).
@@ -65,25 +64,20 @@ constexpr double kRollMinSlope = 1e-3;
 // Passes between two checks of Ctrl-C in one sphere's roll (each pass costs about a microsecond).
 constexpr int kRollInterruptPasses = 4096;
 
-std::string number(double v) {
-  std::ostringstream o;
-  o << v;
-  return o.str();
-}
-
 // Checks shared by both generators; errors are located by the option's field name.
 void check_bed(double container_radius, double diameter, long count) {
   if (!(container_radius > 0) || !std::isfinite(container_radius))
-    throw InputError("container_radius", "must be a finite number > 0 (got " + number(container_radius) + ")");
+    throw InputError("container_radius", "must be a finite number > 0 (got " + internal::cat(container_radius) + ")");
   if (!(diameter > 0) || !std::isfinite(diameter))
-    throw InputError("diameter", "must be a finite number > 0 (got " + number(diameter) + ")");
+    throw InputError("diameter", "must be a finite number > 0 (got " + internal::cat(diameter) + ")");
   if (count < 0) throw InputError("count", "must be >= 0 (got " + std::to_string(count) + ")");
   // Memory (a particle and its grid entry, about 100 bytes) and time grow linearly; 1e7 particles
   // take about a gigabyte, and a bed of more is beyond what the exact profiles are used for.
   if (count > 10'000'000) throw InputError("count", "must be at most 1e7 (got " + std::to_string(count) + ")");
   if (diameter >= 2 * container_radius)
-    throw InputError("diameter", "the particle diameter " + number(diameter) +
-                                     " must be smaller than the container diameter " + number(2 * container_radius));
+    throw InputError("diameter", "the particle diameter " + internal::cat(diameter) +
+                                     " must be smaller than the container diameter " +
+                                     internal::cat(2 * container_radius));
 }
 
 class Deposition {
@@ -92,10 +86,12 @@ class Deposition {
       : o_(o), dmax_(std::max(o.diameter, o.diameter_max)), grid_(std::max(o.diameter, o.diameter_max)), rng_(o.seed) {
     check_bed(o.container_radius, o.diameter, o.count);
     if (o.diameter_max != 0 && !(o.diameter_max >= o.diameter && std::isfinite(o.diameter_max)))
-      throw InputError("diameter_max", "must be 0 or a finite number >= diameter (got " + number(o.diameter_max) + ")");
+      throw InputError("diameter_max",
+                       "must be 0 or a finite number >= diameter (got " + internal::cat(o.diameter_max) + ")");
     if (o.diameter_max >= 2 * o.container_radius)
-      throw InputError("diameter_max", "the largest diameter " + number(o.diameter_max) +
-                                           " must be smaller than the container diameter " + number(2 * o.container_radius));
+      throw InputError("diameter_max", "the largest diameter " + internal::cat(o.diameter_max) +
+                                           " must be smaller than the container diameter " +
+                                           internal::cat(2 * o.container_radius));
     tol_ = o.contact_tolerance * o.diameter;
   }
 
@@ -106,7 +102,7 @@ class Deposition {
       report_progress("packing", static_cast<double>(n), static_cast<double>(o_.count));
       const double d = o_.diameter_max > o_.diameter ? o_.diameter + (o_.diameter_max - o_.diameter) * U(rng_) : o_.diameter;
       const double a = d / 2, Rw = o_.container_radius - a;
-      const double rr = Rw * std::sqrt(U(rng_)), ph = 2 * kPi * U(rng_);
+      const double rr = Rw * std::sqrt(U(rng_)), ph = 2 * std::numbers::pi * U(rng_);
       Vec3 p(rr * std::cos(ph), rr * std::sin(ph), top_ + 2 * dmax_);
       p.z() = fall(p, a, p.z());
       settle(p, a);
@@ -382,17 +378,18 @@ class SegmentGrid {
 std::vector<Particle> rsa_spherocylinders(const SpherocylinderRsaOptions& o, GeneratorReport* report) {
   check_bed(o.container_radius, o.diameter, o.count);
   if (!(o.length >= 0) || !std::isfinite(o.length))
-    throw InputError("length", "must be a finite number >= 0 (got " + number(o.length) + ")");
+    throw InputError("length", "must be a finite number >= 0 (got " + internal::cat(o.length) + ")");
   if (!(o.height >= 0) || !std::isfinite(o.height))
-    throw InputError("height", "must be a finite number >= 0 (got " + number(o.height) + ")");
+    throw InputError("height", "must be a finite number >= 0 (got " + internal::cat(o.height) + ")");
   if (!(o.target_solid_fraction > 0 && o.target_solid_fraction < 1))
-    throw InputError("target_solid_fraction", "must be in (0, 1) (got " + number(o.target_solid_fraction) + ")");
+    throw InputError("target_solid_fraction", "must be in (0, 1) (got " + internal::cat(o.target_solid_fraction) + ")");
   Particle proto;
   proto.diameter = o.diameter;
   proto.length = o.length;
   double H = o.height;
   if (H <= 0) {
-    H = o.count * proto.volume() / (o.target_solid_fraction * kPi * o.container_radius * o.container_radius);
+    H = o.count * proto.volume() /
+        (o.target_solid_fraction * std::numbers::pi * o.container_radius * o.container_radius);
     H = std::max(H, o.diameter + o.length);
   }
   const double a = o.diameter / 2, h = o.length / 2, Rw = o.container_radius - a;
@@ -409,7 +406,7 @@ std::vector<Particle> rsa_spherocylinders(const SpherocylinderRsaOptions& o, Gen
     Vec3 u(N(rng), N(rng), N(rng));
     if (!(u.norm() > 0)) continue;
     u.normalize();
-    const double rr = Rw * std::sqrt(U(rng)), ph = 2 * kPi * U(rng);
+    const double rr = Rw * std::sqrt(U(rng)), ph = 2 * std::numbers::pi * U(rng);
     const Vec3 c(rr * std::cos(ph), rr * std::sin(ph), H * U(rng));
     const Vec3 e0 = c - h * u, e1 = c + h * u;
     bool ok = std::hypot(e0.x(), e0.y()) <= Rw && std::hypot(e1.x(), e1.y()) <= Rw;

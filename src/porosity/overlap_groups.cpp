@@ -83,8 +83,6 @@ void split_groups(const Particle& p, const std::vector<const Particle*>& nb, std
   }
 }
 
-constexpr int kChunks = 256;
-
 }  // namespace
 
 namespace internal {
@@ -94,7 +92,7 @@ std::vector<OverlapGroup> groups_of(std::span<const Particle> ps, std::span<cons
   auto id = [&](std::size_t k) { return ids.empty() ? static_cast<long>(k) : ids[k]; };
   // The overlap search's hierarchical grid (overlaps.cpp).
   const std::map<int, GridLevel> levels = grid_levels(ps);
-  const int chunks = static_cast<int>(std::min<std::size_t>(kChunks, std::max<std::size_t>(owned, 1)));
+  const int chunks = static_cast<int>(std::min<std::size_t>(kOverlapQueryChunks, std::max<std::size_t>(owned, 1)));
   std::vector<std::vector<OverlapGroup>> found(static_cast<std::size_t>(chunks));
   parallel_chunks(
       chunks, threads,

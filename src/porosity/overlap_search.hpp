@@ -19,6 +19,11 @@
 
 namespace ssimarch::internal {
 
+// Chunks of the queries of the overlap search and of the overlap groups: a fixed count, so the
+// work splits the same way for any thread count (the tally is exact anyway: integer counts and
+// sums, a total order on the worst pair).
+constexpr int kOverlapQueryChunks = 256;
+
 /// Overlapping pairs found so far: count, doubled volume, and the deepest pair (ties: smallest ids).
 struct PairTally {
   long pairs = 0;

@@ -18,14 +18,6 @@
 
 namespace ssimarch {
 
-namespace {
-
-// Chunks of the queries: a fixed count, so the work splits the same way for any thread count
-// (the tally is exact anyway: integer counts and sums, a total order on the worst pair).
-constexpr int kChunks = 256;
-
-}  // namespace
-
 namespace internal {
 
 void PairTally::add(long i, long j, double d, double v) {
@@ -110,7 +102,7 @@ OverlapTallies search_overlaps(std::span<const Particle> ps, std::span<const lon
     level_start.push_back(level_start.back() + L.cells->order().size());
   }
   const std::size_t nq = level_start.back();
-  const int chunks = static_cast<int>(std::min<std::size_t>(kChunks, std::max<std::size_t>(nq, 1)));
+  const int chunks = static_cast<int>(std::min<std::size_t>(kOverlapQueryChunks, std::max<std::size_t>(nq, 1)));
   const PairTally none{0, FixedPointSum(volume_scale)};
   std::vector<OverlapTallies> tally(static_cast<std::size_t>(chunks), OverlapTallies{none, none});
   internal::parallel_chunks(

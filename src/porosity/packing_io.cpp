@@ -20,8 +20,6 @@ namespace ssimarch {
 
 namespace {
 
-constexpr int kMaxReported = 10;
-
 std::string trim(std::string_view s) {
   std::size_t b = 0, e = s.size();
   while (b < e && std::isspace(static_cast<unsigned char>(s[b]))) ++b;
@@ -80,19 +78,20 @@ std::optional<double> parse_number(const std::string& t) {
   return v;
 }
 
-// Collects up to kMaxReported row errors and throws them together.
+// Collects up to kMaxReportedRows row errors and throws them together.
 class Errors {
  public:
   explicit Errors(std::string name) : name_(std::move(name)) {}
   void add(long line, const std::string& what) { add_at(location(line), what); }
   void add(long line, std::size_t column, const std::string& what) { add_at(location(line, column), what); }
   void add_at(const std::string& where, const std::string& what) {
-    if (count_++ < kMaxReported) msg_ += "\n  " + where + ": " + what;
+    if (count_++ < internal::kMaxReportedRows) msg_ += "\n  " + where + ": " + what;
   }
   void raise_if_any() const {
     if (count_ == 0) return;
     std::string m = std::to_string(count_) + " bad row" + (count_ > 1 ? "s" : "") + ":" + msg_;
-    if (count_ > kMaxReported) m += "\n  ... and " + std::to_string(count_ - kMaxReported) + " more";
+    if (count_ > internal::kMaxReportedRows)
+      m += "\n  ... and " + std::to_string(count_ - internal::kMaxReportedRows) + " more";
     throw InputError(name_, m);
   }
   [[noreturn]] void fatal(long line, const std::string& what) const { throw InputError(location(line), what); }

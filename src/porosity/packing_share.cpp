@@ -23,10 +23,9 @@ namespace ssimarch {
 
 namespace {
 
-constexpr int kMaxReported = 10;
 constexpr std::string_view kAtomCountItem = "ITEM: NUMBER OF ATOMS";
 
-std::string_view trim(std::string_view s) {
+std::string_view trim_view(std::string_view s) {
   auto space = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f' || c == '\n'; };
   while (!s.empty() && space(s.front())) s.remove_prefix(1);
   while (!s.empty() && space(s.back())) s.remove_suffix(1);
@@ -34,7 +33,7 @@ std::string_view trim(std::string_view s) {
 }
 
 // Fields of a row: comma-separated (trimmed) or whitespace-separated; into a reused vector.
-void split(std::string_view line, char sep, std::vector<std::string_view>& out) {
+void split_fields(std::string_view line, char sep, std::vector<std::string_view>& out) {
   out.clear();
   if (sep == ' ') {
     std::size_t i = 0;
@@ -48,7 +47,7 @@ void split(std::string_view line, char sep, std::vector<std::string_view>& out) 
   }
   for (std::size_t b = 0;;) {
     const std::size_t e = line.find(sep, b);
-    out.push_back(trim(line.substr(b, e == std::string_view::npos ? std::string_view::npos : e - b)));
+    out.push_back(trim_view(line.substr(b, e == std::string_view::npos ? std::string_view::npos : e - b)));
     if (e == std::string_view::npos) break;
     b = e + 1;
   }
@@ -79,14 +78,14 @@ std::size_t column_of(std::string_view line, char sep, std::size_t k) {
   return pos + 1;
 }
 
-// Row errors of a piece of the file, with file line numbers; up to kMaxReported kept. Pieces
+// Row errors of a piece of the file, with file line numbers; up to internal::kMaxReportedRows kept. Pieces
 // merge in file order (`merge`), so the first rows reported are the file's first bad rows.
 struct RowErrors {
   std::string name;
   std::vector<std::string> lines;
   long count = 0;
   void add(long line, const std::string& what, std::size_t column = 0) {
-    if (count++ >= kMaxReported) return;
+    if (count++ >= internal::kMaxReportedRows) return;
     // Appended piece by piece (GCC 12's -Wrestrict misfires on "literal" + std::string temporaries).
     std::string t;
     t.append("\n  ").append(name).append(":").append(std::to_string(line));
@@ -95,14 +94,15 @@ struct RowErrors {
   }
   void merge(const RowErrors& o) {
     for (const std::string& l : o.lines)
-      if (lines.size() < static_cast<std::size_t>(kMaxReported)) lines.push_back(l);
+      if (lines.size() < static_cast<std::size_t>(internal::kMaxReportedRows)) lines.push_back(l);
     count += o.count;
   }
   std::string message() const {
     if (count == 0) return {};
     std::string m = std::to_string(count) + " bad row" + (count > 1 ? "s" : "") + ":";
     for (const std::string& l : lines) m += l;
-    if (count > kMaxReported) m += "\n  ... and " + std::to_string(count - kMaxReported) + " more";
+    if (count > internal::kMaxReportedRows)
+      m += "\n  ... and " + std::to_string(count - internal::kMaxReportedRows) + " more";
     return m;
   }
 };
@@ -129,7 +129,7 @@ struct Layout {
 
 // The numbers of a well-formed row, read in one sweep without splitting the row into a vector of
 // fields: true when the row has at least L.ncol fields and every wanted field is a number and
-// nothing else, exactly the rows parse_row accepts (fields as split() cuts them, numbers as
+// nothing else, exactly the rows parse_row accepts (fields as split_fields() cuts them, numbers as
 // number() reads them). A bad row goes to parse_row, which says what is wrong.
 bool fast_row(std::string_view line, const Layout& L, double* v) {
   int want[kFastFields];  // value index of field f, -1 if not wanted
@@ -178,13 +178,13 @@ bool fast_row(std::string_view line, const Layout& L, double* v) {
 // to name what is wrong (false, an error recorded) or to read them after all.
 bool slow_row(std::string_view line, const Layout& L, long ln, std::vector<std::string_view>& f, RowErrors& err,
               double* v) {
-  split(L.lammps ? line : trim(line), L.sep, f);
+  split_fields(L.lammps ? line : trim_view(line), L.sep, f);
   if (f.size() < L.ncol) {
     err.add(ln, "expected " + std::to_string(L.ncol) + " fields, found " + std::to_string(f.size()));
     return false;
   }
   for (std::size_t k = L.ncol; k < f.size(); ++k)
-    if (!trim(f[k]).empty()) {
+    if (!trim_view(f[k]).empty()) {
       err.add(ln, internal::more_fields_than_columns(L.ncol, f.size()));
       return false;
     }
@@ -238,9 +238,9 @@ Layout csv_layout(const std::filesystem::path& path, const InputLimits& limits) 
   while (lines.next(line)) {
     ++ln;
     if (ln == 1 && line.substr(0, 3) == "\xEF\xBB\xBF") line.remove_prefix(3);
-    const std::string_view t = trim(line);
+    const std::string_view t = trim_view(line);
     if (t.empty() || t[0] == '#') continue;
-    split(t, ',', header);
+    split_fields(t, ',', header);
     break;
   }
   if (header.empty()) throw InputError(name + ":" + std::to_string(ln), "empty file: expected a CSV header (x,y,z,d or x,y,z,ux,uy,uz,d,l)");
@@ -299,27 +299,27 @@ Layout lammps_layout(const std::filesystem::path& path, std::uint64_t at, long a
   L.sep = ' ';
   std::vector<std::string_view> f;
   while (next()) {
-    const std::string_view t = trim(line);
+    const std::string_view t = trim_view(line);
     if (t.rfind(kAtomCountItem, 0) == 0) {
       if (!next()) fatal("missing atom count after 'ITEM: NUMBER OF ATOMS'");
-      const auto v = number(trim(line));
-      if (!v || *v < 0 || *v != std::floor(*v)) fatal("bad atom count '" + std::string(trim(line)) + "'");
+      const auto v = number(trim_view(line));
+      if (!v || *v < 0 || *v != std::floor(*v)) fatal("bad atom count '" + std::string(trim_view(line)) + "'");
       if (*v > static_cast<double>(limits.max_packing_bytes))
-        fatal("atom count " + std::string(trim(line)) + " is more than the file can hold (at most " +
+        fatal("atom count " + std::string(trim_view(line)) + " is more than the file can hold (at most " +
               byte_count_text(limits.max_packing_bytes) + " are read)");
       L.natoms = static_cast<long>(*v);
     } else if (t.rfind("ITEM: BOX BOUNDS", 0) == 0) {
       for (int k = 0; k < 3; ++k) {
         if (!next()) fatal("missing box bounds line");
-        split(trim(line), ' ', f);
+        split_fields(trim_view(line), ' ', f);
         const auto a = f.size() >= 2 ? number(f[0]) : std::nullopt, b = f.size() >= 2 ? number(f[1]) : std::nullopt;
-        if (!a || !b) fatal("bad box bounds '" + std::string(trim(line)) + "'");
+        if (!a || !b) fatal("bad box bounds '" + std::string(trim_view(line)) + "'");
         L.lo[k] = *a;
         L.hi[k] = *b;
       }
       L.box = true;
     } else if (t.rfind("ITEM: ATOMS", 0) == 0) {
-      split(t.substr(11), ' ', f);
+      split_fields(t.substr(11), ' ', f);
       L.ncol = f.size();
       auto find = [&](const std::string& c) {
         for (std::size_t k = 0; k < f.size(); ++k)
@@ -431,9 +431,9 @@ void parse_piece(const std::filesystem::path& path, const Layout& L, const Input
   std::vector<std::string_view> f;
   while (lines.next(line)) {
     ++ln;
-    // Blank and comment lines: trim() only when the first character says the line may be one.
+    // Blank and comment lines: trim_view() only when the first character says the line may be one.
     if (line.empty() || line[0] == '#' || std::string_view(" \t\r\v\f\n").find(line[0]) != std::string_view::npos) {
-      const std::string_view t = trim(line);
+      const std::string_view t = trim_view(line);
       if (t.empty() || (!L.lammps && t[0] == '#')) continue;
     }
     long clump = 0;
@@ -479,7 +479,7 @@ bool starts_lammps(const std::filesystem::path& path, const InputLimits& limits)
   std::string_view line;
   for (bool first = true; lines.next(line); first = false) {
     if (first && line.substr(0, 3) == "\xEF\xBB\xBF") line.remove_prefix(3);
-    if (!trim(line).empty()) return trim(line).rfind("ITEM:", 0) == 0;
+    if (!trim_view(line).empty()) return trim_view(line).rfind("ITEM:", 0) == 0;
   }
   return false;
 }

@@ -13,12 +13,11 @@
 namespace ssimarch {
 
 namespace {
-constexpr double kPi = std::numbers::pi;
 // Coarse signature samples of the kernel formulation. Near r = rho_min (or z = z_min) the contact
 // region is a sliver of width w ~ sqrt(delta) that sampling at spacing D misses when delta < D^2/(8a);
 // the lost integral scales like (D/extent)^4, about 1e-10 relative at 256 samples (1e-6 at 32).
 constexpr int kKernelSamples = 256;
-}
+}  // namespace
 
 double arc_length(const Particle& p, double z, double r, const KernelTolerances& tol, bool sphere_closed_form) {
   if (p.length == 0 && sphere_closed_form) return circle_sphere_arc(p.centre, p.diameter, z, r);
@@ -70,7 +69,7 @@ QuadResult lateral_area(const ParticleShape& s, double r, const BedSlab& slab, d
   bool full = false;
   int n = s.shadow_arcs(r, arcs, full);
   if (full) {
-    arcs[0] = {-kPi, kPi};
+    arcs[0] = {-std::numbers::pi, std::numbers::pi};
     n = 1;
   }
   std::array<double, 8> junction{};
@@ -91,8 +90,8 @@ QuadResult lateral_area(const ParticleShape& s, double r, const BedSlab& slab, d
     br[nb++] = arcs[k].begin;
     for (int j = 0; j < nj + nc; ++j) {
       double t = j < nj ? junction[j] : cuts[j - nj];
-      while (t < arcs[k].begin) t += 2 * kPi;
-      while (t > arcs[k].end) t -= 2 * kPi;
+      while (t < arcs[k].begin) t += 2 * std::numbers::pi;
+      while (t > arcs[k].end) t -= 2 * std::numbers::pi;
       if (t > arcs[k].begin && t < arcs[k].end) br[nb++] = t;
     }
     internal::small_sort(br.data() + 1, nb - 1);
@@ -165,8 +164,8 @@ double slice_area_unclipped(const Particle& p, double z) {
   };
   if (w < 1e-300) {  // vertical axis: one disk
     const double lam = uz * Z;
-    if (std::abs(lam) <= h) return kPi * a * a;
-    return kPi * cap_disk(p.centre.z() + (lam > 0 ? h : -h) * uz);
+    if (std::abs(lam) <= h) return std::numbers::pi * a * a;
+    return std::numbers::pi * cap_disk(p.centre.z() + (lam > 0 ? h : -h) * uz);
   }
   const double sm = (-h - uz * Z) / w, sp = (h - uz * Z) / w;
   double area = 0;

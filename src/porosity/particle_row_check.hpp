@@ -11,6 +11,9 @@
 
 namespace ssimarch::internal {
 
+/// Row errors listed in one message; the others are counted ("... and N more").
+inline constexpr int kMaxReportedRows = 10;
+
 /// Validates one particle read from a row (sc: a spherocylinder row, whose axis it normalises);
 /// returns an empty string when fine, else the reason.
 /// The error of a row with more (non-empty) fields than the header or ATOMS line names (issue 29: a

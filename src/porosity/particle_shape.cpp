@@ -11,8 +11,6 @@ namespace ssimarch {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 // Squared distance from q to the segment [p0, p1] in the plane.
 double dist2_segment(double qx, double qy, double p0x, double p0y, double p1x, double p1y) {
   const double dx = p1x - p0x, dy = p1y - p0y;
@@ -116,7 +114,7 @@ int ParticleShape::shadow_arcs(double r, std::array<Arc, 4>& arcs, bool& full) c
   std::array<double, 8> cand{};
   int n = 0;
   auto add = [&](double t) {
-    if (n < 8) cand[n++] = std::remainder(t, 2 * kPi);
+    if (n < 8) cand[n++] = std::remainder(t, 2 * std::numbers::pi);
   };
   // Outline arcs: circles of radius a around the projected cap centres.
   for (const Vec3* c : {&cp_, &cm_}) {
@@ -154,7 +152,7 @@ int ParticleShape::shadow_arcs(double r, std::array<Arc, 4>& arcs, bool& full) c
   std::array<Arc, 8> raw{};
   int m = 0;
   for (int k = 0; k < n; ++k) {
-    const double lo = cand[k], hi = (k + 1 < n) ? cand[k + 1] : cand[0] + 2 * kPi;
+    const double lo = cand[k], hi = (k + 1 < n) ? cand[k + 1] : cand[0] + 2 * std::numbers::pi;
     if (!(hi > lo) || !inside((lo + hi) / 2)) continue;
     if (m > 0 && raw[m - 1].end == lo) {
       raw[m - 1].end = hi;
@@ -163,11 +161,11 @@ int ParticleShape::shadow_arcs(double r, std::array<Arc, 4>& arcs, bool& full) c
     }
   }
   // Wrap-around merge: last arc ending where the first begins (+ 2 pi).
-  if (m >= 2 && raw[m - 1].end == raw[0].begin + 2 * kPi) {
-    raw[0].begin = raw[m - 1].begin - 2 * kPi;
+  if (m >= 2 && raw[m - 1].end == raw[0].begin + 2 * std::numbers::pi) {
+    raw[0].begin = raw[m - 1].begin - 2 * std::numbers::pi;
     --m;
   }
-  if (m == 1 && raw[0].end - raw[0].begin >= 2 * kPi) {
+  if (m == 1 && raw[0].end - raw[0].begin >= 2 * std::numbers::pi) {
     full = true;
     return 0;
   }
@@ -196,7 +194,7 @@ int ParticleShape::junction_angles(double r, std::array<double, 8>& out) const {
     while (deg > 0 && std::abs(q[deg]) <= 1e-14 * scale) --deg;
     std::array<double, 5> psis{};
     int np = 0;
-    if (deg < 4) psis[np++] = kPi;  // root at t = infinity
+    if (deg < 4) psis[np++] = std::numbers::pi;  // root at t = infinity
     if (deg >= 1) {
       const RealRoots<double> t = real_roots(q, deg, 1e-14);
       for (int k = 0; k < t.count && np < 5; ++k) psis[np++] = 2 * std::atan(t.x[k]);
@@ -217,8 +215,8 @@ int ParticleShape::clip_angles(double r, double z_cut, std::array<double, 8>& ou
       const double cs = (r * r + rho * rho - s2) / (2 * r * rho);
       if (std::abs(cs) <= 1 && n + 2 <= 8) {
         const double phi = std::atan2(c->y(), c->x()), al = std::acos(cs);
-        out[n++] = std::remainder(phi - al, 2 * kPi);
-        out[n++] = std::remainder(phi + al, 2 * kPi);
+        out[n++] = std::remainder(phi - al, 2 * std::numbers::pi);
+        out[n++] = std::remainder(phi + al, 2 * std::numbers::pi);
       }
     }
     if (h_ == 0) break;

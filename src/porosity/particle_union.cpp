@@ -22,7 +22,6 @@ namespace ssimarch {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 // Samples over a whole window where the breakpoints are not closed forms (spherocylinder groups):
 // the density of the kernel formulation's signature search (particle_integrals.cpp).
 constexpr int kOrderSamples = 256;
@@ -46,9 +45,9 @@ std::vector<ParticleShape> shapes_of(const OverlapGroup& g) {
 int trig2_roots(double c0, double c1, double s1, double c2, double s2, std::array<double, 4>& out) {
   double phi = 0, best = -1;
   for (int k = 0; k < 4; ++k) {
-    const double p = k * kPi / 2 + kPi;  // psi' = pi lands on psi = p
+    const double p = k * std::numbers::pi / 2 + std::numbers::pi;  // psi' = pi lands on psi = p
     const double v = std::abs(c0 + c1 * std::cos(p) + s1 * std::sin(p) + c2 * std::cos(2 * p) + s2 * std::sin(2 * p));
-    if (v > best) best = v, phi = k * kPi / 2;
+    if (v > best) best = v, phi = k * std::numbers::pi / 2;
   }
   if (!(best > 0)) return 0;
   const double c1r = c1 * std::cos(phi) + s1 * std::sin(phi), s1r = s1 * std::cos(phi) - c1 * std::sin(phi);
@@ -58,7 +57,7 @@ int trig2_roots(double c0, double c1, double s1, double c2, double s2, std::arra
   const double c[5] = {c0 + c1r + c2r, 2 * s1r + 4 * s2r, 2 * c0 - 6 * c2r, 2 * s1r - 4 * s2r, c0 - c1r + c2r};
   const RealRoots<double> roots = real_roots(c, 4, kRootTolerance);
   for (int k = 0; k < roots.count; ++k)
-    out[static_cast<std::size_t>(k)] = std::remainder(2 * std::atan(roots.x[k]) + phi, 2 * kPi);
+    out[static_cast<std::size_t>(k)] = std::remainder(2 * std::atan(roots.x[k]) + phi, 2 * std::numbers::pi);
   return roots.count;
 }
 
@@ -120,12 +119,12 @@ std::vector<MeetCircle> meeting_circles(const OverlapGroup& g) {
 // Angular window [lo, hi] (hi - lo <= 2 pi) of the circle of radius r that can meet the group's box.
 std::pair<double, double> angular_window(const OverlapGroup& g) {
   const double x0 = g.box_lo.x(), x1 = g.box_hi.x(), y0 = g.box_lo.y(), y1 = g.box_hi.y();
-  if (x0 <= 0 && x1 >= 0 && y0 <= 0 && y1 >= 0) return {-kPi, kPi};
+  if (x0 <= 0 && x1 >= 0 && y0 <= 0 && y1 >= 0) return {-std::numbers::pi, std::numbers::pi};
   const double phi = std::atan2((y0 + y1) / 2, (x0 + x1) / 2);
   double lo = 0, hi = 0;
   for (double x : {x0, x1})
     for (double y : {y0, y1}) {
-      const double d = std::remainder(std::atan2(y, x) - phi, 2 * kPi);
+      const double d = std::remainder(std::atan2(y, x) - phi, 2 * std::numbers::pi);
       lo = std::min(lo, d), hi = std::max(hi, d);
     }
   return {phi + lo, phi + hi};
@@ -135,7 +134,8 @@ std::pair<double, double> angular_window(const OverlapGroup& g) {
 std::vector<double> pieces(std::vector<double> angles, double lo, double hi, bool periodic) {
   std::vector<double> br{lo, hi};
   for (double t : angles) {
-    if (periodic) t = lo + std::fmod(std::fmod(t - lo, 2 * kPi) + 2 * kPi, 2 * kPi);
+    if (periodic)
+      t = lo + std::fmod(std::fmod(t - lo, 2 * std::numbers::pi) + 2 * std::numbers::pi, 2 * std::numbers::pi);
     if (t > lo && t < hi) br.push_back(t);
   }
   std::sort(br.begin(), br.end());
@@ -215,26 +215,26 @@ void circle_arcs(const Particle& p, double z, double r, std::vector<Span>& out) 
     if (s2 < 0) return;
     const double rho = std::hypot(p.centre.x(), p.centre.y());
     if (rho == 0) {
-      if (r * r <= s2) internal::add_arc(out, -kPi, 2 * kPi);
+      if (r * r <= s2) internal::add_arc(out, -std::numbers::pi, 2 * std::numbers::pi);
       return;
     }
     const double cs = (r * r + rho * rho - s2) / (2 * r * rho);
     if (cs >= 1) return;
-    const double al = cs <= -1 ? kPi : std::acos(cs);
+    const double al = cs <= -1 ? std::numbers::pi : std::acos(cs);
     internal::add_arc(out, std::atan2(p.centre.y(), p.centre.x()) - al, 2 * al);
     return;
   }
   const auto res = circle_spherocylinder(p, z, r);
   if (res.count == 0) {
-    if (res.inside_length > 0) internal::add_arc(out, -kPi, 2 * kPi);
+    if (res.inside_length > 0) internal::add_arc(out, -std::numbers::pi, 2 * std::numbers::pi);
     return;
   }
   // Arcs between consecutive crossings, kept where their midpoint is inside (tangencies give empty
   // arcs).
   for (int k = 0; k < res.count; ++k) {
     const double b = res.crossing_angles[static_cast<std::size_t>(k)];
-    const double e =
-        k + 1 < res.count ? res.crossing_angles[static_cast<std::size_t>(k + 1)] : res.crossing_angles[0] + 2 * kPi;
+    const double e = k + 1 < res.count ? res.crossing_angles[static_cast<std::size_t>(k + 1)]
+                                       : res.crossing_angles[0] + 2 * std::numbers::pi;
     if (!(e > b)) continue;
     const double m = (b + e) / 2;
     if (inside_margin(p, Vec3(r * std::cos(m), r * std::sin(m), z)) > 0) internal::add_arc(out, b, e - b);
@@ -297,7 +297,7 @@ double covered_section_area(const OverlapGroup& g, double z, SectionScratch& s, 
   s.disks.push_back(own);
   const double all = internal::union_of_disks_area(s.disks, s.cuts, clip);
   s.disks.assign(1, own);
-  const double mine = clip ? internal::union_of_disks_area(s.disks, s.cuts, clip) : kPi * own.s * own.s;
+  const double mine = clip ? internal::union_of_disks_area(s.disks, s.cuts, clip) : std::numbers::pi * own.s * own.s;
   return std::max(0.0, mine + others - all);
 }
 

@@ -8,11 +8,11 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
-#include <sstream>
 #include <string>
 
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/core/interrupt.hpp"
+#include "ssimarch/core/text_cat.hpp"
 
 #include "parallel.hpp"
 
@@ -20,21 +20,14 @@ namespace ssimarch {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr int kMaxChunks = 256;
-
-std::string number(double v) {
-  std::ostringstream o;
-  o << v;
-  return o.str();
-}
 
 void check_container(const Container& c) {
   if (!(c.radius > 0) || !std::isfinite(c.radius))
-    throw InputError("container.radius", "must be a finite number > 0 (got " + number(c.radius) + ")");
+    throw InputError("container.radius", "must be a finite number > 0 (got " + internal::cat(c.radius) + ")");
   if (!(c.slab.z_max > c.slab.z_min) || !std::isfinite(c.slab.z_min) || !std::isfinite(c.slab.z_max))
     throw InputError("container.slab", "the height range [z_min, z_max] needs finite z_min < z_max (got [" +
-                                           number(c.slab.z_min) + ", " + number(c.slab.z_max) + "])");
+                                           internal::cat(c.slab.z_min) + ", " + internal::cat(c.slab.z_max) + "])");
 }
 
 // The particles that overlap the container, as indices (4 bytes each: the shapes are rebuilt where
@@ -248,10 +241,10 @@ std::pair<std::size_t, std::size_t> index_range(std::span<const double> v, doubl
 void require_sorted(std::span<const double> v, const char* what) {
   for (std::size_t k = 0; k < v.size(); ++k) {
     if (!std::isfinite(v[k]))
-      throw InputError(what, "must be finite (value " + std::to_string(k) + " is " + number(v[k]) + ")");
+      throw InputError(what, "must be finite (value " + std::to_string(k) + " is " + internal::cat(v[k]) + ")");
     if (k > 0 && !(v[k] > v[k - 1]))
-      throw InputError(what, "must be strictly increasing (value " + std::to_string(k) + " is " + number(v[k]) +
-                                 " after " + number(v[k - 1]) + ")");
+      throw InputError(what, "must be strictly increasing (value " + std::to_string(k) + " is " + internal::cat(v[k]) +
+                                 " after " + internal::cat(v[k - 1]) + ")");
   }
 }
 
@@ -259,13 +252,13 @@ void require_sorted(std::span<const double> v, const char* what) {
 double sphere_slab_volume(const Particle& p, const BedSlab& slab) {
   const double a = p.radius();
   const double lo = std::clamp(slab.z_min - p.centre.z(), -a, a), hi = std::clamp(slab.z_max - p.centre.z(), -a, a);
-  auto F = [&](double t) { return kPi * (a * a * t - t * t * t / 3); };
+  auto F = [&](double t) { return std::numbers::pi * (a * a * t - t * t * t / 3); };
   return hi > lo ? F(hi) - F(lo) : 0.0;
 }
 
 }  // namespace
 
-double Container::volume() const { return kPi * radius * radius * height(); }
+double Container::volume() const { return std::numbers::pi * radius * radius * height(); }
 
 std::vector<double> even_radii(double R, int n) {
   std::vector<double> v(n);
@@ -291,7 +284,8 @@ PorosityProfile radial_profile(std::span<const Particle> particles, const Contai
   require_sorted(radii, "radii");
   for (double r : radii)
     if (!(r > 0) || r > c.radius)
-      throw InputError("radii", "must lie in (0, R] = (0, " + number(c.radius) + "] (got " + number(r) + ")");
+      throw InputError("radii",
+                       "must lie in (0, R] = (0, " + internal::cat(c.radius) + "] (got " + internal::cat(r) + ")");
   const Prepared prep = prepare(particles, c, opt.threads);
   const std::size_t m = radii.size();
   // Work proportional to the radii a particle touches: [rho_min, rho_max] located by bisection.
@@ -299,7 +293,7 @@ PorosityProfile radial_profile(std::span<const Particle> particles, const Contai
   const std::vector<long> count = touching(prep.size(), m, opt, [&](std::size_t i) { return range_of(prep.shape(i)); });
   std::vector<double> norm(m), budget(m);
   for (std::size_t j = 0; j < m; ++j) {
-    norm[j] = 2 * kPi * radii[j] * c.height();
+    norm[j] = 2 * std::numbers::pi * radii[j] * c.height();
     budget[j] = 0.5 * opt.tolerance * norm[j] / std::max(1L, count[j]);
   }
   ProfileSums sums = run_chunks(prep, norm, opt, [&](const ParticleShape& s, ProfileSums& cr) {
@@ -324,7 +318,7 @@ PorosityProfile bin_profile(std::span<const Particle> particles, const Container
   check_container(c);
   require_sorted(edges, "bin edges");
   if (edges.size() < 2 || edges.front() < 0 || edges.back() > c.radius)
-    throw InputError("bin edges", "need at least two values within [0, R] = [0, " + number(c.radius) + "]");
+    throw InputError("bin edges", "need at least two values within [0, R] = [0, " + internal::cat(c.radius) + "]");
   const Prepared prep = prepare(particles, c, opt.threads);
   const std::size_t m = edges.size() - 1;
   auto bins_of = [&](const ParticleShape& s) {
@@ -338,7 +332,7 @@ PorosityProfile bin_profile(std::span<const Particle> particles, const Container
   const std::vector<long> count = touching(prep.size(), m, opt, [&](std::size_t i) { return bins_of(prep.shape(i)); });
   std::vector<double> norm(m), budget(m);
   for (std::size_t k = 0; k < m; ++k) {
-    norm[k] = kPi * (edges[k + 1] * edges[k + 1] - edges[k] * edges[k]) * c.height();
+    norm[k] = std::numbers::pi * (edges[k + 1] * edges[k + 1] - edges[k] * edges[k]) * c.height();
     budget[k] = 0.5 * opt.tolerance * norm[k] / std::max(1L, count[k]);
   }
   ProfileSums sums = run_chunks(prep, norm, opt, [&](const ParticleShape& s, ProfileSums& cr) {
@@ -394,7 +388,7 @@ PorosityProfile axial_profile(std::span<const Particle> particles, const Contain
   const std::size_t m = heights.size();
   auto range_of = [&](const ParticleShape& s) { return index_range(heights, s.z_min(), s.z_max()); };
   const std::vector<long> count = touching(prep.size(), m, opt, [&](std::size_t i) { return range_of(prep.shape(i)); });
-  const double area = kPi * c.radius * c.radius;
+  const double area = std::numbers::pi * c.radius * c.radius;
   std::vector<double> norm(m, area), budget(m);
   for (std::size_t j = 0; j < m; ++j) budget[j] = 0.5 * opt.tolerance * area / std::max(1L, count[j]);
   ProfileSums sums = run_chunks(prep, norm, opt, [&](const ParticleShape& s, ProfileSums& cr) {
@@ -420,12 +414,12 @@ PorosityMap porosity_map(std::span<const Particle> particles, const Container& c
   require_sorted(radii, "radii");
   require_sorted(heights, "heights");
   for (double r : radii)
-    if (!(r > 0)) throw InputError("map radii", "must be > 0 (got " + number(r) + ")");
+    if (!(r > 0)) throw InputError("map radii", "must be > 0 (got " + internal::cat(r) + ")");
   const Prepared prep = prepare(particles, c, opt.threads);
   const std::size_t nr = radii.size(), nz = heights.size();
   std::vector<double> norm(nr * nz);
   for (std::size_t iz = 0; iz < nz; ++iz)
-    for (std::size_t ir = 0; ir < nr; ++ir) norm[iz * nr + ir] = 2 * kPi * radii[ir];
+    for (std::size_t ir = 0; ir < nr; ++ir) norm[iz * nr + ir] = 2 * std::numbers::pi * radii[ir];
   ProfileSums sums = run_chunks(prep, norm, opt, [&](const ParticleShape& s, ProfileSums& cr) {
     const auto [zb, ze] = index_range(heights, s.z_min(), s.z_max());
     const auto [rb, re] = index_range(radii, s.rho_min(), s.rho_max());

@@ -14,13 +14,13 @@ namespace {
 // with Q up to kMaxDenominator. core/jet.hpp stops at order 12, so a plain coefficient array here.
 constexpr int kMaxDenominator = 6;
 constexpr int kSeriesOrder = (kLocalOrder + 1) * kMaxDenominator + 2;
-struct Series {
+struct PuiseuxSeries {
   std::array<double, kSeriesOrder + 1> c{};
   double& operator[](int i) { return c[static_cast<std::size_t>(i)]; }
   double operator[](int i) const { return c[static_cast<std::size_t>(i)]; }
 };
-Series operator*(const Series& a, const Series& b) {
-  Series r;
+PuiseuxSeries operator*(const PuiseuxSeries& a, const PuiseuxSeries& b) {
+  PuiseuxSeries r;
   for (int i = 0; i <= kSeriesOrder; ++i)
     if (a[i] != 0.0)
       for (int j = 0; i + j <= kSeriesOrder; ++j) r[i + j] += a[i] * b[j];
@@ -28,7 +28,7 @@ Series operator*(const Series& a, const Series& b) {
 }
 
 // The lowest order of s with a coefficient above tol (or -1).
-int order_of(const Series& s, double tol) {
+int order_of(const PuiseuxSeries& s, double tol) {
   for (int i = 0; i <= kSeriesOrder; ++i)
     if (std::fabs(s[i]) > tol) return i;
   return -1;
@@ -36,8 +36,8 @@ int order_of(const Series& s, double tol) {
 
 // g_k(tau), the coefficient of V^k in H(tau^Q, W(tau) + V) = sum c_ij X^i (W + V)^j, k = 0..K:
 // g_k = sum_(i, j >= k) c_ij binom(j, k) tau^(Q i) W^(j-k) (X = tau^Q is a shift).
-std::array<Series, kLocalOrder + 1> shifted_coefficients(const LocalJet& H, int Q, const Series& W) {
-  std::array<Series, kLocalOrder + 1> wp{}, g{};
+std::array<PuiseuxSeries, kLocalOrder + 1> shifted_coefficients(const LocalJet& H, int Q, const PuiseuxSeries& W) {
+  std::array<PuiseuxSeries, kLocalOrder + 1> wp{}, g{};
   wp[0][0] = 1.0;
   for (std::size_t j = 1; j <= kLocalOrder; ++j) wp[j] = wp[j - 1] * W;
   for (int d = 0; d <= kLocalOrder; ++d)
@@ -47,8 +47,8 @@ std::array<Series, kLocalOrder + 1> shifted_coefficients(const LocalJet& H, int 
       if (c == 0.0 || shift > kSeriesOrder) continue;
       double binom = 1;  // binom(j, k), k = 0..j
       for (int k = 0; k <= j; ++k) {
-        const Series& w = wp[static_cast<std::size_t>(j - k)];
-        Series& out = g[static_cast<std::size_t>(k)];
+        const PuiseuxSeries& w = wp[static_cast<std::size_t>(j - k)];
+        PuiseuxSeries& out = g[static_cast<std::size_t>(k)];
         for (int i = 0; i + shift <= kSeriesOrder; ++i) out[i + shift] += c * binom * w[i];
         binom = binom * (j - k) / (k + 1);
       }
@@ -102,7 +102,7 @@ struct NextTerm {
 
 // The Newton polygon's edges of slope above `top` (lower hull of the points (k, ord g_k) from
 // k = 0), with the real roots of each edge polynomial.
-std::vector<NextTerm> next_terms(const std::array<Series, kLocalOrder + 1>& g, int top, double tol) {
+std::vector<NextTerm> next_terms(const std::array<PuiseuxSeries, kLocalOrder + 1>& g, int top, double tol) {
   std::array<int, kLocalOrder + 1> ord{};
   for (std::size_t k = 0; k <= kLocalOrder; ++k) ord[k] = order_of(g[k], tol);
   std::vector<NextTerm> out;
@@ -138,7 +138,7 @@ std::vector<NextTerm> next_terms(const std::array<Series, kLocalOrder + 1>& g, i
 }
 
 // The value of the partial sum W(tau) at X (tau = X^(1/Q)).
-double value_at(const Series& W, int Q, double X) {
+double value_at(const PuiseuxSeries& W, int Q, double X) {
   double v = 0;
   for (int i = 0; i <= kSeriesOrder; ++i)
     if (W[i] != 0.0) v += W[i] * std::pow(X, static_cast<double>(i) / Q);
@@ -146,8 +146,8 @@ double value_at(const Series& W, int Q, double X) {
 }
 
 // W with tau replaced by tau^m (the denominator Q grows to m Q).
-Series refine_denominator(const Series& W, int m) {
-  Series r;
+PuiseuxSeries refine_denominator(const PuiseuxSeries& W, int m) {
+  PuiseuxSeries r;
   for (int i = 0; i * m <= kSeriesOrder; ++i) r[i * m] = W[i];
   return r;
 }
@@ -173,7 +173,7 @@ PuiseuxExpansion expansion_at_unit_length(const LocalJet& h, const Vec2& d, doub
   const LocalJet H = linear_substitution(h, frame);
   const double tol = 1e-10 * std::max(1e-300, germ_scale(H));
   int Q = 1, top = 1;  // W = o(X): the first exponent exceeds 1
-  Series W;
+  PuiseuxSeries W;
   bool first = true;
   out.complete = false;
   while (true) {

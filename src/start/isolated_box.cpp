@@ -1,5 +1,6 @@
 #include "ssimarch/start/isolated_box.hpp"
 #include "ssimarch/start/interval_forms.hpp"
+#include "ssimarch/start/interval_hessian.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,15 +14,7 @@ namespace ssimarch {
 
 namespace {
 
-using Second = Gradient<IntervalGradient, kMaxSystemDimension>;
 using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxSystemDimension, kMaxSystemDimension>;
-
-// H with its first and second derivatives over the box (nested forward differentiation).
-void second_derivatives(const Problem& P, const IntervalBox& box, Second* h) {
-  Second x[kMaxSystemDimension];
-  for (int i = 0; i < P.dim(); ++i) x[i] = Second(IntervalGradient(box[static_cast<std::size_t>(i)], i), i);
-  P.residual(x, h);
-}
 
 // Q = sigma l.H + c |H|^2 (see the header), over any scalar of H.
 struct Convexifier {
@@ -47,8 +40,8 @@ Convexifier choose(const Problem& P, const VecX& x0) {
   const int n = P.dim(), m = n - 1;
   IntervalBox point;
   for (int i = 0; i < n; ++i) point.emplace_back(x0[i]);
-  Second h[kMaxSystemDimension - 1];
-  second_derivatives(P, point, h);
+  IntervalSecond h[kMaxSystemDimension - 1];
+  interval_second_derivatives(P, point, h);
   Matrix J(m, n);
   std::vector<Matrix> hess(static_cast<std::size_t>(m), Matrix(n, n));
   for (int r = 0; r < m; ++r)
@@ -174,9 +167,9 @@ IsolatedBoxResult decide_isolated_box(const Problem& P, const VecX& x0, const In
   const Convexifier q = choose(P, x0);
   if (!q.ok) return out;
   // Hess Q over the box.
-  Second h[kMaxSystemDimension - 1];
-  second_derivatives(P, box, h);
-  const Second qs = q(h, m);
+  IntervalSecond h[kMaxSystemDimension - 1];
+  interval_second_derivatives(P, box, h);
+  const IntervalSecond qs = q(h, m);
   IntervalNumber H[kMaxSystemDimension][kMaxSystemDimension];
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) H[i][j] = qs.d[static_cast<std::size_t>(i)].d[static_cast<std::size_t>(j)];

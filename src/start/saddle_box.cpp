@@ -4,20 +4,11 @@
 #include <cmath>
 
 #include "ssimarch/start/certified_start_points.hpp"
+#include "ssimarch/start/interval_hessian.hpp"
 
 namespace ssimarch {
 
 namespace {
-
-// H with its first and second derivatives over the box: h[r].d[i].v = dH_r/dx_i,
-// h[r].d[i].d[j] = d2H_r/dx_i dx_j (nested forward differentiation, start/gradient.hpp).
-using Second = Gradient<IntervalGradient, kMaxSystemDimension>;
-
-void second_derivatives(const Problem& P, const IntervalBox& box, Second* h) {
-  Second x[kMaxSystemDimension];
-  for (int i = 0; i < P.dim(); ++i) x[i] = Second(IntervalGradient(box[static_cast<std::size_t>(i)], i), i);
-  P.residual(x, h);
-}
 
 IntervalNumber hessian_determinant(const IntervalNumber& a, const IntervalNumber& b, const IntervalNumber& c) {
   return a * c - b * b;  // [[a, b], [b, c]]
@@ -25,8 +16,8 @@ IntervalNumber hessian_determinant(const IntervalNumber& a, const IntervalNumber
 
 // Two unknowns: the curve is h(u, v) = 0 on the box itself.
 bool saddle_2(const Problem& P, const IntervalBox& box) {
-  Second h[kMaxSystemDimension - 1];
-  second_derivatives(P, box, h);
+  IntervalSecond h[kMaxSystemDimension - 1];
+  interval_second_derivatives(P, box, h);
   const auto& d = h[0].d;
   return hessian_determinant(d[0].d[0], d[0].d[1], d[1].d[1]).hi() < 0;
 }
@@ -45,8 +36,8 @@ int face_sign(const Problem& P, const IntervalBox& box, int a, double at) {
 // Hessian is t_i^T (Hess f - (f_a / g_a) Hess g) t_j with the tangents t_b = e_b - (g_b/g_a) e_a,
 // t_c likewise (implicit differentiation of g(phi) = 0). Equal signs: g has no zero in the box.
 bool saddle_3(const Problem& P, const IntervalBox& box) {
-  Second h[kMaxSystemDimension - 1];
-  second_derivatives(P, box, h);
+  IntervalSecond h[kMaxSystemDimension - 1];
+  interval_second_derivatives(P, box, h);
   const auto& f = h[0].d;
   const auto& g = h[1].d;
   int a = 0;

@@ -145,6 +145,10 @@ std::vector<PlacedFace> placed_faces(const StepAccess& a);
 /// has no bounds.
 std::vector<Vec3> step_boundary_points(const StepAccess& a, const StepInstance& face);
 
+/// The 3D curve of an edge's geometry, looking through SURFACE_CURVE, SEAM_CURVE and
+/// INTERSECTION_CURVE (ISO 10303-42 §4.4.x: their first curve is the 3D one).
+const StepInstance& edge_curve_3d(const StepAccess& a, const StepInstance& curve);
+
 /// A rational B-spline curve in 3D (weights all 1 when polynomial).
 struct NurbsCurve3 {
   int degree = 1;

@@ -65,14 +65,6 @@ std::optional<Conic2> conic(const StepAccess& a, const StepInstance& curve) {
   return Conic2{Frame::from_axis(p.origin, p.axis, p.reference, a.file().where(curve)), ra, rb};
 }
 
-// The 3D curve of an edge's geometry, looking through SURFACE_CURVE / SEAM_CURVE.
-const StepInstance& curve_3d(const StepAccess& a, const StepInstance& curve) {
-  const StepRecord& r = curve.records.front();
-  if (r.type == "SURFACE_CURVE" || r.type == "SEAM_CURVE" || r.type == "INTERSECTION_CURVE")
-    return a.ref(curve, a.param(curve, r, 1, "curve_3d"), "curve_3d");
-  return curve;
-}
-
 void control_points(const StepAccess& a, const StepInstance& curve, std::vector<Vec3>* out) {
   const StepRecord* r = curve.record("B_SPLINE_CURVE_WITH_KNOTS");
   const StepRecord* base = curve.record("B_SPLINE_CURVE");
@@ -94,7 +86,7 @@ void edge_points(const StepAccess& a, const StepInstance& edge, std::vector<Vec3
   const Vec3 start = vertex(a, edge, r, 1, "edge_start"), end = vertex(a, edge, r, 2, "edge_end");
   out->push_back(start);
   out->push_back(end);
-  const StepInstance& curve = curve_3d(a, a.ref(edge, a.param(edge, r, 3, "edge_geometry"), "edge_geometry"));
+  const StepInstance& curve = edge_curve_3d(a, a.ref(edge, a.param(edge, r, 3, "edge_geometry"), "edge_geometry"));
   const bool same_sense = a.boolean(edge, a.param(edge, r, 4, "same_sense"), "same_sense");
   if (const auto c = conic(a, curve)) {
     // The edge runs along the curve's increasing angle from start to end when same_sense.
@@ -110,6 +102,14 @@ void edge_points(const StepAccess& a, const StepInstance& edge, std::vector<Vec3
 }
 
 }  // namespace
+
+const StepInstance& edge_curve_3d(const StepAccess& a, const StepInstance& curve) {
+  const StepRecord& r = curve.records.front();
+  if (curve.records.size() == 1 &&
+      (r.type == "SURFACE_CURVE" || r.type == "SEAM_CURVE" || r.type == "INTERSECTION_CURVE"))
+    return a.ref(curve, a.param(curve, r, 1, "curve_3d"), "curve_3d");
+  return curve;
+}
 
 std::vector<Vec3> step_boundary_points(const StepAccess& a, const StepInstance& face) {
   std::vector<Vec3> pts;

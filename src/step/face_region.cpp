@@ -116,14 +116,6 @@ std::pair<std::int64_t, Vec3> vertex_of(const StepAccess& a, const StepInstance&
   return {v.id, a.point(v, a.param(v, a.record(v, "VERTEX_POINT"), 1, "vertex_geometry"), "vertex_geometry")};
 }
 
-const StepInstance& curve_3d(const StepAccess& a, const StepInstance& curve) {
-  const StepRecord& r = curve.records.front();
-  if (curve.records.size() == 1 &&
-      (r.type == "SURFACE_CURVE" || r.type == "SEAM_CURVE" || r.type == "INTERSECTION_CURVE"))
-    return a.ref(curve, a.param(curve, r, 1, "curve_3d"), "curve_3d");
-  return curve;
-}
-
 // The derivative of a B-spline curve: the degree p - 1 curve of p (P_{i+1} - P_i) / (t_{i+p+1} -
 // t_{i+1}) on the knots without their ends (The NURBS Book §3.3, eq. 3.4); zero for degree 0.
 BSplineCurve derivative_curve(const BSplineCurve& h) {
@@ -174,7 +166,7 @@ EdgePiece edge_piece(const StepAccess& a, const StepInstance& edge, double direc
   const auto start_vertex = vertex_of(a, edge, r, 1, "edge_start"), end_vertex = vertex_of(a, edge, r, 2, "edge_end");
   const Vec3 &start = start_vertex.second, &end = end_vertex.second;
   const bool same_sense = a.boolean(edge, a.param(edge, r, 4, "same_sense"), "same_sense");
-  const StepInstance& curve = curve_3d(a, a.ref(edge, a.param(edge, r, 3, "edge_geometry"), "edge_geometry"));
+  const StepInstance& curve = edge_curve_3d(a, a.ref(edge, a.param(edge, r, 3, "edge_geometry"), "edge_geometry"));
   const StepRecord& cr = curve.records.front();
   EdgePiece e;
   e.edge = edge.id;

@@ -11,8 +11,6 @@
 namespace ssimarch {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 std::string num(double x) {
   std::ostringstream s;
   s.precision(17);
@@ -45,7 +43,7 @@ Box primitive_box(const Box& b) { return inflate(b, kPrimitiveBoxMargin); }
 Sphere::Sphere(const Vec3& center, double radius, const Vec3& axis, const std::optional<Vec3>& reference)
     : frame_(Frame::from_axis(center, axis, reference, "sphere")), r_(radius) {
   require_positive(radius, "sphere", "radius");
-  domain_ = {{0, 2 * kPi}, {-kPi / 2, kPi / 2}, true, false};
+  domain_ = {{0, 2 * std::numbers::pi}, {-std::numbers::pi / 2, std::numbers::pi / 2}, true, false};
   box_ = primitive_box(box_from_center(center, Vec3::Constant(radius)));
 }
 
@@ -54,14 +52,14 @@ Cylinder::Cylinder(const Vec3& point, const Vec3& axis, double radius, Interval 
     : frame_(Frame::from_axis(point, axis, reference, "cylinder")), r_(radius) {
   require_positive(radius, "cylinder", "radius");
   require_interval(range, "cylinder", "range");
-  domain_ = {{0, 2 * kPi}, range, true, false};
+  domain_ = {{0, 2 * std::numbers::pi}, range, true, false};
   box_ = primitive_box(box_union(circle_box(frame_.to_world(0, 0, range.lo), frame_.e2, radius),
                                  circle_box(frame_.to_world(0, 0, range.hi), frame_.e2, radius)));
 }
 
 Cone::Cone(const Vec3& apex, const Vec3& axis, double half_angle, Interval range, const std::optional<Vec3>& reference)
     : frame_(Frame::from_axis(apex, axis, reference, "cone")), alpha_(half_angle) {
-  if (!std::isfinite(half_angle) || !(half_angle > 0) || !(half_angle < kPi / 2))
+  if (!std::isfinite(half_angle) || !(half_angle > 0) || !(half_angle < std::numbers::pi / 2))
     throw InputError("cone", "half_angle must be in (0, pi/2) radians, got " + num(half_angle));
   require_interval(range, "cone", "range");
   tan_ = std::tan(alpha_);
@@ -70,7 +68,7 @@ Cone::Cone(const Vec3& apex, const Vec3& axis, double half_angle, Interval range
   sin2_ = s * s;
   const double L = std::max(std::fabs(range.lo), std::fabs(range.hi));
   scale_ = 1.0 / (2 * L * s);
-  domain_ = {{0, 2 * kPi}, range, true, false};
+  domain_ = {{0, 2 * std::numbers::pi}, range, true, false};
   box_ = primitive_box(box_union(circle_box(frame_.to_world(0, 0, range.lo), frame_.e2, std::fabs(range.lo) * tan_),
                                  circle_box(frame_.to_world(0, 0, range.hi), frame_.e2, std::fabs(range.hi) * tan_)));
 }
@@ -80,7 +78,7 @@ Torus::Torus(const Vec3& center, const Vec3& axis, double major_radius, double m
     : frame_(Frame::from_axis(center, axis, reference, "torus")), R_(major_radius), r_(minor_radius) {
   require_positive(major_radius, "torus", "major_radius");
   require_positive(minor_radius, "torus", "minor_radius");
-  domain_ = {{0, 2 * kPi}, {0, 2 * kPi}, true, true};
+  domain_ = {{0, 2 * std::numbers::pi}, {0, 2 * std::numbers::pi}, true, true};
   Box b = circle_box(center, frame_.e2, R_);
   box_ = primitive_box(inflate(b, 0.0, r_));
 }
@@ -91,7 +89,7 @@ Ellipsoid::Ellipsoid(const Vec3& center, const std::array<double, 3>& radii, con
   for (double r : radii) require_positive(r, "ellipsoid", "every radius");
   for (int k = 0; k < 3; ++k) inv2_[static_cast<std::size_t>(k)] = 1.0 / (radii[static_cast<std::size_t>(k)] * radii[static_cast<std::size_t>(k)]);
   half_min_ = 0.5 * std::min({radii[0], radii[1], radii[2]});
-  domain_ = {{0, 2 * kPi}, {-kPi / 2, kPi / 2}, true, false};
+  domain_ = {{0, 2 * std::numbers::pi}, {-std::numbers::pi / 2, std::numbers::pi / 2}, true, false};
   const Vec3* e[3] = {&frame_.e0, &frame_.e1, &frame_.e2};
   Vec3 h;
   for (int i = 0; i < 3; ++i) {
@@ -153,8 +151,8 @@ Capsule::Capsule(const Vec3& center, const Vec3& axis, double radius, double len
   require_positive(radius, "capsule", "radius");
   if (!std::isfinite(length) || length < 0)
     throw InputError("capsule", "length must be a finite number >= 0, got " + num(length));
-  const double end = half_ + 0.5 * kPi * r_;
-  domain_ = {{0, 2 * kPi}, {-end, end}, true, false};
+  const double end = half_ + 0.5 * std::numbers::pi * r_;
+  domain_ = {{0, 2 * std::numbers::pi}, {-end, end}, true, false};
   box_ = primitive_box(box_union(box_from_center(frame_.to_world(0, 0, -half_), Vec3::Constant(r_)),
                                  box_from_center(frame_.to_world(0, 0, half_), Vec3::Constant(r_))));
 }

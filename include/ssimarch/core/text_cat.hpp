@@ -4,6 +4,7 @@
 
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace ssimarch::internal {
 
@@ -12,6 +13,13 @@ std::string cat(const Parts&... parts) {
   std::ostringstream o;
   (o << ... << parts);
   return o.str();
+}
+
+/// "a, b, c": the names a message lists.
+inline std::string join_names(const std::vector<std::string>& names) {
+  std::string s;
+  for (std::size_t i = 0; i < names.size(); ++i) s += (i ? ", " : "") + names[i];
+  return s;
 }
 
 }  // namespace ssimarch::internal

@@ -64,46 +64,27 @@ struct CurveJet {
 
 namespace internal {
 
-// Unnormalised J_H (the residual functor's own derivative), D and the point, via first-order
-// jets. Fixed-size matrices: a curve jet at every accepted point allocates nothing (issue 12).
+// The part of a curve jet that does not depend on its order (src/problem/curve_jet_start.cpp,
+// compiled once for the three pair kinds: its SVD and LU are most of a jet's compile time, issue
+// 29): J = dH/dx, D = d point/dx, the point, the rank ratio, the unit tangent x'(0) oriented by
+// `hint`, the orientation, and for K >= 2 the LU of [J; alpha_1^T D] every higher order solves with.
 template <int N>
-void raw_jacobians(const Problem& problem, const UnknownVec& x0, Eigen::Matrix<double, N - 1, N>* J,
-                   Eigen::Matrix<double, 3, N>* D, Vec3* point) {
-  using J1 = Jet<N, 1>;
-  // Sized for the largest pair kind (4 unknowns, 3 equations): residual() switches on the
-  // problem's kind at run time, so the compiler cannot see that only N entries are touched.
-  std::array<J1, 4> x;
-  for (int i = 0; i < N; ++i) x[static_cast<std::size_t>(i)] = J1::variable(i, x0[i]);
-  std::array<J1, 3> h;
-  const Vec3T<J1> p = problem.residual_and_point(x.data(), h.data());
-  for (int r = 0; r < N - 1; ++r)
-    for (int c = 0; c < N; ++c) (*J)(r, c) = h[static_cast<std::size_t>(r)].d(c);
-  for (int r = 0; r < 3; ++r) {
-    (*point)[r] = p[r].value();
-    for (int c = 0; c < N; ++c) (*D)(r, c) = p[r].d(c);
-  }
-}
-
-// Problem::rank_ratio at x0 from the raw J_H the jet has already, without evaluating the
-// surfaces again: J_H itself for two parametric surfaces (as linearize builds it), its rows
-// normalised for two implicit ones. The parametric-implicit ratio needs |grad g|, which
-// J_H = grad g^T DF does not hold: there it linearises.
+struct CurveJetStart {
+  CurveJetStatus status = CurveJetStatus::kSingular;
+  Eigen::Matrix<double, N - 1, N> J;
+  Eigen::Matrix<double, 3, N> D;
+  Vec3 point = Vec3::Zero();
+  Eigen::Matrix<double, N, 1> x1 = Eigen::Matrix<double, N, 1>::Zero();
+  Vec3 alpha1 = Vec3::Zero();
+  double rank_ratio = 0;
+  int orientation = 0;
+  Eigen::PartialPivLU<Eigen::Matrix<double, N, N>> lu;
+};
 template <int N>
-double raw_rank_ratio(const Problem& problem, const UnknownVec& x0, const Eigen::Matrix<double, N - 1, N>& J,
-                      const Eigen::JacobiSVD<Eigen::Matrix<double, N - 1, N>>& svd) {
-  switch (problem.kind()) {
-    case PairKind::kParametricParametric: return Problem::rank_ratio(svd.singularValues());
-    case PairKind::kImplicitImplicit: {
-      Eigen::Matrix<double, N - 1, N> normalised = J;
-      for (int r = 0; r < N - 1; ++r)
-        if (const double n = J.row(r).norm(); n > 0) normalised.row(r) /= n;
-      const Eigen::JacobiSVD<Eigen::Matrix<double, N - 1, N>> s(normalised);
-      return Problem::rank_ratio(s.singularValues());
-    }
-    case PairKind::kParametricImplicit: break;
-  }
-  return Problem::rank_ratio(problem.linearize(x0));
-}
+CurveJetStart<N> curve_jet_start(const Problem& problem, const UnknownVec& x0, const Vec3* hint);
+extern template CurveJetStart<2> curve_jet_start<2>(const Problem&, const UnknownVec&, const Vec3*);
+extern template CurveJetStart<3> curve_jet_start<3>(const Problem&, const UnknownVec&, const Vec3*);
+extern template CurveJetStart<4> curve_jet_start<4>(const Problem&, const UnknownVec&, const Vec3*);
 
 // Coefficients k..K of x and alpha (coefficients below k known). Coefficient k of H(x(s)) and
 // of point(x(s)) with c_k = 0 depends only on c_0..c_{k-1}: truncated series of order k give it
@@ -141,41 +122,15 @@ CurveJet<K> curve_jet_n(const Problem& problem, const UnknownVec& x0, const Vec3
   for (auto& c : jet.x) c = UnknownVec::Zero(N);
   for (auto& a : jet.alpha) a = Vec3::Zero();
   jet.x[0] = x0;
-  Eigen::Matrix<double, N - 1, N> J;
-  Eigen::Matrix<double, 3, N> D;
-  raw_jacobians<N>(problem, x0, &J, &D, &jet.alpha[0]);
-  if (!J.allFinite() || !D.allFinite()) {
-    jet.status = CurveJetStatus::kNonFinite;
-    return jet;
-  }
-  const Eigen::JacobiSVD<Eigen::Matrix<double, N - 1, N>> svd(J, Eigen::ComputeFullV);
-  jet.rank_ratio = raw_rank_ratio<N>(problem, x0, J, svd);
-  const Eigen::Matrix<double, N, 1> null = svd.matrixV().col(N - 1);
-  Vec3 speed = D * null;
-  if (jet.rank_ratio <= kCurveJetRankTolerance || speed.norm() == 0) {
-    jet.status = CurveJetStatus::kSingular;
-    return jet;
-  }
-  double sign = (hint && speed.dot(*hint) < 0) ? -1.0 : 1.0;
-  jet.x[1] = null * (sign / speed.norm());
-  jet.alpha[1] = D * jet.x[1];
-  {
-    // The sign of det [J; x'] says whether the tangent runs along the generalised cross product
-    // of the rows of J_H, a field that is continuous along the curve and vanishes only at its
-    // singular points: it changes between consecutive points exactly when a step passed a
-    // crossing of branches (thesis ch. 5 §5.2.1, Fig. 5.3).
-    Eigen::Matrix<double, N, N> M;
-    M.topRows(N - 1) = J;
-    M.row(N - 1) = jet.x[1].transpose();
-    jet.orientation = M.determinant() >= 0 ? 1 : -1;
-  }
-  if constexpr (K >= 2) {
-    Eigen::Matrix<double, N, N> A;
-    A.topRows(N - 1) = J;
-    A.row(N - 1) = jet.alpha[1].transpose() * D;
-    const Eigen::PartialPivLU<Eigen::Matrix<double, N, N>> lu(A);
-    higher_coefficients<N, K, 2>(problem, lu, D, &jet);
-  }
+  const CurveJetStart<N> start = curve_jet_start<N>(problem, x0, hint);
+  jet.alpha[0] = start.point;
+  jet.rank_ratio = start.rank_ratio;
+  jet.status = start.status;
+  if (start.status != CurveJetStatus::kOk) return jet;
+  jet.x[1] = start.x1;
+  jet.alpha[1] = start.alpha1;
+  jet.orientation = start.orientation;
+  if constexpr (K >= 2) higher_coefficients<N, K, 2>(problem, start.lu, start.D, &jet);
   bool finite = true;
   for (int k = 0; k <= K; ++k)
     finite = finite && jet.x[static_cast<std::size_t>(k)].allFinite() && jet.alpha[static_cast<std::size_t>(k)].allFinite();
