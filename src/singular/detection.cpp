@@ -44,24 +44,41 @@ StepSignals step_signals(const Problem& problem, const VecX& a, const VecX& b, c
 
 namespace {
 
+// A start of the hunt and the 3D size of its grid cell.
+struct GridStart {
+  VecX x;
+  double cell = 0;
+};
+
 // Starting unknowns spread over the box B of the unknowns: a grid over the first surface's
 // parameters (the second surface's nearest parameters added for parametric-parametric pairs) or
-// over the 3D box. *cell: the 3D size of a grid cell.
-std::vector<VecX> grid_starts(const Problem& problem, const std::vector<Interval>& B, int n, double* cell) {
-  std::vector<VecX> starts;
+// over the 3D box. A start's cell is the larger image of one grid step at the start itself, at
+// least the image at the middle of the box: a surface's metric varies over its domain (a torus's
+// outer equator is (R + r) / (R - r) times its inner one), and a node attracts the starts of its
+// own cells, not of the middle's.
+std::vector<GridStart> grid_starts(const Problem& problem, const std::vector<Interval>& B, int n) {
+  std::vector<GridStart> starts;
   auto lerp = [&](int k, int i) { return B[static_cast<std::size_t>(k)].lo + B[static_cast<std::size_t>(k)].width() * i / (n - 1); };
   if (problem.kind() == PairKind::kImplicitImplicit) {
     const int m = std::max(3, n / 2);  // n^3 would be wasteful: the local curve reaches far
-    *cell = Vec3(B[0].width(), B[1].width(), B[2].width()).norm() / (m - 1);
+    const double cell = Vec3(B[0].width(), B[1].width(), B[2].width()).norm() / (m - 1);
     for (int i = 0; i < m; ++i)
       for (int j = 0; j < m; ++j)
         for (int k = 0; k < m; ++k) {
           VecX x(3);
           x << B[0].lo + B[0].width() * i / (m - 1), B[1].lo + B[1].width() * j / (m - 1), B[2].lo + B[2].width() * k / (m - 1);
-          starts.push_back(x);
+          starts.push_back({x, cell});
         }
     return starts;
   }
+  // The 3D size of one grid step at (u, v).
+  auto cell_at = [&](double u, double v) {
+    using J = Jet<2, 1>;
+    const Vec3T<J> F = problem.first().point(J::variable(0, u), J::variable(1, v));
+    const Vec3 Fu(F.x.d(0), F.y.d(0), F.z.d(0)), Fv(F.x.d(1), F.y.d(1), F.z.d(1));
+    return std::max(Fu.norm() * B[0].width(), Fv.norm() * B[1].width()) / (n - 1);
+  };
+  const double middle = cell_at(lerp(0, n / 2), lerp(1, n / 2));
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {
       const double u = lerp(0, i), v = lerp(1, j);
@@ -74,13 +91,9 @@ std::vector<VecX> grid_starts(const Problem& problem, const std::vector<Interval
         if (!pq) continue;
         x << u, v, (*pq)[0], (*pq)[1];
       }
-      starts.push_back(x);
+      const double here = cell_at(u, v);
+      starts.push_back({x, std::isfinite(here) ? std::max(here, middle) : middle});
     }
-  // The 3D size of a cell: the largest image of one grid step (from the middle of the box).
-  using J = Jet<2, 1>;
-  const Vec3T<J> F = problem.first().point(J::variable(0, lerp(0, n / 2)), J::variable(1, lerp(1, n / 2)));
-  const Vec3 Fu(F.x.d(0), F.y.d(0), F.z.d(0)), Fv(F.x.d(1), F.y.d(1), F.z.d(1));
-  *cell = std::max(Fu.norm() * B[0].width(), Fv.norm() * B[1].width()) / (n - 1);
   return starts;
 }
 
@@ -137,9 +150,8 @@ std::vector<SingularLocation> hunt_singular_points(const Problem& problem, const
   std::vector<std::pair<double, int>> resolution;  // per found point (known_or_replaced)
   std::vector<Vec3> located;  // every point a location ended at, singular or not
   for (const auto& box : boxes) {
-    double cell = 0;
     const int n = options.regions.empty() ? options.grid : options.region_grid;
-    for (const VecX& x0 : grid_starts(problem, box, n, &cell)) {
+    for (const auto& [x0, cell] : grid_starts(problem, box, n)) {
       if (options.regions.empty() && options.consider && !options.consider(x0)) continue;
       if (options.holds_none) {
         VecX step(static_cast<Eigen::Index>(box.size()));
