@@ -254,7 +254,16 @@ std::vector<HalfBranch> half_branches_at(const Problem& problem, const LocalCurv
   std::vector<HalfBranch> out;
   std::vector<Vec2> points = circle_crossings(curve.h, r, options.samples);
   const bool contact = kind.type == SingularType::kTangentialContact || kind.type == SingularType::kTangentLineCrossing;
-  if (contact) {  // a curve of contact is a double zero of h: no sign change, take its line
+  if (contact) {
+    // A curve of contact is a double zero of h: no sign change, take its line. The sign changes
+    // that rounding makes of that double zero (h ~ 1e-16 on both sides of it) are not half-branches
+    // of their own: without this the parametric form of the tori of bug23163_1 listed a crossing
+    // with three half-branches along one direction of its contact curve.
+    Vec2 tangent;
+    std::erase_if(points, [&](const Vec2& p) {
+      const int line = nearest_line(kind, p, &tangent);
+      return line >= 0 && kind.tangent_cone[static_cast<std::size_t>(line)].multiplicity % 2 == 0;
+    });
     for (const auto& line : kind.tangent_cone)
       if (line.multiplicity % 2 == 0)
         for (double sgn : {1.0, -1.0}) points.push_back(sgn * r * line.direction);
