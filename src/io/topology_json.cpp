@@ -17,7 +17,7 @@ nlohmann::json curve_network_to_json(const CurveNetwork& net) {
     vertices.push_back(json{{"id", i},
                             {"kind", std::string(to_string(v.kind))},
                             {"type", v.type},
-                            {"xyz", json::array({v.p.x(), v.p.y(), v.p.z()})},
+                            {"xyz", vector_json(v.p)},
                             {"params", vector_json(v.x)}});
   }
   for (std::size_t i = 0; i < net.edges.size(); ++i) {

@@ -13,10 +13,6 @@ namespace ssimarch {
 using nlohmann::json;
 
 namespace {
-template <class Vector>
-json vec(const Vector& v) {
-  return vector_json(v);
-}
 json end_json(Termination t, const std::string& message) {
   return json{{"reason", std::string(to_string(t))}, {"message", message}};
 }
@@ -41,7 +37,7 @@ void add_geometry(const CurveGeometry& g, json* point) {
 }
 json bspline_json(const BSplineCurve& b) {
   json cps = json::array();
-  for (const VecX& c : b.control_points) cps.push_back(vec(c));
+  for (const VecX& c : b.control_points) cps.push_back(vector_json(c));
   return json{{"degree", b.degree}, {"periodic", b.periodic}, {"knots", b.knots}, {"control_points", std::move(cps)}};
 }
 // The curve's certified B-spline, its p-curves (named by surface) and the measured bound.
@@ -69,8 +65,8 @@ void add_spline(const CurveSpline& s, const std::array<std::string, 2>& parametr
 // centre + a cos t axes[0] + b sin t axes[1] (circle, ellipse), ... (docs/output-format.md).
 json conic_to_json(const Conic& c) {
   return json{{"type", std::string(to_string(c.type))},
-              {"center", vec(c.center)},
-              {"axes", json::array({vec(c.e0), vec(c.e1)})},
+              {"center", vector_json(c.center)},
+              {"axes", json::array({vector_json(c.e0), vector_json(c.e1)})},
               {"semi_axes", json::array({c.a, c.b})},
               {"parameter_range", json::array({c.range.lo, c.range.hi})},
               {"contact", std::string(to_string(c.contact))}};
@@ -139,7 +135,7 @@ json to_json(const IntersectionRun& run) {
     const TracedCurve& c = run.result.curves[ci];
     json points = json::array();
     for (std::size_t i = 0; i < c.points.size(); ++i) {
-      json p{{"xyz", vec(c.points[i].p)}, {"params", vec(c.points[i].x)}};
+      json p{{"xyz", vector_json(c.points[i].p)}, {"params", vector_json(c.points[i].x)}};
       if (ci < run.geometry.size()) add_geometry(run.geometry[ci][i], &p);
       points.push_back(std::move(p));
     }

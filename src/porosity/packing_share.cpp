@@ -78,7 +78,7 @@ std::size_t column_of(std::string_view line, char sep, std::size_t k) {
   return pos + 1;
 }
 
-// Row errors of a piece of the file, with file line numbers; up to internal::kMaxReportedRows kept. Pieces
+// Row errors of a piece of the file, with file line numbers; up to kMaxReportedRows kept. Pieces
 // merge in file order (`merge`), so the first rows reported are the file's first bad rows.
 struct RowErrors {
   std::string name;

@@ -57,13 +57,14 @@ double raw_rank_ratio(const Problem& problem, const UnknownVec& x0, const Eigen:
 template <int N>
 CurveJetStart<N> curve_jet_start(const Problem& problem, const UnknownVec& x0, const Vec3* hint) {
   CurveJetStart<N> start;
-  raw_jacobians<N>(problem, x0, &start.J, &start.D, &start.point);
-  if (!start.J.allFinite() || !start.D.allFinite()) {
+  Eigen::Matrix<double, N - 1, N> J;
+  raw_jacobians<N>(problem, x0, &J, &start.D, &start.point);
+  if (!J.allFinite() || !start.D.allFinite()) {
     start.status = CurveJetStatus::kNonFinite;
     return start;
   }
-  const Eigen::JacobiSVD<EquationJacobian> svd(EquationJacobian(start.J), Eigen::ComputeFullV);
-  start.rank_ratio = raw_rank_ratio<N>(problem, x0, start.J, svd);
+  const Eigen::JacobiSVD<EquationJacobian> svd(EquationJacobian(J), Eigen::ComputeFullV);
+  start.rank_ratio = raw_rank_ratio<N>(problem, x0, J, svd);
   const Eigen::Matrix<double, N, 1> null = svd.matrixV().col(N - 1);
   const Vec3 speed = start.D * null;
   if (start.rank_ratio <= kCurveJetRankTolerance || speed.norm() == 0) {
@@ -78,11 +79,11 @@ CurveJetStart<N> curve_jet_start(const Problem& problem, const UnknownVec& x0, c
   // points: it changes between consecutive points exactly when a step passed a crossing of
   // branches (thesis ch. 5 §5.2.1, Fig. 5.3).
   Eigen::Matrix<double, N, N> M;
-  M.topRows(N - 1) = start.J;
+  M.topRows(N - 1) = J;
   M.row(N - 1) = start.x1.transpose();
   start.orientation = M.determinant() >= 0 ? 1 : -1;
   Eigen::Matrix<double, N, N> A;
-  A.topRows(N - 1) = start.J;
+  A.topRows(N - 1) = J;
   A.row(N - 1) = start.alpha1.transpose() * start.D;
   start.lu.compute(A);
   start.status = CurveJetStatus::kOk;

@@ -66,12 +66,11 @@ namespace internal {
 
 // The part of a curve jet that does not depend on its order (src/problem/curve_jet_start.cpp,
 // compiled once for the three pair kinds: its SVD and LU are most of a jet's compile time, issue
-// 29): J = dH/dx, D = d point/dx, the point, the rank ratio, the unit tangent x'(0) oriented by
+// 29): D = d point/dx, the point, the rank ratio, the unit tangent x'(0) oriented by
 // `hint`, the orientation, and for K >= 2 the LU of [J; alpha_1^T D] every higher order solves with.
 template <int N>
 struct CurveJetStart {
   CurveJetStatus status = CurveJetStatus::kSingular;
-  Eigen::Matrix<double, N - 1, N> J;
   Eigen::Matrix<double, 3, N> D;
   Vec3 point = Vec3::Zero();
   Eigen::Matrix<double, N, 1> x1 = Eigen::Matrix<double, N, 1>::Zero();
