@@ -10,7 +10,9 @@
 #include <numbers>
 #include <string>
 
+#include "covered_chords.hpp"
 #include "disk_union.hpp"
+#include "meeting_circle.hpp"
 #include "interval_cover.hpp"
 #include "ssimarch/core/error.hpp"
 #include "ssimarch/core/interrupt.hpp"
@@ -25,10 +27,14 @@ namespace {
 // Samples over a whole window where the breakpoints are not closed forms (spherocylinder groups):
 // the density of the kernel formulation's signature search (particle_integrals.cpp).
 constexpr int kOrderSamples = 256;
-// Relative size below which a trigonometric polynomial's value counts as a double root.
-constexpr double kRootTolerance = 1e-12;
-
+using internal::meet_angles;
+using internal::meet_point;
+using internal::MeetCircle;
+using internal::meeting_circles;
+using internal::planar_radius2;
 using internal::Span;
+using internal::trig2_roots;
+using internal::TrigRoot;
 
 // The members of a group: the particle first, then the earlier ones.
 std::vector<ParticleShape> shapes_of(const OverlapGroup& g) {
@@ -37,110 +43,6 @@ std::vector<ParticleShape> shapes_of(const OverlapGroup& g) {
   s.emplace_back(g.particle);
   for (const Particle& p : g.earlier) s.emplace_back(p);
   return s;
-}
-
-// Real roots psi in (-pi, pi] of c0 + c1 cos psi + s1 sin psi + c2 cos 2psi + s2 sin 2psi, through
-// t = tan(psi'/2) after turning psi' = psi - phi so that psi' = pi (t = infinity) falls where the
-// polynomial is largest in size, never on a root.
-int trig2_roots(double c0, double c1, double s1, double c2, double s2, std::array<double, 4>& out) {
-  double phi = 0, best = -1;
-  for (int k = 0; k < 4; ++k) {
-    const double p = k * std::numbers::pi / 2 + std::numbers::pi;  // psi' = pi lands on psi = p
-    const double v = std::abs(c0 + c1 * std::cos(p) + s1 * std::sin(p) + c2 * std::cos(2 * p) + s2 * std::sin(2 * p));
-    if (v > best) best = v, phi = k * std::numbers::pi / 2;
-  }
-  if (!(best > 0)) return 0;
-  const double c1r = c1 * std::cos(phi) + s1 * std::sin(phi), s1r = s1 * std::cos(phi) - c1 * std::sin(phi);
-  const double c2r = c2 * std::cos(2 * phi) + s2 * std::sin(2 * phi),
-               s2r = s2 * std::cos(2 * phi) - c2 * std::sin(2 * phi);
-  // (1 + t^2)^2 times each term (cos = (1 - t^2)/(1 + t^2), sin = 2t/(1 + t^2)).
-  const double c[5] = {c0 + c1r + c2r, 2 * s1r + 4 * s2r, 2 * c0 - 6 * c2r, 2 * s1r - 4 * s2r, c0 - c1r + c2r};
-  const RealRoots<double> roots = real_roots(c, 4, kRootTolerance);
-  for (int k = 0; k < roots.count; ++k)
-    out[static_cast<std::size_t>(k)] = std::remainder(2 * std::atan(roots.x[k]) + phi, 2 * std::numbers::pi);
-  return roots.count;
-}
-
-// The circle where the surfaces of two balls meet: centre c, radius rho, orthonormal e1, e2 in its
-// plane. False when they do not meet in a circle.
-struct MeetCircle {
-  Vec3 c, e1, e2;
-  double rho = 0;
-};
-
-bool meet_circle(const Particle& p, const Particle& q, MeetCircle& m) {
-  const Vec3 d = q.centre - p.centre;
-  const double D = d.norm(), a = p.radius(), b = q.radius();
-  if (!(D > 0) || D >= a + b || D <= std::abs(a - b)) return false;
-  const Vec3 n = d / D;
-  const double t = (D * D + a * a - b * b) / (2 * D);
-  m.rho = std::sqrt(std::max(0.0, (a - t) * (a + t)));
-  m.c = p.centre + t * n;
-  m.e1 = n.unitOrthogonal();
-  m.e2 = n.cross(m.e1);
-  return true;
-}
-
-// |xy of the point at psi|^2 = f0 + c1 cos psi + s1 sin psi + c2 cos 2psi + s2 sin 2psi.
-std::array<double, 5> planar_radius2(const MeetCircle& m) {
-  const double Px = m.c.x(), Py = m.c.y();
-  const double Ux = m.rho * m.e1.x(), Uy = m.rho * m.e1.y(), Vx = m.rho * m.e2.x(), Vy = m.rho * m.e2.y();
-  const double UU = Ux * Ux + Uy * Uy, VV = Vx * Vx + Vy * Vy, UV = Ux * Vx + Uy * Vy;
-  return {Px * Px + Py * Py + (UU + VV) / 2, 2 * (Px * Ux + Py * Uy), 2 * (Px * Vx + Py * Vy), (UU - VV) / 2, UV};
-}
-
-Vec3 meet_point(const MeetCircle& m, double psi) { return m.c + m.rho * (std::cos(psi) * m.e1 + std::sin(psi) * m.e2); }
-
-// Angles theta at which the vertical line over the circle of radius r passes through the meeting
-// circle of two member spheres: there two chord ends coincide (a kink of the covered length).
-void meet_angles(const MeetCircle& m, double r, std::vector<double>& out) {
-  const auto f = planar_radius2(m);
-  std::array<double, 4> psi{};
-  const int n = trig2_roots(f[0] - r * r, f[1], f[2], f[3], f[4], psi);
-  for (int k = 0; k < n; ++k) {
-    const Vec3 p = meet_point(m, psi[static_cast<std::size_t>(k)]);
-    out.push_back(std::atan2(p.y(), p.x()));
-  }
-}
-
-// Meeting circles of every pair of member spheres.
-std::vector<MeetCircle> meeting_circles(const OverlapGroup& g) {
-  std::vector<const Particle*> ms{&g.particle};
-  for (const Particle& p : g.earlier) ms.push_back(&p);
-  std::vector<MeetCircle> out;
-  for (std::size_t a = 0; a < ms.size(); ++a)
-    for (std::size_t b = a + 1; b < ms.size(); ++b) {
-      MeetCircle m;
-      if (ms[a]->length == 0 && ms[b]->length == 0 && meet_circle(*ms[a], *ms[b], m)) out.push_back(m);
-    }
-  return out;
-}
-
-// Angular window [lo, hi] (hi - lo <= 2 pi) of the circle of radius r that can meet the group's box.
-std::pair<double, double> angular_window(const OverlapGroup& g) {
-  const double x0 = g.box_lo.x(), x1 = g.box_hi.x(), y0 = g.box_lo.y(), y1 = g.box_hi.y();
-  if (x0 <= 0 && x1 >= 0 && y0 <= 0 && y1 >= 0) return {-std::numbers::pi, std::numbers::pi};
-  const double phi = std::atan2((y0 + y1) / 2, (x0 + x1) / 2);
-  double lo = 0, hi = 0;
-  for (double x : {x0, x1})
-    for (double y : {y0, y1}) {
-      const double d = std::remainder(std::atan2(y, x) - phi, 2 * std::numbers::pi);
-      lo = std::min(lo, d), hi = std::max(hi, d);
-    }
-  return {phi + lo, phi + hi};
-}
-
-// Sorted breakpoints inside [lo, hi] (angles shifted by 2 pi into it), ends included.
-std::vector<double> pieces(std::vector<double> angles, double lo, double hi, bool periodic) {
-  std::vector<double> br{lo, hi};
-  for (double t : angles) {
-    if (periodic)
-      t = lo + std::fmod(std::fmod(t - lo, 2 * std::numbers::pi) + 2 * std::numbers::pi, 2 * std::numbers::pi);
-    if (t > lo && t < hi) br.push_back(t);
-  }
-  std::sort(br.begin(), br.end());
-  br.erase(std::unique(br.begin(), br.end()), br.end());
-  return br;
 }
 
 // Order of the members' interval ends (label 2k + end): constant where the covered length is
@@ -283,8 +185,19 @@ double covered_section_area(const OverlapGroup& g, double z, SectionScratch& s, 
     d = {p.centre.x(), p.centre.y(), s2 > 0 ? std::sqrt(s2) : 0.0};
     return s2 > 0;
   };
+  // The covered part lies in the group's box: a disk missing the box holds none of it, one
+  // holding the box all of it.
+  if (R >= 0 && R <= g.rho_min()) return 0.0;
+  if (R >= g.rho_max()) R = -1;
   internal::Disk own;
-  if (!disk(g.particle, own) || R == 0) return 0.0;
+  if (!disk(g.particle, own)) return 0.0;
+  if (g.earlier.size() == 1) {
+    // One lens: the intersection of two disks, inside the clip disk when there is one.
+    internal::Disk other;
+    if (!disk(g.earlier[0], other)) return 0.0;
+    if (R < 0) return disk_disk_area(own.s, other.s, std::hypot(other.x - own.x, other.y - own.y));
+    return internal::intersection_of_three_disks_area(own, other, {0.0, 0.0, R});
+  }
   s.disks.clear();
   for (const Particle& p : g.earlier) {
     internal::Disk d;
@@ -303,8 +216,8 @@ double covered_section_area(const OverlapGroup& g, double z, SectionScratch& s, 
 
 // Heights where the sections' arrangement changes: a member's section appears or vanishes, two
 // sections' circles become tangent (the top and bottom of the circle where two spheres meet).
-// With cylinders of the given radii: a section's circle tangent to a cylinder's, and a meeting
-// circle passing through a cylinder.
+// With cylinders of the given radii (those <= 0 ignored): a section's circle tangent to a
+// cylinder's, and a meeting circle passing through a cylinder.
 std::vector<double> section_heights(const OverlapGroup& g, std::initializer_list<double> cylinders) {
   std::vector<double> zs;
   std::vector<const Particle*> ms{&g.particle};
@@ -314,18 +227,20 @@ std::vector<double> section_heights(const OverlapGroup& g, std::initializer_list
     zs.push_back(p->centre.z() - a), zs.push_back(p->centre.z() + a);
     for (double R : cylinders)
       for (double sr : {std::abs(R - rho), R + rho})
-        if (sr < a) {
+        if (R > 0 && sr < a) {
           const double h = std::sqrt((a - sr) * (a + sr));
           zs.push_back(p->centre.z() - h), zs.push_back(p->centre.z() + h);
         }
   }
-  for (const MeetCircle& m : meeting_circles(g)) {
+  std::vector<MeetCircle> circles;
+  meeting_circles(g, circles);
+  for (const MeetCircle& m : circles) {
     const double nz = m.e1.cross(m.e2).z(), h = m.rho * std::sqrt(std::max(0.0, 1 - nz * nz));
     zs.push_back(m.c.z() - h), zs.push_back(m.c.z() + h);
     for (double R : cylinders)
       if (R > 0) {
         const auto f = planar_radius2(m);
-        std::array<double, 4> psi{};
+        std::array<TrigRoot, 4> psi{};
         const int n = trig2_roots(f[0] - R * R, f[1], f[2], f[3], f[4], psi);
         for (int k = 0; k < n; ++k) zs.push_back(meet_point(m, psi[static_cast<std::size_t>(k)]).z());
       }
@@ -370,6 +285,9 @@ double covered_arc_length(const OverlapGroup& g, double z, double r) {
 QuadResult covered_lateral_area(const OverlapGroup& g, double r, const BedSlab& slab, double abs_tol) {
   if (!(r > 0) || r < g.rho_min() || r > g.rho_max()) return {};
   if (std::max(slab.z_min, g.box_lo.z()) >= std::min(slab.z_max, g.box_hi.z())) return {};
+  const auto [lo, hi] = internal::angular_window(g.box_lo, g.box_hi);
+  // Balls: every breakpoint is a closed form, and so is each piece (covered_chords.hpp).
+  if (g.spheres()) return internal::CoveredBallChords(g, slab).lateral_area(r);
   const std::vector<ParticleShape> ms = shapes_of(g);
   // Breakpoints: shadow ends, cylinder-cap junctions and slab cuts of every member, and the lines
   // through the circles where two member spheres meet.
@@ -391,9 +309,10 @@ QuadResult covered_lateral_area(const OverlapGroup& g, double r, const BedSlab& 
       angles.insert(angles.end(), more.begin(), more.begin() + nm);
     }
   }
-  for (const MeetCircle& c : meeting_circles(g)) meet_angles(c, r, angles);
-  const auto [lo, hi] = angular_window(g);
-  const std::vector<double> br = pieces(std::move(angles), lo, hi, true);
+  std::vector<MeetCircle> circles;
+  meeting_circles(g, circles);
+  for (const MeetCircle& c : circles) meet_angles(c, r, angles);
+  const std::vector<double> br = internal::breakpoints_in(angles, lo, hi, true);
   std::vector<Span> own(1), others;
   std::vector<std::pair<double, int>> ends;
   // Chords of the members on the line over (r, theta), cut by the slab; the covered chord length.
@@ -456,7 +375,9 @@ QuadResult covered_shell_volume(const OverlapGroup& g, double r0, double r1, con
     const double z0 = std::max(g.box_lo.z(), slab.z_min), z1 = std::min(g.box_hi.z(), slab.z_max);
     if (!(z1 > z0)) return {};
     SectionScratch s;
-    const std::vector<double> br = pieces(section_heights(g, {r0, r1}), z0, z1, false);
+    // Only a cylinder passing through the group's box changes the sections' arrangement.
+    const double rc0 = r0 > g.rho_min() ? r0 : -1, rc1 = r1 < g.rho_max() ? r1 : -1;
+    const std::vector<double> br = internal::breakpoints_in(section_heights(g, {rc0, rc1}), z0, z1, false);
     return integrate_pieces(
         br, true, abs_tol,
         [&](double z) {
@@ -524,7 +445,7 @@ QuadResult covered_slice_area(const OverlapGroup& g, double z, double R, double 
       radii.push_back(std::hypot(mx - h * dy / d, my + h * dx / d));
       radii.push_back(std::hypot(mx + h * dy / d, my - h * dx / d));
     }
-  const std::vector<double> br = pieces(std::move(radii), r0, r1, false);
+  const std::vector<double> br = internal::breakpoints_in(radii, r0, r1, false);
   ArcScratch s;
   return integrate_pieces(
       br, false, abs_tol, [&](double r) { return r * covered_angle(g, z, r, s); },

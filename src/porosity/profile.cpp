@@ -14,6 +14,7 @@
 #include "ssimarch/core/interrupt.hpp"
 #include "ssimarch/core/text_cat.hpp"
 
+#include "covered_chords.hpp"
 #include "parallel.hpp"
 
 namespace ssimarch {
@@ -215,19 +216,21 @@ void subtract_covered(const std::vector<OverlapGroup>* groups, std::span<const d
   sums += total;
 }
 
+// Subtracts a covered part's measure q from value j.
+void subtract(ProfileSums& cr, std::size_t j, const QuadResult& q) {
+  cr.solid[j].add(-q.value);
+  cr.error[j].add(q.error);
+  cr.evaluations += q.evaluations;
+  if (q.status != QuadStatus::kConverged) ++cr.unconverged;
+}
+
 // covered(g, budget, cr) of subtract_covered for a profile whose value j of group g is
 // measure(g, j, budget[j]), over the values range_of(g).
 template <class Range, class Measure>
 auto each_value(Range& range_of, Measure&& measure) {
   return [&range_of, measure](const OverlapGroup& g, const std::vector<double>& budget, ProfileSums& cr) {
     const auto [lo, hi] = range_of(g);
-    for (std::size_t j = lo; j < hi; ++j) {
-      const QuadResult q = measure(g, j, budget[j]);
-      cr.solid[j].add(-q.value);
-      cr.error[j].add(q.error);
-      cr.evaluations += q.evaluations;
-      if (q.status != QuadStatus::kConverged) ++cr.unconverged;
-    }
+    for (std::size_t j = lo; j < hi; ++j) subtract(cr, j, measure(g, j, budget[j]));
   };
 }
 
@@ -304,10 +307,17 @@ PorosityProfile radial_profile(std::span<const Particle> particles, const Contai
   PorosityProfile out;
   const auto groups = groups_for(particles, opt);
   auto covering = [&](const OverlapGroup& g) { return index_range(radii, g.rho_min(), g.rho_max()); };
-  subtract_covered(groups.get(), norm, opt, covering,
-                   each_value(covering, [&](const OverlapGroup& g, std::size_t j,
-                                            double tol) { return covered_lateral_area(g, radii[j], c.slab, tol); }),
-                   sums, out.stats.overlap_groups);
+  // A group of balls is prepared once for all the radii it reaches (covered_chords.hpp).
+  auto covered = [&](const OverlapGroup& g, const std::vector<double>& share, ProfileSums& cr) {
+    const auto [lo, hi] = covering(g);
+    if (!g.spheres()) {
+      for (std::size_t j = lo; j < hi; ++j) subtract(cr, j, covered_lateral_area(g, radii[j], c.slab, share[j]));
+      return;
+    }
+    const internal::CoveredBallChords balls(g, c.slab);
+    for (std::size_t j = lo; j < hi; ++j) subtract(cr, j, balls.lateral_area(radii[j]));
+  };
+  subtract_covered(groups.get(), norm, opt, covering, covered, sums, out.stats.overlap_groups);
   out.x.assign(radii.begin(), radii.end());
   finish(sums, norm, out.porosity, out.stats);
   return out;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include <boost/math/special_functions/ellint_rd.hpp>
@@ -22,6 +23,49 @@ using DoublePolicy = boost::math::policies::policy<boost::math::policies::promot
 double carlson_rf(double x, double y, double z) { return boost::math::ellint_rf(x, y, z, DoublePolicy()); }
 double carlson_rd(double x, double y, double z) { return boost::math::ellint_rd(x, y, z, DoublePolicy()); }
 double carlson_rg(double x, double y, double z) { return boost::math::ellint_rg(x, y, z, DoublePolicy()); }
+
+// R_F(x, y, z) and R_D(x, y, z) at once, for x, y >= 0 (at most one zero) and z > 0. Carlson's
+// duplication algorithms for both (Carlson 1995, Numer. Algorithms 10, §2, algorithms 1 and 4)
+// move x, y, z by the same steps, so one loop serves both: the half-chord primitive needs the pair
+// at every breakpoint, hundreds of thousands of times for a bed's overlap lenses. Each step divides
+// the spread of the arguments by 4; it stops when the fifth-order series is exact to rounding
+// (Carlson's bound with r = 2^-53).
+struct CarlsonFD {
+  double rf, rd;
+};
+
+CarlsonFD carlson_rf_rd(double x, double y, double z) {
+  constexpr double r = std::numeric_limits<double>::epsilon() / 2;
+  const double aF0 = (x + y + z) / 3, aD0 = (x + y + 3 * z) / 5;
+  const double spread = std::max({std::abs(aD0 - x), std::abs(aD0 - y), std::abs(aD0 - z), std::abs(aF0 - x),
+                                  std::abs(aF0 - y), std::abs(aF0 - z)});
+  static const double kF = std::pow(3 * r, -1.0 / 6), kD = std::pow(r / 4, -1.0 / 6);
+  const double QF = kF * spread, QD = kD * spread;
+  const double x0 = x, y0 = y;
+  double aF = aF0, aD = aD0, sum = 0, pow4 = 1;  // pow4 = 4^-m
+  while (!(pow4 * QF < std::abs(aF) && pow4 * QD < std::abs(aD))) {
+    const double sx = std::sqrt(x), sy = std::sqrt(y), sz = std::sqrt(z);
+    const double lam = sx * sy + sx * sz + sy * sz;
+    sum += pow4 / (sz * (z + lam));
+    aF = (aF + lam) / 4, aD = (aD + lam) / 4;
+    x = (x + lam) / 4, y = (y + lam) / 4, z = (z + lam) / 4;
+    pow4 /= 4;
+  }
+  CarlsonFD out{};
+  {
+    const double X = (aF0 - x0) * pow4 / aF, Y = (aF0 - y0) * pow4 / aF, Z = -X - Y;
+    const double E2 = X * Y - Z * Z, E3 = X * Y * Z;
+    out.rf = (1 - E2 / 10 + E3 / 14 + E2 * E2 / 24 - 3 * E2 * E3 / 44) / std::sqrt(aF);
+  }
+  {
+    const double X = (aD0 - x0) * pow4 / aD, Y = (aD0 - y0) * pow4 / aD, Z = -(X + Y) / 3;
+    const double XY = X * Y, Z2 = Z * Z;
+    const double E2 = XY - 6 * Z2, E3 = (3 * XY - 8 * Z2) * Z, E4 = 3 * (XY - Z2) * Z2, E5 = XY * Z2 * Z;
+    const double series = 1 - 3 * E2 / 14 + E3 / 6 + 9 * E2 * E2 / 88 - 3 * E4 / 22 - 9 * E2 * E3 / 52 + 3 * E5 / 26;
+    out.rd = pow4 * series / (aD * std::sqrt(aD)) + 3 * sum;
+  }
+  return out;
+}
 
 }  // namespace
 
@@ -109,6 +153,17 @@ double cylinder_area_in_sphere_slab(double rho, double a, double r, double below
     G_hi = G_lo;
   }
   return 2 * r * total;
+}
+
+double half_chord_integral(double s, double twoB, double phi) {
+  if (!(s > 0) || phi == 0) return 0.0;
+  const double sn = std::sin(phi / 2), c2 = std::cos(phi / 2) * std::cos(phi / 2), sn2 = sn * sn;
+  const double x = s * c2, y = std::max(0.0, s - twoB * sn2);
+  // Internal tangency at the far side (phi = pi, A = B): both arguments vanish and the two terms of
+  // eq. 9 are infinite; the limit is 2 sqrt(s) E(1) = 2 sqrt(s).
+  if (x == 0 && y == 0) return std::copysign(2 * std::sqrt(s), phi);
+  const CarlsonFD c = carlson_rf_rd(x, y, s);
+  return 2 * s * sn * (c.rf - twoB / 3 * sn2 * c.rd);
 }
 
 double disk_disk_area(double r1, double r2, double d) {

@@ -202,6 +202,40 @@ std::vector<Particle> soft_bed() {
   return ps;
 }
 
+// A lens of two balls near the wall or across a bin's edge: its sections clipped by a circle are
+// the intersection of three disks, by inclusion-exclusion over the Green unions above.
+TEST(porosity_Union, ALensCutByACircleIsTheIntersectionOfThreeDisks) {
+  const std::vector<Particle> ps{make_sphere({1.55, 0.3, 0.0}, 1.0), make_sphere({1.9, 0.75, 0.35}, 0.9)};
+  const std::vector<OverlapGroup> groups = overlap_groups(ps);
+  ASSERT_EQ(groups.size(), 1u);
+  const OverlapGroup& g = groups[0];
+  for (double R : {1.7, 1.95, 2.2})
+    for (double z : {-0.05, 0.1, 0.2, 0.3}) {
+      std::vector<std::array<double, 3>> d;
+      for (const Particle& p : ps) {
+        const double a = p.radius(), dz = z - p.centre.z();
+        ASSERT_GT(a * a, dz * dz);
+        d.push_back({p.centre.x(), p.centre.y(), std::sqrt(a * a - dz * dz)});
+      }
+      const std::array<double, 3> wall{0.0, 0.0, R};
+      auto A = [](std::vector<std::array<double, 3>> v) { return union_of_disks_area(v); };
+      const double want = A({d[0]}) + A({d[1]}) + A({wall}) - A({d[0], d[1]}) - A({d[0], wall}) - A({d[1], wall}) +
+                          A({d[0], d[1], wall});
+      EXPECT_NEAR(covered_slice_area(g, z, R, 1e-12).value, want, 1e-12) << "R " << R << " z " << z;
+    }
+  // The shells on either side of a circle through the lens hold the lens's volume (closed form).
+  const double lens = sphere_lens_volume(0.5, 0.45, (ps[1].centre - ps[0].centre).norm());
+  const BedSlab slab{-5, 5};
+  double last = 0;
+  for (double R : {1.8, 1.9, 2.0, 2.1, 2.2}) {
+    const double in = covered_shell_volume(g, 0, R, slab, 1e-13).value,
+                 out = covered_shell_volume(g, R, 9, slab, 1e-13).value;
+    EXPECT_NEAR(in + out, lens, 1e-12 * lens) << "R " << R;
+    EXPECT_GE(in, last) << "R " << R;
+    last = in;
+  }
+}
+
 TEST(porosity_Union, ASoftSphereBedIsItsUnionToTheTolerance) {
   const std::vector<Particle> ps = soft_bed();
   const Container c = around(ps, 2.6);

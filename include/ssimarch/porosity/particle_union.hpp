@@ -18,10 +18,11 @@
 // part is the length of P_i's arcs (chords) inside the merged arcs (chords) of the group's earlier
 // particles. Between breakpoints where no two ends of those intervals meet, the covered length is
 // analytic: for spheres the breakpoints are closed forms (a circle or line tangent to a ball, or
-// through the circle where two spheres' surfaces meet), so the integrals are exact up to
-// quadrature like the disjoint ones; for spherocylinders the ends' order is sampled (256 samples
-// per piece) and every change located by bisection (integrate_piecewise), which misses only
-// features narrower than a sample.
+// through the circle where two spheres' surfaces meet), and on a cylinder each piece is a signed
+// sum of chord ends integrated in closed form, so radial values are exact up to rounding and the
+// other integrals up to quadrature, like the disjoint ones; for spherocylinders the ends' order is
+// sampled (256 samples per piece) and every change located by bisection (integrate_piecewise),
+// which misses only features narrower than a sample.
 #pragma once
 
 #include <span>
@@ -74,7 +75,8 @@ std::vector<OverlapGroup> overlap_groups(std::span<const Particle> share, long f
 double covered_arc_length(const OverlapGroup& g, double z, double r);
 
 /// Area of the cylinder surface of radius r between the slab's planes inside P_i n U_i, to
-/// absolute tolerance abs_tol. Model length^2.
+/// absolute tolerance abs_tol (groups of balls: in closed form, exact up to rounding whatever
+/// abs_tol). Model length^2.
 QuadResult covered_lateral_area(const OverlapGroup& g, double r, const BedSlab& slab, double abs_tol);
 
 /// Volume of P_i n U_i between the cylinders r0 <= r1 and the slab's planes. Model length^3.

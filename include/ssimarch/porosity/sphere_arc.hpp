@@ -26,6 +26,14 @@ double cylinder_area_in_sphere(double rho, double a, double r);
 /// chord reaches a plane (docs/math/cylinder_in_sphere.md §4). Model length^2.
 double cylinder_area_in_sphere_slab(double rho, double a, double r, double below, double above);
 
+/// G(phi) = integral over [0, phi] of h(t) = sqrt(A + B cos t), |phi| <= pi: the primitive of the
+/// half chord of a ball (radius a, centre at horizontal distance rho from the axis) over the angle t
+/// of the circle of radius r measured from the centre's direction, with s = A + B =
+/// a^2 - (r - rho)^2 > 0 and twoB = 2B = 4 r rho >= 0 as in cylinder_area_in_sphere; phi must lie
+/// in the ball's shadow (A + B cos phi >= 0, rounding tolerated). Odd in phi. Closed form through
+/// Carlson's R_F and R_D (docs/math/cylinder_in_sphere.md §4, eq. 9). Model length (angle x length).
+double half_chord_integral(double s, double twoB, double phi);
+
 /// Area of the intersection of two disks (radii r1, r2, centre distance d), the "lens" area.
 double disk_disk_area(double r1, double r2, double d);
 
