@@ -71,7 +71,7 @@ void require_packing_scale(std::span<const Particle> ps, const std::string& sour
   }
 }
 
-using Groups = std::shared_ptr<const std::vector<OverlapGroup>>;
+using Groups = std::shared_ptr<const OverlapGroupSet>;
 
 // The profile options of one stage: the job's, reporting progress under the stage's name, with the
 // overlap groups found once for the whole job.
@@ -202,8 +202,7 @@ PorosityJobResult run_shared_porosity_job(const PorosityJob& job, const ProfileC
   // The union's overlap groups, found once for every stage (each process: those of its slab).
   Groups groups = job.options.overlap_groups;
   if (job.options.overlaps == OverlapRule::kUnion && !groups)
-    groups = std::make_shared<const std::vector<OverlapGroup>>(
-        overlap_groups(ps, first, comm, kOverlapTolerance, job.options.threads));
+    groups = overlap_group_set(ps, first, comm, kOverlapTolerance, job.options.threads);
   out.container.radius = job.container_radius;
   if (job.height_range) {
     out.container.slab = *job.height_range;
@@ -243,9 +242,8 @@ PorosityJobResult run_porosity_job(const PorosityJob& job) {
   // processes, the first process subtracts them all (the others none).
   Groups groups = job.options.overlap_groups;
   if (job.options.overlaps == OverlapRule::kUnion && !groups)
-    groups = std::make_shared<const std::vector<OverlapGroup>>(
-        comm && comm->rank() != 0 ? std::vector<OverlapGroup>{}
-                                  : overlap_groups(all, kOverlapTolerance, job.options.threads));
+    groups = comm && comm->rank() != 0 ? std::make_shared<const OverlapGroupSet>()
+                                       : overlap_group_set(all, kOverlapTolerance, job.options.threads);
   run_stages(job, groups, ps, out);
   if (job.keep_particles) out.packing.assign(all.begin(), all.end());
   return out;

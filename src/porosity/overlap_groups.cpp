@@ -52,22 +52,30 @@ bool overlapping(const Particle& a, const Particle& b, double relative_tolerance
   return internal::pair_overlap(a, b).depth > relative_tolerance * std::min(a.diameter, b.diameter);
 }
 
-// The groups of particle p with its earlier neighbours `nb` (sorted by id): components of the
+// The groups found by one chunk of queries: entries whose members index its own member list.
+struct ChunkGroups {
+  std::vector<OverlapGroupSet::Entry> entries;
+  std::vector<std::uint32_t> members;
+};
+
+// The groups of particle i with its earlier neighbours `nb` (sorted by id): components of the
 // graph whose edges join neighbours with meeting lens boxes.
-void split_groups(const Particle& p, const std::vector<const Particle*>& nb, std::vector<OverlapGroup>& out) {
+void split_groups(std::span<const Particle> ps, std::uint32_t i, const std::vector<std::uint32_t>& nb,
+                  ChunkGroups& out) {
   const std::size_t n = nb.size();
-  if (n == 1) {  // the common case of a DEM bed: one lens per group
-    OverlapGroup& g = out.emplace_back();
-    g.particle = p;
-    g.earlier.assign(1, *nb[0]);
-    lens_box(p, *nb[0], g.box_lo, g.box_hi);
+  const Particle& p = ps[i];
+  if (n == 1) {  // one lens: no components to find
+    OverlapGroupSet::Entry& e = out.entries.emplace_back();
+    lens_box(p, ps[nb[0]], e.box_lo, e.box_hi);
+    e.first = static_cast<std::uint32_t>(out.members.size()), e.count = 2;
+    out.members.push_back(i), out.members.push_back(nb[0]);
     return;
   }
   // Per thread, reused across the particles of a chunk.
   thread_local std::vector<Vec3> lo, hi;
   thread_local std::vector<std::size_t> root;
   lo.resize(n), hi.resize(n), root.resize(n);
-  for (std::size_t k = 0; k < n; ++k) lens_box(p, *nb[k], lo[k], hi[k]);
+  for (std::size_t k = 0; k < n; ++k) lens_box(p, ps[nb[k]], lo[k], hi[k]);
   std::iota(root.begin(), root.end(), 0);
   auto find = [&](std::size_t k) {
     while (root[k] != k) k = root[k] = root[root[k]];
@@ -78,17 +86,17 @@ void split_groups(const Particle& p, const std::vector<const Particle*>& nb, std
       if (boxes_meet(lo[a], hi[a], lo[b], hi[b])) root[find(b)] = find(a);
   for (std::size_t a = 0; a < n; ++a) {
     if (find(a) != a) continue;
-    OverlapGroup g;
-    g.particle = p;
-    g.box_lo = lo[a];
-    g.box_hi = hi[a];
+    OverlapGroupSet::Entry& e = out.entries.emplace_back();
+    e.box_lo = lo[a], e.box_hi = hi[a];
+    e.first = static_cast<std::uint32_t>(out.members.size());
+    out.members.push_back(i);
     for (std::size_t b = 0; b < n; ++b)
       if (find(b) == a) {
-        g.earlier.push_back(*nb[b]);
-        g.box_lo = g.box_lo.cwiseMin(lo[b]);
-        g.box_hi = g.box_hi.cwiseMax(hi[b]);
+        out.members.push_back(nb[b]);
+        e.box_lo = e.box_lo.cwiseMin(lo[b]);
+        e.box_hi = e.box_hi.cwiseMax(hi[b]);
       }
-    out.push_back(std::move(g));
+    e.count = static_cast<std::uint32_t>(out.members.size()) - e.first;
   }
 }
 
@@ -96,8 +104,8 @@ void split_groups(const Particle& p, const std::vector<const Particle*>& nb, std
 
 namespace internal {
 
-std::vector<OverlapGroup> groups_of(std::span<const Particle> ps, std::span<const long> ids, std::size_t owned,
-                                    double relative_tolerance, unsigned threads) {
+OverlapGroupSet groups_of(std::span<const Particle> ps, std::span<const long> ids, std::size_t owned,
+                          double relative_tolerance, unsigned threads, std::vector<Particle>* held) {
   auto id = [&](std::size_t k) { return ids.empty() ? static_cast<long>(k) : ids[k]; };
   // The overlap search's hierarchical grid (overlaps.cpp), queried in its cells' order as the
   // search does: consecutive queries meet the same neighbours, which stay in the cache whatever the
@@ -111,12 +119,11 @@ std::vector<OverlapGroup> groups_of(std::span<const Particle> ps, std::span<cons
   }
   const std::size_t nq = level_start.back();
   const int chunks = static_cast<int>(std::min<std::size_t>(kOverlapQueryChunks, std::max<std::size_t>(nq, 1)));
-  std::vector<std::vector<OverlapGroup>> found(static_cast<std::size_t>(chunks));
+  std::vector<ChunkGroups> found(static_cast<std::size_t>(chunks));
   parallel_chunks(
       chunks, threads,
       [&](int c) {
         std::vector<std::uint32_t> nb;
-        std::vector<const Particle*> earlier;
         std::size_t lv = 0;
         for (std::size_t q = nq * static_cast<std::size_t>(c) / chunks;
              q < nq * static_cast<std::size_t>(c + 1) / chunks; ++q) {
@@ -131,37 +138,78 @@ std::vector<OverlapGroup> groups_of(std::span<const Particle> ps, std::span<cons
             });
           if (nb.empty()) continue;
           std::sort(nb.begin(), nb.end(), [&](std::uint32_t a, std::uint32_t b) { return id(a) < id(b); });
-          earlier.clear();
-          for (std::uint32_t j : nb) earlier.push_back(&ps[j]);
-          split_groups(ps[i], earlier, found[static_cast<std::size_t>(c)]);
+          split_groups(ps, static_cast<std::uint32_t>(i), nb, found[static_cast<std::size_t>(c)]);
         }
       },
       nullptr);
-  // One allocation for the whole list: every page a growing vector touches costs a page fault, and
-  // the groups of a DEM bed (three per particle) take tens of megabytes.
-  std::size_t total = 0;
-  for (const auto& f : found) total += f.size();
-  std::vector<OverlapGroup> out;
-  out.reserve(total);
-  for (auto& f : found) {
-    std::move(f.begin(), f.end(), std::back_inserter(out));
-    std::vector<OverlapGroup>().swap(f);
+  // The chunks' lists joined, each allocated once: every page a growing vector touches costs a
+  // page fault, and a DEM bed has three groups per particle.
+  std::size_t ne = 0, nm = 0;
+  for (const ChunkGroups& f : found) ne += f.entries.size(), nm += f.members.size();
+  std::vector<OverlapGroupSet::Entry> entries;
+  std::vector<std::uint32_t> members;
+  entries.reserve(ne), members.reserve(nm);
+  for (ChunkGroups& f : found) {
+    const auto shift = static_cast<std::uint32_t>(members.size());
+    for (OverlapGroupSet::Entry e : f.entries) {
+      e.first += shift;
+      entries.push_back(e);
+    }
+    members.insert(members.end(), f.members.begin(), f.members.end());
+    f = ChunkGroups{};
   }
-  return out;
+  std::vector<Particle> kept;
+  if (held && !entries.empty()) kept = std::move(*held);
+  const std::span<const Particle> at = kept.empty() ? ps : std::span<const Particle>(kept);
+  return OverlapGroupSet(at, std::move(kept), std::move(entries), std::move(members));
 }
 
 }  // namespace internal
 
+OverlapGroupSet::OverlapGroupSet(std::span<const Particle> particles, std::vector<Particle> held,
+                                 std::vector<Entry> entries, std::vector<std::uint32_t> members)
+    : held_(std::move(held)),
+      particles_(held_.empty() ? particles : std::span<const Particle>(held_)),
+      entries_(std::move(entries)),
+      members_(std::move(members)) {}
+
+void OverlapGroupSet::get(std::size_t k, OverlapGroup& g) const {
+  const Entry& e = entries_[k];
+  g.particle = particles_[members_[e.first]];
+  g.earlier.clear();
+  for (std::uint32_t m = e.first + 1; m < e.first + e.count; ++m) g.earlier.push_back(particles_[members_[m]]);
+  g.box_lo = e.box_lo, g.box_hi = e.box_hi;
+}
+
+std::vector<OverlapGroup> OverlapGroupSet::all() const {
+  std::vector<OverlapGroup> out(size());
+  for (std::size_t k = 0; k < size(); ++k) get(k, out[k]);
+  return out;
+}
+
+std::shared_ptr<const OverlapGroupSet> overlap_group_set(std::span<const Particle> particles, double relative_tolerance,
+                                                         unsigned threads) {
+  return std::make_shared<const OverlapGroupSet>(
+      internal::groups_of(particles, {}, particles.size(), relative_tolerance, threads));
+}
+
+std::shared_ptr<const OverlapGroupSet> overlap_group_set(std::span<const Particle> share, long first,
+                                                         const ProfileCommunicator& comm, double relative_tolerance,
+                                                         unsigned threads) {
+  internal::SlabShare slab = internal::gather_slab(share, first, comm);
+  if (slab.total < 2) return std::make_shared<const OverlapGroupSet>();
+  return std::make_shared<const OverlapGroupSet>(
+      internal::groups_of(slab.local, slab.ids, slab.owned, relative_tolerance, threads, &slab.local));
+}
+
 std::vector<OverlapGroup> overlap_groups(std::span<const Particle> particles, double relative_tolerance,
                                          unsigned threads) {
-  return internal::groups_of(particles, {}, particles.size(), relative_tolerance, threads);
+  return overlap_group_set(particles, relative_tolerance, threads)->all();
 }
 
 std::vector<OverlapGroup> overlap_groups(std::span<const Particle> share, long first, const ProfileCommunicator& comm,
                                          double relative_tolerance, unsigned threads) {
-  const internal::SlabShare slab = internal::gather_slab(share, first, comm);
-  if (slab.total < 2) return {};
-  return internal::groups_of(slab.local, slab.ids, slab.owned, relative_tolerance, threads);
+  return overlap_group_set(share, first, comm, relative_tolerance, threads)->all();
 }
 
 }  // namespace ssimarch

@@ -94,8 +94,9 @@ SlabShare gather_slab(std::span<const Particle> share, long first, const Profile
                       std::span<const long> clumps = {});
 
 /// The overlap groups (particle_union.hpp) of the first `owned` particles: for each, the
-/// particles with a smaller id that overlap it, split into components by their lenses' boxes.
-std::vector<OverlapGroup> groups_of(std::span<const Particle> particles, std::span<const long> ids, std::size_t owned,
-                                    double relative_tolerance, unsigned threads);
+/// particles with a smaller id that overlap it, split into components by their lenses' boxes;
+/// members index `particles`, which the set holds when `held` is given (moved in).
+OverlapGroupSet groups_of(std::span<const Particle> particles, std::span<const long> ids, std::size_t owned,
+                          double relative_tolerance, unsigned threads, std::vector<Particle>* held = nullptr);
 
 }  // namespace ssimarch::internal

@@ -180,15 +180,14 @@ void account(ProfileSums& cr, std::size_t j, const QuadResult& q) {
 
 // The overlap groups whose covered parts a profile subtracts (particle_union.hpp): none when each
 // particle counts on its own, the caller's when given, else found here (collectively under MPI).
-std::shared_ptr<const std::vector<OverlapGroup>> groups_for(std::span<const Particle> ps, const ProfileOptions& opt) {
+std::shared_ptr<const OverlapGroupSet> groups_for(std::span<const Particle> ps, const ProfileOptions& opt) {
   if (opt.overlaps == OverlapRule::kSum) return nullptr;
   if (opt.overlap_groups) return opt.overlap_groups;
   if (opt.communicator) {
     const long first = opt.communicator->exclusive_prefix_sum(static_cast<long>(ps.size()));
-    return std::make_shared<const std::vector<OverlapGroup>>(
-        overlap_groups(ps, first, *opt.communicator, kOverlapRelativeTolerance, opt.threads));
+    return overlap_group_set(ps, first, *opt.communicator, kOverlapRelativeTolerance, opt.threads);
   }
-  return std::make_shared<const std::vector<OverlapGroup>>(overlap_groups(ps, kOverlapRelativeTolerance, opt.threads));
+  return overlap_group_set(ps, kOverlapRelativeTolerance, opt.threads);
 }
 
 // Share of a value's accuracy budget given to the covered parts of overlap groups (the particles'
@@ -200,18 +199,29 @@ constexpr double kCoveredBudgetShare = 0.25;
 // values it can touch. Budgets are split over
 // the groups touching a value, counted over all processes; sums are exact, as the particles'.
 template <class Range, class Covered>
-void subtract_covered(const std::vector<OverlapGroup>* groups, std::span<const double> norm, const ProfileOptions& opt,
+void subtract_covered(const OverlapGroupSet* groups, std::span<const double> norm, const ProfileOptions& opt,
                       Range&& range_of, Covered&& covered, ProfileSums& sums, long& group_count) {
   group_count = groups ? static_cast<long>(groups->size()) : 0;
   if (opt.communicator) opt.communicator->sum(std::span<long>(&group_count, 1));
   if (group_count == 0) return;
   const std::size_t m = norm.size(), n = groups->size();
-  const std::vector<long> count = touching(n, m, opt, [&](std::size_t i) { return range_of((*groups)[i]); });
+  // Each group is formed from the compact set where it is used, into per-thread storage.
+  auto group = [groups](std::size_t i) -> const OverlapGroup& {
+    thread_local OverlapGroup g;
+    groups->get(i, g);
+    return g;
+  };
+  // The values a group touches follow from its box alone (range_of reads nothing else).
+  const std::vector<long> count = touching(n, m, opt, [&](std::size_t i) {
+    thread_local OverlapGroup box;
+    box.box_lo = groups->entry(i).box_lo, box.box_hi = groups->entry(i).box_hi;
+    return range_of(box);
+  });
   std::vector<double> budget(m);
   for (std::size_t j = 0; j < m; ++j)
     budget[j] = kCoveredBudgetShare * opt.tolerance * norm[j] / std::max(1L, count[j]);
   ProfileSums total = chunk_sums(
-      n, norm, opt, [&](std::size_t i, ProfileSums& cr) { covered((*groups)[i], budget, cr); }, nullptr);
+      n, norm, opt, [&](std::size_t i, ProfileSums& cr) { covered(group(i), budget, cr); }, nullptr);
   if (opt.communicator) opt.communicator->sum(total);
   sums += total;
 }

@@ -25,6 +25,8 @@
 // which misses only features narrower than a sample.
 #pragma once
 
+#include <cstdint>
+#include <memory>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -59,15 +61,63 @@ struct OverlapGroup {
   bool spheres() const;
 };
 
+/// The overlap groups of a packing in the compact form the profiles hold them in: each group names
+/// its particle and earlier particles by index, with its box (about 70 bytes a lens, where a list
+/// of OverlapGroup copies every member: a DEM bed has three lenses per particle). The set refers to
+/// the particles it was found among, which must outlive it, or holds them itself (a process's
+/// slab of the bed under MPI). Movable, not copyable (shared through std::shared_ptr).
+class OverlapGroupSet {
+ public:
+  /// A group: its box and its members, particles_[members[first]] the particle, then the earlier.
+  struct Entry {
+    Vec3 box_lo, box_hi;
+    std::uint32_t first = 0, count = 0;
+  };
+
+  OverlapGroupSet() = default;
+  /// `particles` are those the members index; `held`, when not empty, is where they live.
+  OverlapGroupSet(std::span<const Particle> particles, std::vector<Particle> held, std::vector<Entry> entries,
+                  std::vector<std::uint32_t> members);
+  OverlapGroupSet(OverlapGroupSet&&) = default;
+  OverlapGroupSet& operator=(OverlapGroupSet&&) = default;
+  OverlapGroupSet(const OverlapGroupSet&) = delete;
+  OverlapGroupSet& operator=(const OverlapGroupSet&) = delete;
+
+  std::size_t size() const { return entries_.size(); }
+  bool empty() const { return entries_.empty(); }
+  /// Group k, written into g (its storage reused: no allocation once g has grown).
+  void get(std::size_t k, OverlapGroup& g) const;
+  /// Group k's box and members' place.
+  const Entry& entry(std::size_t k) const { return entries_[k]; }
+  /// Every group, each with copies of its members.
+  std::vector<OverlapGroup> all() const;
+
+ private:
+  std::vector<Particle> held_;
+  std::span<const Particle> particles_;
+  std::vector<Entry> entries_;
+  std::vector<std::uint32_t> members_;
+};
+
 /// The overlap groups of a packing held by one process. Pairs overlap when their depth exceeds
-/// `relative_tolerance` times the smaller diameter (the same rule as find_overlaps).
-std::vector<OverlapGroup> overlap_groups(std::span<const Particle> particles,
-                                         double relative_tolerance = kOverlapRelativeTolerance, unsigned threads = 0);
+/// `relative_tolerance` times the smaller diameter (the same rule as find_overlaps). `particles`
+/// must outlive the set.
+std::shared_ptr<const OverlapGroupSet> overlap_group_set(std::span<const Particle> particles,
+                                                         double relative_tolerance = kOverlapRelativeTolerance,
+                                                         unsigned threads = 0);
 
 /// The same over a packing split among processes (`share` holds particles first, first + 1, ...):
-/// each process returns the groups of the particles of its slab of the bed (overlaps.hpp), so
-/// every group is held by exactly one process and the profiles' sums over processes are those of
-/// one process. Collective.
+/// each process finds the groups of the particles of its slab of the bed (overlaps.hpp), so every
+/// group is held by exactly one process and the profiles' sums over processes are those of one
+/// process; the set holds the slab's particles. Collective.
+std::shared_ptr<const OverlapGroupSet> overlap_group_set(std::span<const Particle> share, long first,
+                                                         const ProfileCommunicator& comm,
+                                                         double relative_tolerance = kOverlapRelativeTolerance,
+                                                         unsigned threads = 0);
+
+/// The groups of overlap_group_set, each with copies of its members.
+std::vector<OverlapGroup> overlap_groups(std::span<const Particle> particles,
+                                         double relative_tolerance = kOverlapRelativeTolerance, unsigned threads = 0);
 std::vector<OverlapGroup> overlap_groups(std::span<const Particle> share, long first, const ProfileCommunicator& comm,
                                          double relative_tolerance = kOverlapRelativeTolerance, unsigned threads = 0);
 

@@ -52,9 +52,9 @@ struct ProfileOptions {
   /// of the particles (default), or once per particle holding it.
   OverlapRule overlaps = OverlapRule::kUnion;
   /// The overlap groups of this process's particles, when the caller found them once for several
-  /// profiles (overlap_groups; under a communicator, the collective form). Null: each profile
+  /// profiles (overlap_group_set; under a communicator, the collective form). Null: each profile
   /// function finds them (collectively under a communicator).
-  std::shared_ptr<const std::vector<OverlapGroup>> overlap_groups;
+  std::shared_ptr<const OverlapGroupSet> overlap_groups;
 };
 
 struct ProfileStats {
