@@ -205,23 +205,27 @@ void subtract_covered(const OverlapGroupSet* groups, std::span<const double> nor
   if (opt.communicator) opt.communicator->sum(std::span<long>(&group_count, 1));
   if (group_count == 0) return;
   const std::size_t m = norm.size(), n = groups->size();
-  // Each group is formed from the compact set where it is used, into per-thread storage.
-  auto group = [groups](std::size_t i) -> const OverlapGroup& {
-    thread_local OverlapGroup g;
-    groups->get(i, g);
-    return g;
-  };
-  // The values a group touches follow from its box alone (range_of reads nothing else).
-  const std::vector<long> count = touching(n, m, opt, [&](std::size_t i) {
+  // The values a group touches follow from its box alone (range_of reads nothing else), so a
+  // group is formed from the compact set, into per-thread storage, only where it touches one.
+  auto range = [&](std::size_t i) {
     thread_local OverlapGroup box;
     box.box_lo = groups->entry(i).box_lo, box.box_hi = groups->entry(i).box_hi;
     return range_of(box);
-  });
+  };
+  const std::vector<long> count = touching(n, m, opt, range);
   std::vector<double> budget(m);
   for (std::size_t j = 0; j < m; ++j)
     budget[j] = kCoveredBudgetShare * opt.tolerance * norm[j] / std::max(1L, count[j]);
   ProfileSums total = chunk_sums(
-      n, norm, opt, [&](std::size_t i, ProfileSums& cr) { covered(group(i), budget, cr); }, nullptr);
+      n, norm, opt,
+      [&](std::size_t i, ProfileSums& cr) {
+        const auto [lo, hi] = range(i);
+        if (lo >= hi) return;
+        thread_local OverlapGroup g;
+        groups->get(i, g);
+        covered(g, budget, cr);
+      },
+      nullptr);
   if (opt.communicator) opt.communicator->sum(total);
   sums += total;
 }
