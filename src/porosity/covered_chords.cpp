@@ -99,52 +99,10 @@ std::pair<double, double> lens_reach(const Particle& p, const Particle& q) {
   return {std::max(out.first, rc - R), std::min(out.second, rc + R)};
 }
 
-}  // namespace
-
-CoveredBallChords::CoveredBallChords(const OverlapGroup& g, const BedSlab& slab) : slab_(slab) {
-  for (std::size_t k = 0; k <= g.earlier.size(); ++k) {
-    const Particle& p = k == 0 ? g.particle : g.earlier[k - 1];
-    Ball b;
-    b.cx = p.centre.x(), b.cy = p.centre.y(), b.cz = p.centre.z(), b.a = p.radius(), b.a2 = b.a * b.a;
-    b.rho = std::hypot(b.cx, b.cy);
-    b.phi = std::atan2(b.cy, b.cx);
-    balls_.push_back(b);
-  }
-  meeting_circles(g, circles_);
-  for (const MeetCircle& m : circles_) circle_radius2_.push_back(planar_radius2(m));
-  cut_ = slab.z_min > g.box_lo.z() || slab.z_max < g.box_hi.z();
-  std::tie(lo_, hi_) = angular_window(g.box_lo, g.box_hi);
-  // The covered part is the union of the particle's lenses with the earlier balls.
-  reach_lo_ = g.rho_max(), reach_hi_ = g.rho_min();
-  for (const Particle& q : g.earlier) {
-    const auto [l, h] = lens_reach(g.particle, q);
-    reach_lo_ = std::min(reach_lo_, l), reach_hi_ = std::max(reach_hi_, h);
-  }
-  reach_lo_ = std::max(reach_lo_, g.rho_min()), reach_hi_ = std::min(reach_hi_, g.rho_max());
-}
-
-QuadResult CoveredBallChords::lateral_area(double r) const {
-  QuadResult out;
-  if (!(r >= reach_lo_ && r <= reach_hi_)) return out;
-  // Per thread, reused: this runs once per overlap group and radius (hundreds of thousands of
-  // times for a DEM bed), where allocations would cost as much as the integrals.
-  thread_local Scratch scratch;
-  std::vector<BallOnCircle>& balls = scratch.balls;
-  balls.clear();
-  scratch.angles.clear();
-  for (const Ball& b : balls_) {
-    balls.push_back({b.cx, b.cy, b.cz, b.a2, (b.a - r + b.rho) * (b.a + r - b.rho), 4 * r * b.rho, b.phi});
-    // Breakpoints: the shadow's ends and, where a plane of the slab passes, the section's.
-    crossing_angles(b.phi, r, b.rho, b.a2, scratch.angles);
-    if (!cut_) continue;
-    for (double zc : {slab_.z_min, slab_.z_max}) {
-      const double dz = zc - b.cz;
-      if (b.a2 > dz * dz) crossing_angles(b.phi, r, b.rho, b.a2 - dz * dz, scratch.angles);
-    }
-  }
-  for (std::size_t k = 0; k < circles_.size(); ++k) meet_angles(circles_[k], circle_radius2_[k], r, scratch.angles);
-  breakpoints_in(scratch.br, scratch.angles, lo_, hi_, true);
-  const BedSlab& slab = slab_;
+// r times the integral of the covered length over the pieces between the breakpoints s.br, into
+// out (value, rounding bound, evaluations).
+void sum_pieces(double r, const BedSlab& slab, Scratch& scratch, QuadResult& out) {
+  const std::vector<BallOnCircle>& balls = scratch.balls;
   const std::vector<double>& br = scratch.br;
   const std::size_t nb = balls.size(), np = br.size();
   // The angle from ball k's centre and G_k at each breakpoint, computed once for the two pieces it
@@ -205,6 +163,54 @@ QuadResult CoveredBallChords::lateral_area(double r) const {
   // 1995, §2), the level's heights included.
   out.value = r * total;
   out.error = r * 64 * std::numeric_limits<double>::epsilon() * magnitude;
+}
+
+}  // namespace
+
+CoveredBallChords::CoveredBallChords(const OverlapGroup& g, const BedSlab& slab) : slab_(slab) {
+  for (std::size_t k = 0; k <= g.earlier.size(); ++k) {
+    const Particle& p = k == 0 ? g.particle : g.earlier[k - 1];
+    Ball b;
+    b.cx = p.centre.x(), b.cy = p.centre.y(), b.cz = p.centre.z(), b.a = p.radius(), b.a2 = b.a * b.a;
+    b.rho = std::hypot(b.cx, b.cy);
+    b.phi = std::atan2(b.cy, b.cx);
+    balls_.push_back(b);
+  }
+  meeting_circles(g, circles_);
+  for (const MeetCircle& m : circles_) circle_radius2_.push_back(planar_radius2(m));
+  cut_ = slab.z_min > g.box_lo.z() || slab.z_max < g.box_hi.z();
+  std::tie(lo_, hi_) = angular_window(g.box_lo, g.box_hi);
+  // The covered part is the union of the particle's lenses with the earlier balls.
+  reach_lo_ = g.rho_max(), reach_hi_ = g.rho_min();
+  for (const Particle& q : g.earlier) {
+    const auto [l, h] = lens_reach(g.particle, q);
+    reach_lo_ = std::min(reach_lo_, l), reach_hi_ = std::max(reach_hi_, h);
+  }
+  reach_lo_ = std::max(reach_lo_, g.rho_min()), reach_hi_ = std::min(reach_hi_, g.rho_max());
+}
+
+QuadResult CoveredBallChords::lateral_area(double r) const {
+  QuadResult out;
+  if (!(r >= reach_lo_ && r <= reach_hi_)) return out;
+  // Per thread, reused: this runs once per overlap group and radius (hundreds of thousands of
+  // times for a DEM bed), where allocations would cost as much as the integrals.
+  thread_local Scratch scratch;
+  std::vector<BallOnCircle>& balls = scratch.balls;
+  balls.clear();
+  scratch.angles.clear();
+  for (const Ball& b : balls_) {
+    balls.push_back({b.cx, b.cy, b.cz, b.a2, (b.a - r + b.rho) * (b.a + r - b.rho), 4 * r * b.rho, b.phi});
+    // Breakpoints: the shadow's ends and, where a plane of the slab passes, the section's.
+    crossing_angles(b.phi, r, b.rho, b.a2, scratch.angles);
+    if (!cut_) continue;
+    for (double zc : {slab_.z_min, slab_.z_max}) {
+      const double dz = zc - b.cz;
+      if (b.a2 > dz * dz) crossing_angles(b.phi, r, b.rho, b.a2 - dz * dz, scratch.angles);
+    }
+  }
+  for (std::size_t k = 0; k < circles_.size(); ++k) meet_angles(circles_[k], circle_radius2_[k], r, scratch.angles);
+  breakpoints_in(scratch.br, scratch.angles, lo_, hi_, true);
+  sum_pieces(r, slab_, scratch, out);
   return out;
 }
 
