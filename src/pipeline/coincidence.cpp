@@ -7,6 +7,8 @@
 
 #include "ssimarch/core/jet.hpp"
 #include "ssimarch/problem/closest_point.hpp"
+#include "ssimarch/start/certified_start_points.hpp"
+#include "ssimarch/start/interval_forms.hpp"
 
 namespace ssimarch {
 
@@ -68,6 +70,41 @@ double distance_from(const Surface& s, const Vec3& p) {
   return std::abs(f.value) / f.gradient.norm();
 }
 
+// Parameter cells per direction of the enclosures below: 256 interval evaluations, against a
+// closest-point solve per sample (a global search on a B-spline) that they spare.
+constexpr int kEnclosureCells = 16;
+
+// Boxes that enclose a parametric surface cell by cell of its domain (the certified search's sound
+// interval forms, start/interval_forms.hpp): a point farther than a tolerance from every box is
+// farther than that from the surface. Empty where no such enclosure exists (implicit or unbounded
+// surfaces, interval forms that are not sound: evaluates_on_intervals, an unbounded box).
+std::vector<Box> cell_enclosures(const Surface& s) {
+  std::vector<Box> out;
+  if (!s.is_parametric() || !evaluates_on_intervals(s)) return out;
+  const ParamDomain& d = s.domain();
+  if (d.unbounded_u || d.unbounded_v || !std::isfinite(d.u.width()) || !std::isfinite(d.v.width())) return out;
+  constexpr int n = kEnclosureCells;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const IntervalNumber u(d.u.lo + d.u.width() * i / n, i + 1 == n ? d.u.hi : d.u.lo + d.u.width() * (i + 1) / n);
+      const IntervalNumber v(d.v.lo + d.v.width() * j / n, j + 1 == n ? d.v.hi : d.v.lo + d.v.width() * (j + 1) / n);
+      const Vec3T<IntervalNumber> p = s.point(u, v);
+      const Box b{{p.x.lo(), p.x.hi()}, {p.y.lo(), p.y.hi()}, {p.z.lo(), p.z.hi()}};
+      for (const Interval& c : {b.x, b.y, b.z})
+        if (!std::isfinite(c.lo) || !std::isfinite(c.hi)) return {};
+      out.push_back(b);
+    }
+  return out;
+}
+
+// Whether p lies within `tolerance` of one of the boxes.
+bool near_any(const std::vector<Box>& boxes, const Vec3& p, double tolerance) {
+  return std::any_of(boxes.begin(), boxes.end(), [&](const Box& b) {
+    return p.x() >= b.x.lo - tolerance && p.x() <= b.x.hi + tolerance && p.y() >= b.y.lo - tolerance &&
+           p.y() <= b.y.hi + tolerance && p.z() >= b.z.lo - tolerance && p.z() <= b.z.hi + tolerance;
+  });
+}
+
 void include(Box* b, const Vec3& p, bool first) {
   Interval* axes[3] = {&b->x, &b->y, &b->z};
   for (int k = 0; k < 3; ++k) {
@@ -87,8 +124,15 @@ std::optional<Coincidence> find_coincidence(const Surface& sampled, const Surfac
   else
     implicit_samples(sampled, box, grid, tolerance, &points);
   Coincidence c;
+  // Samples outside the other surface's enclosures need no closest-point solve: they lie farther
+  // than the tolerance from it (most of them, where the surfaces only cross).
+  const std::vector<Box> enclosures = points.size() > 16 ? cell_enclosures(other) : std::vector<Box>{};
   for (const Vec3& p : points) {
     if (!p.allFinite()) continue;
+    if (!enclosures.empty() && !near_any(enclosures, p, tolerance)) {
+      ++c.samples;
+      continue;
+    }
     const double d = distance_from(other, p);
     if (!std::isfinite(d)) continue;
     ++c.samples;
