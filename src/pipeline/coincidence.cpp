@@ -125,8 +125,9 @@ std::optional<Coincidence> find_coincidence(const Surface& sampled, const Surfac
     implicit_samples(sampled, box, grid, tolerance, &points);
   Coincidence c;
   // Samples outside the other surface's enclosures need no closest-point solve: they lie farther
-  // than the tolerance from it (most of them, where the surfaces only cross).
-  const std::vector<Box> enclosures = points.size() > 16 ? cell_enclosures(other) : std::vector<Box>{};
+  // than the tolerance from it (most of them, where the surfaces only cross). The probe's few
+  // samples do not pay for the enclosures.
+  const std::vector<Box> enclosures = grid > kCoincidenceProbeGrid ? cell_enclosures(other) : std::vector<Box>{};
   for (const Vec3& p : points) {
     if (!p.allFinite()) continue;
     if (!enclosures.empty() && !near_any(enclosures, p, tolerance)) {

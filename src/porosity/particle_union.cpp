@@ -380,9 +380,7 @@ QuadResult covered_shell_volume(const OverlapGroup& g, double r0, double r1, con
     const std::vector<double> br = internal::breakpoints_in(section_heights(g, {rc0, rc1}), z0, z1, false);
     return integrate_pieces(
         br, true, abs_tol,
-        [&](double z) {
-          return covered_section_area(g, z, s, inside ? -1 : r1) - (inside ? 0.0 : covered_section_area(g, z, s, r0));
-        },
+        [&](double z) { return covered_section_area(g, z, s, r1) - covered_section_area(g, z, s, r0); },
         [](double) { return 0L; });
   }
   // Inner tolerance a tenth of the outer one per unit radius (as shell_volume).
@@ -417,7 +415,7 @@ QuadResult covered_slice_area(const OverlapGroup& g, double z, double R, double 
     // Disks: the area of their union inside the container's disk in closed form.
     SectionScratch s;
     QuadResult out;
-    out.value = covered_section_area(g, z, s, g.rho_max() <= R ? -1 : R);
+    out.value = covered_section_area(g, z, s, R);
     out.evaluations = 1;
     return out;
   }

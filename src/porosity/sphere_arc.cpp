@@ -8,7 +8,6 @@
 #include <numbers>
 
 #include <boost/math/special_functions/ellint_rd.hpp>
-#include <boost/math/special_functions/ellint_rf.hpp>
 #include <boost/math/special_functions/ellint_rg.hpp>
 
 namespace ssimarch {
@@ -20,7 +19,6 @@ namespace {
 // a few ulps in double (Carlson 1995, §2), far below the profiles' tolerances.
 using DoublePolicy = boost::math::policies::policy<boost::math::policies::promote_double<false>>;
 
-double carlson_rf(double x, double y, double z) { return boost::math::ellint_rf(x, y, z, DoublePolicy()); }
 double carlson_rd(double x, double y, double z) { return boost::math::ellint_rd(x, y, z, DoublePolicy()); }
 double carlson_rg(double x, double y, double z) { return boost::math::ellint_rg(x, y, z, DoublePolicy()); }
 
@@ -65,6 +63,13 @@ CarlsonFD carlson_rf_rd(double x, double y, double z) {
     out.rd = pow4 * series / (aD * std::sqrt(aD)) + 3 * sum;
   }
   return out;
+}
+
+// Eq. 9 of docs/math/cylinder_in_sphere.md: G(t) = integral over [0, t] of the half chord, at the
+// angle with sin(t/2) = sn and cos^2(t/2) = c2, where the half chord is sqrt(tau2).
+double half_chord_primitive(double s, double twoB, double sn, double c2, double tau2) {
+  const CarlsonFD c = carlson_rf_rd(s * c2, tau2, s);
+  return 2 * s * sn * (c.rf - twoB / 3 * sn * sn * c.rd);
 }
 
 }  // namespace
@@ -114,8 +119,7 @@ void angle_and_integral(double s, double twoB, double excess, double tau, double
   const double sn2 = (s - tau * tau) / twoB, c2 = (excess + tau * tau) / twoB;
   const double sn = std::sqrt(sn2);
   t = 2 * std::atan2(sn, std::sqrt(c2));
-  const double x = s * c2, y = tau * tau;
-  G = 2 * s * sn * (carlson_rf(x, y, s) - twoB / 3 * sn2 * carlson_rd(x, y, s));
+  G = half_chord_primitive(s, twoB, sn, c2, tau * tau);
 }
 
 }  // namespace
@@ -158,12 +162,11 @@ double cylinder_area_in_sphere_slab(double rho, double a, double r, double below
 double half_chord_integral(double s, double twoB, double phi) {
   if (!(s > 0) || phi == 0) return 0.0;
   const double sn = std::sin(phi / 2), c2 = std::cos(phi / 2) * std::cos(phi / 2), sn2 = sn * sn;
-  const double x = s * c2, y = std::max(0.0, s - twoB * sn2);
+  const double tau2 = std::max(0.0, s - twoB * sn2);
   // Internal tangency at the far side (phi = pi, A = B): both arguments vanish and the two terms of
   // eq. 9 are infinite; the limit is 2 sqrt(s) E(1) = 2 sqrt(s).
-  if (x == 0 && y == 0) return std::copysign(2 * std::sqrt(s), phi);
-  const CarlsonFD c = carlson_rf_rd(x, y, s);
-  return 2 * s * sn * (c.rf - twoB / 3 * sn2 * c.rd);
+  if (s * c2 == 0 && tau2 == 0) return std::copysign(2 * std::sqrt(s), phi);
+  return half_chord_primitive(s, twoB, sn, c2, tau2);
 }
 
 double disk_disk_area(double r1, double r2, double d) {

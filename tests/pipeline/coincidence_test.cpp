@@ -6,12 +6,8 @@
 
 #include <gtest/gtest.h>
 
-#include <cmath>
-#include <numbers>
-#include <vector>
-
-#include "ssimarch/surface/bspline_surface.hpp"
 #include "ssimarch/surface/primitives.hpp"
+#include "testing/nurbs_cylinder.hpp"
 
 namespace ssimarch {
 namespace {
@@ -52,38 +48,23 @@ TEST(Coincidence, TheProbeFindsAShortSurfaceOnALongOneFromItsOwnSamples) {
   EXPECT_FALSE(probe_coincidence(crossing, 1e-9).has_value());
 }
 
-// A cylinder of radius 1 and height 2 (z in [-1, 1]) as CAD writes it: four rational quarter arcs
-// along u (C1 across the double knots), v linear.
-Surface quarter_arc_cylinder() {
-  const double w = std::sqrt(0.5), h = std::numbers::pi / 2;
-  const std::vector<Vec3> circle{{1, 0, 0},   {1, 1, 0},  {0, 1, 0},  {-1, 1, 0}, {-1, 0, 0},
-                                 {-1, -1, 0}, {0, -1, 0}, {1, -1, 0}, {1, 0, 0}};
-  ControlNet P;
-  WeightNet W;
-  for (std::size_t i = 0; i < circle.size(); ++i) {
-    P.push_back({circle[i] - Vec3(0, 0, 1), circle[i] + Vec3(0, 0, 1)});
-    W.push_back(std::vector<double>(2, i % 2 ? w : 1.0));
-  }
-  return BSplineSurface(2, 1, {0, 0, 0, h, h, 2 * h, 2 * h, 3 * h, 3 * h, 4 * h, 4 * h, 4 * h}, {0, 0, 1, 1}, P, W);
-}
-
 TEST(Coincidence, SamplesFarFromTheOtherSurfacesEnclosuresAreTheOnlyOnesSkipped) {
   // Samples outside the other surface's cell enclosures skip their closest-point solve: the
   // counts are those of the solves. A rational B-spline as the other surface (its enclosures by
   // its pieces' nets): the long cylinder's rows at z in [-1, 1], 8 of 16.
-  const Problem on_spline(cylinder(-3, 1), quarter_arc_cylinder(), PairKind::kParametricParametric);
+  const Problem on_spline(cylinder(-3, 1), testing::quarter_arc_cylinder(), PairKind::kParametricParametric);
   const std::optional<Coincidence> c = find_coincidence(on_spline, 1e-9);
   ASSERT_TRUE(c.has_value());
   EXPECT_EQ(c->samples, 256);
   EXPECT_EQ(c->shared, 128);
   EXPECT_LE(c->max_distance, 1e-12);
   // The B-spline's own samples on a short cylinder (z in [0, 1]): its upper 8 rows.
-  const Problem spline_on(quarter_arc_cylinder(), cylinder(0, 1), PairKind::kParametricParametric);
+  const Problem spline_on(testing::quarter_arc_cylinder(), cylinder(0, 1), PairKind::kParametricParametric);
   const std::optional<Coincidence> d = find_coincidence(spline_on, 1e-9);
   ASSERT_TRUE(d.has_value());
   EXPECT_EQ(d->shared, 128);
   // 1e-6 apart: nothing shared at 1e-9, everything where the tolerance holds the gap.
-  const Problem apart(cylinder(-1, 1, 1 + 1e-6), quarter_arc_cylinder(), PairKind::kParametricParametric);
+  const Problem apart(cylinder(-1, 1, 1 + 1e-6), testing::quarter_arc_cylinder(), PairKind::kParametricParametric);
   EXPECT_FALSE(find_coincidence(apart, 1e-9).has_value());
   const std::optional<Coincidence> e = find_coincidence(apart, 1e-5);
   ASSERT_TRUE(e.has_value());

@@ -18,6 +18,7 @@
 #include "ssimarch/start/interval_number.hpp"
 #include "ssimarch/surface/bezier_patch.hpp"
 #include "ssimarch/surface/bspline_surface.hpp"
+#include "testing/nurbs_cylinder.hpp"
 #include "testing/random_spline.hpp"
 
 namespace ssimarch {
@@ -102,23 +103,8 @@ TEST(PieceEnclosure, HoldsEverySampleOnRandomSplinesAndBoxes) {
   }
 }
 
-// A cylinder of radius 1 and height 2 as CAD writes it: u along four rational quarter arcs
-// (double interior knots: C0 pieces, a C1 circle), closed; v linear.
-BSplineSurface quarter_arc_cylinder() {
-  const double w = std::sqrt(0.5), h = std::numbers::pi / 2;
-  const std::vector<Vec3> circle{{1, 0, 0},   {1, 1, 0},  {0, 1, 0},  {-1, 1, 0}, {-1, 0, 0},
-                                 {-1, -1, 0}, {0, -1, 0}, {1, -1, 0}, {1, 0, 0}};
-  ControlNet P;
-  WeightNet W;
-  for (std::size_t i = 0; i < circle.size(); ++i) {
-    P.push_back({circle[i] - Vec3(0, 0, 1), circle[i] + Vec3(0, 0, 1)});
-    W.push_back(std::vector<double>(2, i % 2 ? w : 1.0));
-  }
-  return BSplineSurface(2, 1, {0, 0, 0, h, h, 2 * h, 2 * h, 3 * h, 3 * h, 4 * h, 4 * h, 4 * h}, {0, 0, 1, 1}, P, W);
-}
-
 TEST(PieceEnclosure, ClosedSeamIsWrappedAndArcsAreC1) {
-  const BSplineSurface s = quarter_arc_cylinder();
+  const BSplineSurface s = testing::quarter_arc_cylinder();
   ASSERT_TRUE(s.domain().periodic_u);
   EXPECT_TRUE(s.encloses_on_intervals()) << s.interval_refusal();
   const double tau = 2 * std::numbers::pi;
@@ -152,7 +138,7 @@ TEST(PieceEnclosure, KinkAcrossADoubleKnotIsFoundAndRefused) {
                      {{4, 0, 1}, {4, 1, 1}}};
   const BSplineSurface smooth(2, 1, {0, 0, 0, 1, 1, 2, 2, 2}, {0, 0, 1, 1}, Q);
   EXPECT_TRUE(smooth.encloses_on_intervals()) << smooth.interval_refusal();
-  EXPECT_TRUE(evaluates_on_intervals(Surface(quarter_arc_cylinder())));
+  EXPECT_TRUE(evaluates_on_intervals(Surface(testing::quarter_arc_cylinder())));
 }
 
 TEST(PieceEnclosure, ShrinksWithTheBoxAndBeatsDeCasteljauOnHighDegrees) {
